@@ -1,0 +1,11 @@
+package org.tinysep.api.actuator;
+
+import java.time.Instant;
+import org.osgi.annotation.versioning.ConsumerType;
+import org.tinysep.api.sensor.Percent;
+
+@ConsumerType
+public interface HeaterListener {
+
+    void potencyChanged(HeaterProvider source, Percent potency, Instant at);
+}

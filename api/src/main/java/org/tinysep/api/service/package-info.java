@@ -1,0 +1,9 @@
+/**
+ * Intermediate and AAL service interfaces: flat occupancy, house information, mail, time, inactivity recognition.
+ */
+@Export
+@Version("1.0.0")
+package org.tinysep.api.service;
+
+import org.osgi.annotation.bundle.Export;
+import org.osgi.annotation.versioning.Version;
