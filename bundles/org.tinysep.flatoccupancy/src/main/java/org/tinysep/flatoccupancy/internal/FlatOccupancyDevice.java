@@ -1,0 +1,134 @@
+package org.tinysep.flatoccupancy.internal;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.util.List;
+import java.util.Optional;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.sensor.DoorKind;
+import org.tinysep.api.sensor.DoorListener;
+import org.tinysep.api.sensor.DoorProvider;
+import org.tinysep.api.sensor.MovementEvent;
+import org.tinysep.api.sensor.MovementListener;
+import org.tinysep.api.sensor.MovementLocation;
+import org.tinysep.api.sensor.MovementProvider;
+import org.tinysep.api.sensor.OpenState;
+import org.tinysep.api.service.FlatOccupancyListener;
+import org.tinysep.api.service.FlatOccupancyProvider;
+import org.tinysep.api.service.Occupancy;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.Uids;
+
+/**
+ * The one Flat Occupancy device (thesis 4.4.3.1). Connects to every Movement and Door provider; each connection
+ * counts as vital, so the device removes itself only when it has none left (thesis Fig 3.4).
+ */
+final class FlatOccupancyDevice extends AbstractDevice
+        implements FlatOccupancyProvider, MovementListener, DoorListener {
+
+    private final Listeners<FlatOccupancyListener> listeners;
+    private final OccupancyLogic logic;
+    private final Duration leaveTimeout;
+
+    FlatOccupancyDevice(DriverContext context, Duration leaveTimeout, Duration exitGrace) {
+        super(context, Uids.of(context.driverName(), "flat"), context.driverName(), "Flat occupancy");
+        this.listeners = new Listeners<>(uid());
+        this.leaveTimeout = leaveTimeout;
+        this.logic = new OccupancyLogic(leaveTimeout, exitGrace, context.now());
+        publish(this, FlatOccupancyProvider.class);
+    }
+
+    void watch(MovementProvider movement) {
+        connect(movement, MovementProvider.class, this, true);
+    }
+
+    void watch(DoorProvider door) {
+        connect(door, DoorProvider.class, this, true);
+    }
+
+    @Override
+    public void movementReported(MovementProvider source, MovementEvent movement) {
+        if (movement.detected() && source.location() == MovementLocation.INSIDE) {
+            Optional<Occupancy> change;
+            synchronized (logic) {
+                change = logic.motion(movement.at());
+            }
+            announce(change, movement.at(), "motion from " + source.deviceUid());
+        }
+    }
+
+    @Override
+    public void doorChanged(DoorProvider source, OpenState state, Instant at) {
+        if (source.kind() != DoorKind.OUTER || state == OpenState.UNKNOWN) {
+            return;
+        }
+        Optional<Occupancy> change;
+        synchronized (logic) {
+            change = state == OpenState.OPEN ? logic.outerDoorOpened(at) : logic.outerDoorClosed(at);
+        }
+        announce(change, at, "outer door " + source.deviceUid() + " " + state.name().toLowerCase());
+    }
+
+    /** Advances the algorithm's clock; called every second by the driver. */
+    void tick(Instant now) {
+        Optional<Occupancy> change;
+        synchronized (logic) {
+            change = logic.tick(now);
+        }
+        announce(change, now, "no indoor motion for " + leaveTimeout.toSeconds() + " s after the door closed");
+    }
+
+    private void announce(Optional<Occupancy> change, Instant at, String reason) {
+        change.ifPresent(o -> {
+            status(DeviceStatus.State.ONLINE, "");
+            event("flat " + o.name().toLowerCase() + " (" + reason + ")");
+            listeners.fire(l -> l.occupancyChanged(this, o, at));
+        });
+    }
+
+    @Override
+    public String deviceUid() {
+        return uid();
+    }
+
+    @Override
+    public Connection connect(FlatOccupancyListener listener) {
+        return listeners.add(listener);
+    }
+
+    @Override
+    public Occupancy occupancy() {
+        synchronized (logic) {
+            return logic.state();
+        }
+    }
+
+    @Override
+    public Instant since() {
+        synchronized (logic) {
+            return logic.since();
+        }
+    }
+
+    @Override
+    protected List<Parameter> moreParameters() {
+        synchronized (logic) {
+            return List.of(
+                    Parameter.readOnly("occupancy", logic.state(), "current decision"),
+                    Parameter.readOnly("since", logic.since(), "when it was reached"),
+                    Parameter.readOnly("leaveCheckUntil", logic.leaveDeadline().map(Instant::toString).orElse(""),
+                            "end of the pending leave check"),
+                    Parameter.readOnly("leaveTimeoutSeconds", leaveTimeout.toSeconds(),
+                            "configured in pid org.tinysep.flatoccupancy"));
+        }
+    }
+
+    @Override
+    protected void onDispose() {
+        listeners.closeAll();
+    }
+}

@@ -1,0 +1,162 @@
+package org.tinysep.device.support;
+
+import java.util.ArrayList;
+import java.util.Hashtable;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceRegistration;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Driver;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+
+/**
+ * Common part of every driver: identity, its Driver service, its device list, and the thesis 3.3 removal rules.
+ * Subclasses are immediate Declarative Services components with {@code service = {}} that call
+ * {@link #start(BundleContext)} on activation and {@link #stop()} on deactivation; stopping removes every device
+ * one by one before the driver itself goes.
+ */
+public abstract class AbstractDriver implements Driver {
+
+    private final String name;
+    private final String uid;
+    private final Map<String, AbstractDevice> devices = new LinkedHashMap<>();
+    private volatile DriverContext context;
+    private volatile ServiceRegistration<Driver> registration;
+
+    protected AbstractDriver(String name) {
+        this.name = name;
+        this.uid = Uids.driver(name);
+    }
+
+    /** Prepares the driver's context and registers its {@link Driver} service. */
+    protected final void start(BundleContext bundleContext) {
+        start(bundleContext, Map.of());
+    }
+
+    /**
+     * Prepares the driver's context and registers its {@link Driver} service with the standard properties plus
+     * {@code extraProperties} (e.g. a bound port).
+     */
+    protected final void start(BundleContext bundleContext, Map<String, Object> extraProperties) {
+        context = new DriverContext(bundleContext, uid, name);
+        Hashtable<String, Object> props = new Hashtable<>(extraProperties);
+        props.put(DeviceProperties.DRIVER_UID, uid);
+        props.put(DeviceProperties.DRIVER_NAME, name);
+        registration = bundleContext.registerService(Driver.class, this, props);
+    }
+
+    /**
+     * Removes every device, one by one in creation order (each removal announced by the service registry), then
+     * unregisters the Driver service and releases the context.
+     */
+    protected final void stop() {
+        for (AbstractDevice d : snapshot()) {
+            removeDevice(d.uid());
+        }
+        ServiceRegistration<Driver> r = registration;
+        registration = null;
+        if (r != null) {
+            try {
+                r.unregister();
+            } catch (IllegalStateException ignored) {
+                // the bundle is already stopping
+            }
+        }
+        DriverContext c = context;
+        if (c != null) {
+            c.close();
+        }
+    }
+
+    protected final DriverContext context() {
+        DriverContext c = context;
+        if (c == null) {
+            throw new IllegalStateException(name + " is not started");
+        }
+        return c;
+    }
+
+    /** Registers a newly constructed device and adds it to this driver's list. */
+    protected final <D extends AbstractDevice> D addDevice(D device) {
+        synchronized (devices) {
+            if (devices.containsKey(device.uid())) {
+                throw new IllegalStateException(name + " already has device " + device.uid());
+            }
+            devices.put(device.uid(), device);
+        }
+        device.register();
+        return device;
+    }
+
+    /**
+     * Tells every device that a provider device went away; a device left without a vital connection is removed
+     * (thesis 3.3).
+     */
+    protected final void providerGone(String providerUid) {
+        for (AbstractDevice d : snapshot()) {
+            boolean hadIt = d.connections().stream().anyMatch(c -> c.providerDeviceUid().equals(providerUid));
+            if (hadIt && !d.providerGone(providerUid)) {
+                context().event(EventKind.DEVICE_EVENT, d.uid() + " lost its vital connections and is removed");
+                removeDevice(d.uid());
+            }
+        }
+    }
+
+    @Override
+    public final boolean removeDevice(String deviceUid) {
+        AbstractDevice d;
+        synchronized (devices) {
+            d = devices.remove(deviceUid);
+        }
+        if (d == null) {
+            return false;
+        }
+        d.dispose();
+        onDeviceRemoved(d);
+        return true;
+    }
+
+    /** Called after a device was removed, whatever the reason; e.g. to forget the node it stood for. */
+    protected void onDeviceRemoved(AbstractDevice device) {
+    }
+
+    /** @return this driver's devices of the given class */
+    protected final <D extends AbstractDevice> List<D> devices(Class<D> type) {
+        return snapshot().stream().filter(type::isInstance).map(type::cast).toList();
+    }
+
+    private List<AbstractDevice> snapshot() {
+        synchronized (devices) {
+            return new ArrayList<>(devices.values());
+        }
+    }
+
+    @Override
+    public final String uid() {
+        return uid;
+    }
+
+    @Override
+    public final String name() {
+        return name;
+    }
+
+    @Override
+    public final List<Device> devices() {
+        return List.copyOf(snapshot());
+    }
+
+    @Override
+    public List<Parameter> parameters() {
+        return List.of();
+    }
+
+    @Override
+    public String toString() {
+        return name + " " + uid;
+    }
+}

@@ -1,0 +1,57 @@
+package org.tinysep.device.support;
+
+import java.time.Instant;
+import org.osgi.framework.BundleContext;
+import org.tinysep.api.log.EventKind;
+
+/**
+ * What a driver shares with its devices: the bundle context to register services with, the driver's identity,
+ * the log reporter and the platform clock.
+ */
+public final class DriverContext implements AutoCloseable {
+
+    private final BundleContext bundleContext;
+    private final String driverUid;
+    private final String driverName;
+    private final Reporter reporter;
+    private final PlatformClock clock;
+
+    public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
+        this.bundleContext = bundleContext;
+        this.driverUid = driverUid;
+        this.driverName = driverName;
+        this.reporter = new Reporter(bundleContext);
+        this.clock = new PlatformClock(bundleContext);
+    }
+
+    public BundleContext bundleContext() {
+        return bundleContext;
+    }
+
+    public String driverUid() {
+        return driverUid;
+    }
+
+    public String driverName() {
+        return driverName;
+    }
+
+    public Reporter reporter() {
+        return reporter;
+    }
+
+    public Instant now() {
+        return clock.now();
+    }
+
+    /** Records an event-log entry originating from the driver. */
+    public void event(EventKind kind, String message) {
+        reporter.event(kind, driverUid, message);
+    }
+
+    @Override
+    public void close() {
+        clock.close();
+        reporter.close();
+    }
+}
