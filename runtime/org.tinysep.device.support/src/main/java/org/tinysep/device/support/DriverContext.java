@@ -16,15 +16,29 @@ public final class DriverContext implements AutoCloseable {
     private final Reporter reporter;
     private final PlatformClock clock;
 
+    /** The context of a driver running in a framework: logs and clock follow the services. */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
+        this(bundleContext, driverUid, driverName, Reporter.tracking(bundleContext),
+                PlatformClock.tracking(bundleContext));
+    }
+
+    /**
+     * A context with explicit parts. With a null bundle context, devices can be built and exercised but not
+     * registered: the seam unit tests use.
+     */
+    public DriverContext(BundleContext bundleContext, String driverUid, String driverName, Reporter reporter,
+            PlatformClock clock) {
         this.bundleContext = bundleContext;
         this.driverUid = driverUid;
         this.driverName = driverName;
-        this.reporter = new Reporter(bundleContext);
-        this.clock = new PlatformClock(bundleContext);
+        this.reporter = reporter;
+        this.clock = clock;
     }
 
     public BundleContext bundleContext() {
+        if (bundleContext == null) {
+            throw new IllegalStateException(driverName + " runs without a framework; nothing can be registered");
+        }
         return bundleContext;
     }
 

@@ -1,6 +1,7 @@
 package org.tinysep.device.support;
 
 import java.time.Instant;
+import java.util.function.Supplier;
 import org.osgi.framework.BundleContext;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.service.TimeControllerProvider;
@@ -11,20 +12,36 @@ import org.tinysep.api.service.TimeControllerProvider;
  */
 public final class PlatformClock implements AutoCloseable {
 
-    private final ServiceTracker<TimeControllerProvider, TimeControllerProvider> time;
+    private final Supplier<Instant> now;
+    private final Runnable onClose;
 
-    public PlatformClock(BundleContext context) {
-        time = new ServiceTracker<>(context, TimeControllerProvider.class, null);
+    /** A clock from an explicit source; for tests and tools outside a framework. */
+    public PlatformClock(Supplier<Instant> now) {
+        this(now, () -> { });
+    }
+
+    private PlatformClock(Supplier<Instant> now, Runnable onClose) {
+        this.now = now;
+        this.onClose = onClose;
+    }
+
+    /** The Time Controller's time while one is registered, the system clock otherwise. */
+    public static PlatformClock tracking(BundleContext context) {
+        ServiceTracker<TimeControllerProvider, TimeControllerProvider> time =
+                new ServiceTracker<>(context, TimeControllerProvider.class, null);
         time.open();
+        return new PlatformClock(() -> {
+            TimeControllerProvider t = time.getService();
+            return t == null ? Instant.now() : t.now();
+        }, time::close);
     }
 
     public Instant now() {
-        TimeControllerProvider t = time.getService();
-        return t == null ? Instant.now() : t.now();
+        return now.get();
     }
 
     @Override
     public void close() {
-        time.close();
+        onClose.run();
     }
 }

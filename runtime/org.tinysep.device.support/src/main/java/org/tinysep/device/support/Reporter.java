@@ -1,5 +1,6 @@
 package org.tinysep.device.support;
 
+import java.util.function.Supplier;
 import org.osgi.framework.BundleContext;
 import org.osgi.util.tracker.ServiceTracker;
 import org.slf4j.Logger;
@@ -17,19 +18,36 @@ public final class Reporter implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Reporter.class);
 
-    private final ServiceTracker<EventLog, EventLog> events;
-    private final ServiceTracker<PacketLog, PacketLog> packets;
+    private final Supplier<EventLog> events;
+    private final Supplier<PacketLog> packets;
+    private final Runnable onClose;
 
-    public Reporter(BundleContext context) {
-        events = new ServiceTracker<>(context, EventLog.class, null);
-        packets = new ServiceTracker<>(context, PacketLog.class, null);
-        events.open();
-        packets.open();
+    /** A reporter with explicit sinks (either may supply null); for tests and tools outside a framework. */
+    public Reporter(Supplier<EventLog> events, Supplier<PacketLog> packets) {
+        this(events, packets, () -> { });
+    }
+
+    private Reporter(Supplier<EventLog> events, Supplier<PacketLog> packets, Runnable onClose) {
+        this.events = events;
+        this.packets = packets;
+        this.onClose = onClose;
+    }
+
+    /** A reporter that follows the EventLog and PacketLog services as they come and go. */
+    public static Reporter tracking(BundleContext context) {
+        ServiceTracker<EventLog, EventLog> e = new ServiceTracker<>(context, EventLog.class, null);
+        ServiceTracker<PacketLog, PacketLog> p = new ServiceTracker<>(context, PacketLog.class, null);
+        e.open();
+        p.open();
+        return new Reporter(e::getService, p::getService, () -> {
+            e.close();
+            p.close();
+        });
     }
 
     /** Records one event-log entry. */
     public void event(EventKind kind, String origin, String message) {
-        EventLog log = events.getService();
+        EventLog log = events.get();
         if (log == null) {
             LOG.info("{} {}: {}", kind, origin, message);
             return;
@@ -43,7 +61,7 @@ public final class Reporter implements AutoCloseable {
 
     /** Records one packet-log entry. */
     public void packet(Direction direction, String origin, byte[] bytes, String note) {
-        PacketLog log = packets.getService();
+        PacketLog log = packets.get();
         if (log == null) {
             return;
         }
@@ -56,7 +74,6 @@ public final class Reporter implements AutoCloseable {
 
     @Override
     public void close() {
-        events.close();
-        packets.close();
+        onClose.run();
     }
 }

@@ -1,0 +1,96 @@
+package org.tinysep.amica.movement.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.amica.protocol.ReedSwitchStatus;
+import org.tinysep.api.bus.BusRadioAmicaListener;
+import org.tinysep.api.bus.BusRadioAmicaProvider;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.sensor.MovementEvent;
+import org.tinysep.api.sensor.MovementLocation;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.PlatformClock;
+import org.tinysep.device.support.RecordingLogs;
+
+/** Movement Detection payloads in, movement reports out. */
+class AmicaMovementDeviceTest {
+
+    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+
+    private final BusRadioAmicaProvider bus = new BusRadioAmicaProvider() {
+        @Override
+        public String deviceUid() {
+            return "bus-1";
+        }
+
+        @Override
+        public Connection connect(BusRadioAmicaListener listener) {
+            throw new UnsupportedOperationException("not needed here");
+        }
+
+        @Override
+        public String nodeId() {
+            return "1.17";
+        }
+
+        @Override
+        public Set<String> nodeTypes() {
+            return Set.of("movement", "door");
+        }
+
+        @Override
+        public void send(byte[] payload) {
+            throw new UnsupportedOperationException("a movement sensor sends nothing");
+        }
+    };
+
+    private final RecordingLogs logs = new RecordingLogs(() -> T0);
+    private final AmicaMovementDevice movement = new AmicaMovementDevice(
+            new DriverContext(null, "d", "AmicaMovement", logs.reporter(), new PlatformClock(() -> T0)), bus);
+
+    @Test
+    void everyMotionReportIsPassedOnAndOtherPayloadsOfTheNodeAreIgnored() {
+        List<MovementEvent> seen = new ArrayList<>();
+        movement.connect((src, e) -> seen.add(e));
+
+        movement.payloadReceived(bus, AmicaPayloads.encode(new MotionDetection(true)), T0);
+        movement.payloadReceived(bus, AmicaPayloads.encode(new ReedSwitchStatus(true)), T0.plusSeconds(1));
+        movement.payloadReceived(bus, AmicaPayloads.encode(new MotionDetection(true)), T0.plusSeconds(2));
+        movement.payloadReceived(bus, AmicaPayloads.encode(new MotionDetection(false)), T0.plusSeconds(4));
+
+        assertEquals(List.of(new MovementEvent(true, T0), new MovementEvent(true, T0.plusSeconds(2)),
+                new MovementEvent(false, T0.plusSeconds(4))), seen);
+        assertEquals(new MovementEvent(false, T0.plusSeconds(4)), movement.lastMovement().orElseThrow());
+        long logged = logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).count();
+        assertEquals(2, logged, "the event log gets changes only: motion, then no motion");
+    }
+
+    @Test
+    void locationChangeIsValidatedAndAnnounced() {
+        List<MovementLocation> seen = new ArrayList<>();
+        movement.connect(new org.tinysep.api.sensor.MovementListener() {
+            @Override
+            public void movementReported(org.tinysep.api.sensor.MovementProvider source, MovementEvent m) {
+            }
+
+            @Override
+            public void locationChanged(org.tinysep.api.sensor.MovementProvider source, MovementLocation l,
+                    Instant at) {
+                seen.add(l);
+            }
+        });
+        movement.setParameter("location", "outside");
+        assertThrows(IllegalArgumentException.class, () -> movement.setParameter("location", "garden"));
+        assertEquals(List.of(MovementLocation.OUTSIDE), seen);
+        assertEquals(MovementLocation.OUTSIDE, movement.location());
+    }
+}
