@@ -1,0 +1,54 @@
+package org.tinysep.amica.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+class AmicaAddressTest {
+
+    @Test
+    void writesNetgroupDotAddress() {
+        assertEquals("1.17", new AmicaAddress(1, 17).toString());
+        assertEquals("255.0", new AmicaAddress(255, 0).toString());
+    }
+
+    @Test
+    void parsesWhatItWrites() {
+        for (int ng = 0; ng < 256; ng += 51) {
+            for (int a = 0; a < 256; a += 17) {
+                AmicaAddress address = new AmicaAddress(ng, a);
+                assertEquals(address, AmicaAddress.parse(address.toString()));
+            }
+        }
+        assertEquals(new AmicaAddress(1, 17), AmicaAddress.parse("1.17"));
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"", "1", "1.", ".1", "1.17.3", "256.1", "1.256", "-1.2", "1.+2", "a.b", " 1.17", "1.1000"})
+    void rejectsMalformedText(String text) {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> AmicaAddress.parse(text));
+        assertTrue(e.getMessage().contains("AmICA address"), e.getMessage());
+    }
+
+    @Test
+    void rejectsNullText() {
+        assertThrows(IllegalArgumentException.class, () -> AmicaAddress.parse(null));
+    }
+
+    @Test
+    void rejectsOutOfRangeFields() {
+        assertThrows(IllegalArgumentException.class, () -> new AmicaAddress(-1, 0));
+        assertThrows(IllegalArgumentException.class, () -> new AmicaAddress(0, 256));
+    }
+
+    @Test
+    void addressZeroIsThePlatform() {
+        assertTrue(new AmicaAddress(4, 0).isPlatform());
+        assertFalse(new AmicaAddress(4, 1).isPlatform());
+    }
+}

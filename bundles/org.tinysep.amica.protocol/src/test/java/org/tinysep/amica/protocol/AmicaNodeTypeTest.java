@@ -1,0 +1,74 @@
+package org.tinysep.amica.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.tinysep.api.device.NodeType;
+
+class AmicaNodeTypeTest {
+
+    @Test
+    void typeNamesEqualTheApiNodeTypeConstants() {
+        Map<AmicaNodeType, String> api = Map.of(
+                AmicaNodeType.MOVEMENT, NodeType.MOVEMENT,
+                AmicaNodeType.DOOR, NodeType.DOOR,
+                AmicaNodeType.WINDOW, NodeType.WINDOW,
+                AmicaNodeType.DIMMABLE_LIGHT, NodeType.DIMMABLE_LIGHT,
+                AmicaNodeType.SIMPLE_LIGHT, NodeType.SIMPLE_LIGHT,
+                AmicaNodeType.HEATER, NodeType.HEATER,
+                AmicaNodeType.SPEAKER, NodeType.SPEAKER,
+                AmicaNodeType.PET_COLLAR, NodeType.PET_COLLAR);
+        assertEquals(EnumSet.allOf(AmicaNodeType.class), api.keySet(), "every AmICA node type has an API name");
+        for (AmicaNodeType t : AmicaNodeType.values()) {
+            assertEquals(api.get(t), t.typeName(), t.name());
+            assertEquals(Optional.of(t), AmicaNodeType.fromTypeName(api.get(t)));
+        }
+        assertEquals(Optional.empty(), AmicaNodeType.fromTypeName(NodeType.TEMPERATURE));
+    }
+
+    @Test
+    void bitsAreTheDocumentedMasks() {
+        List<Integer> masks = List.of(0x01, 0x02, 0x04, 0x08, 0x10, 0x20, 0x40, 0x80);
+        List<AmicaNodeType> order = List.of(AmicaNodeType.MOVEMENT, AmicaNodeType.DOOR, AmicaNodeType.WINDOW,
+                AmicaNodeType.DIMMABLE_LIGHT, AmicaNodeType.HEATER, AmicaNodeType.SPEAKER,
+                AmicaNodeType.PET_COLLAR, AmicaNodeType.SIMPLE_LIGHT);
+        for (int i = 0; i < order.size(); i++) {
+            assertEquals(masks.get(i), order.get(i).bit(), order.get(i).name());
+            assertEquals(i, order.get(i).bitIndex(), order.get(i).name());
+        }
+    }
+
+    @Test
+    void productIdIsABitMaskOfSeveralTypes() {
+        assertEquals(EnumSet.of(AmicaNodeType.MOVEMENT, AmicaNodeType.DOOR), AmicaNodeType.fromProductId(0x0003));
+        assertEquals(0x0003, AmicaNodeType.productId(List.of(AmicaNodeType.DOOR, AmicaNodeType.MOVEMENT)));
+        assertEquals(0x0048, AmicaNodeType.productId(List.of(AmicaNodeType.PET_COLLAR, AmicaNodeType.DIMMABLE_LIGHT,
+                AmicaNodeType.PET_COLLAR)));
+        for (int id = 0; id < 256; id++) {
+            assertEquals(id, AmicaNodeType.productId(AmicaNodeType.fromProductId(id)));
+        }
+    }
+
+    @Test
+    void productIdZeroHasNoTypeAndReservedBitsAreIgnored() {
+        assertTrue(AmicaNodeType.fromProductId(0).isEmpty());
+        assertTrue(AmicaNodeType.fromProductId(0xFF00).isEmpty());
+        assertEquals(EnumSet.of(AmicaNodeType.SIMPLE_LIGHT), AmicaNodeType.fromProductId(0x8180));
+        assertEquals(EnumSet.allOf(AmicaNodeType.class), AmicaNodeType.fromProductId(0xFFFF));
+    }
+
+    @Test
+    void fromProductIdIsUnmodifiableAndRangeChecked() {
+        Set<AmicaNodeType> types = AmicaNodeType.fromProductId(1);
+        assertThrows(UnsupportedOperationException.class, () -> types.add(AmicaNodeType.DOOR));
+        assertThrows(IllegalArgumentException.class, () -> AmicaNodeType.fromProductId(-1));
+        assertThrows(IllegalArgumentException.class, () -> AmicaNodeType.fromProductId(0x10000));
+    }
+}
