@@ -1,0 +1,279 @@
+package org.tinysep.itests;
+
+import static org.junit.Assert.fail;
+import static org.ops4j.pax.exam.CoreOptions.bundle;
+import static org.ops4j.pax.exam.CoreOptions.cleanCaches;
+import static org.ops4j.pax.exam.CoreOptions.frameworkProperty;
+import static org.ops4j.pax.exam.CoreOptions.junitBundles;
+import static org.ops4j.pax.exam.CoreOptions.mavenBundle;
+import static org.ops4j.pax.exam.CoreOptions.systemProperty;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Hashtable;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.BooleanSupplier;
+import java.util.stream.Stream;
+import javax.inject.Inject;
+import org.apache.felix.service.command.CommandProcessor;
+import org.apache.felix.service.command.CommandSession;
+import org.apache.felix.service.command.Converter;
+import org.ops4j.pax.exam.Configuration;
+import org.ops4j.pax.exam.Option;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Filter;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+import org.osgi.service.cm.ConfigurationAdmin;
+import org.osgi.util.tracker.ServiceTracker;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Driver;
+
+/**
+ * Base of every TinySEP integration test: a Felix framework (Pax Exam native container) provisioned like the
+ * launcher's distribution, plus helpers to drive it.
+ *
+ * <p>Start levels mirror the launcher: 1 ASM + SPI Fly, then the SLF4J bundles (also level 1, installed after
+ * SPI Fly: Pax Exam's own bundles take level 2 and must find a bound SLF4J), 3 system services, 4 platform,
+ * 5 applications (and Pax Exam's probe).
+ *
+ * <p>Like the distribution, FileInstall applies ConfigAdmin configurations from a folder before the platform
+ * starts ({@link #initialConfigurations()}); {@link #configure(String, Map)} changes them while a test runs.
+ *
+ * <p>Third-party bundles come from Maven's local repository ({@code versionAsInProject()}); the reactor's own
+ * bundles come from {@code file:} URLs in the system properties {@code bundle.<artifactId>} set by the pom.
+ */
+public abstract class TinySepTestSupport {
+
+    /** ConfigAdmin pid of the UDP bus radio (keys {@code port}, {@code bindAddress}). */
+    public static final String UDP_PID = "org.tinysep.amica.busradio.udp";
+    /** Driver service property carrying the UDP bus radio's bound port. */
+    public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
+    /** Default time limit of the helpers. */
+    protected static final Duration TIMEOUT = Duration.ofSeconds(10);
+
+    protected final Logger log = LoggerFactory.getLogger(getClass());
+
+    @Inject
+    protected BundleContext context;
+
+    /** Pax Exam entry point; extend {@link #options()} rather than overriding this. */
+    @Configuration
+    public Option[] configuration() {
+        return options().toArray(new Option[0]);
+    }
+
+    /**
+     * The provisioning. Subclasses add bundles with {@code List<Option> o = super.options(); o.add(...); return o;}.
+     *
+     * @return a mutable list
+     */
+    protected List<Option> options() {
+        List<Option> o = new ArrayList<>();
+        o.add(cleanCaches(true));
+        o.add(junitBundles());
+        // the test class path holds slf4j-simple too: without this, Felix lets java.util.ServiceLoader see it
+        // ("SimpleServiceProvider not a subtype") and SLF4J falls back to NOP inside the framework
+        o.add(frameworkProperty("felix.bootdelegation.implicit").value("false"));
+        for (String key : List.of("org.ops4j.pax.url.mvn.localRepository", "org.ops4j.pax.url.mvn.repositories",
+                "org.slf4j.simpleLogger.defaultLogLevel", "org.slf4j.simpleLogger.showDateTime", "org.slf4j.simpleLogger.dateTimeFormat",
+                "org.slf4j.simpleLogger.showShortLogName")) {
+            if (System.getProperty(key) != null) {
+                o.add(systemProperty(key).value(System.getProperty(key)));
+            }
+        }
+        // level 1: weaving for the Service Loader Mediator, then SLF4J (pitfall 1)
+        for (String asm : List.of("asm", "asm-commons", "asm-util", "asm-tree", "asm-analysis")) {
+            o.add(mavenBundle("org.ow2.asm", asm).versionAsInProject().startLevel(1));
+        }
+        o.add(mavenBundle("org.apache.aries.spifly", "org.apache.aries.spifly.dynamic.bundle").versionAsInProject().startLevel(1));
+        o.add(mavenBundle("org.slf4j", "slf4j-api").versionAsInProject().startLevel(1));
+        o.add(mavenBundle("org.slf4j", "slf4j-simple").versionAsInProject().startLevel(1));
+        // level 3: system services
+        o.add(mavenBundle("org.osgi", "org.osgi.util.function").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("org.osgi", "org.osgi.util.promise").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("org.osgi", "org.osgi.service.component").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("org.apache.felix", "org.apache.felix.scr").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("org.apache.felix", "org.apache.felix.configadmin").versionAsInProject().startLevel(3));
+        o.addAll(fileInstall()); // after ConfigAdmin: applies initialConfigurations() before level 4 starts
+        o.add(mavenBundle("org.apache.felix", "org.apache.felix.gogo.runtime").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("org.apache.felix", "org.apache.felix.gogo.command").versionAsInProject().startLevel(3));
+        // level 4: platform
+        o.add(reactorBundle("org.tinysep.api", 4));
+        o.add(reactorBundle("org.tinysep.runtime", 4));
+        // level 5: application bundles (system properties bundle.<artifactId>, see pom.xml)
+        o.add(reactorBundle("org.tinysep.amica.protocol", 5));
+        o.add(reactorBundle("org.tinysep.amica.busradio.udp", 5));
+        o.add(reactorBundle("org.tinysep.amica.movement", 5));
+        o.add(reactorBundle("org.tinysep.amica.door", 5));
+        o.add(reactorBundle("org.tinysep.flatoccupancy", 5));
+        // The bus radio starts on a free port (initialConfigurations()); tests send to udpPortOf("BusRadioAmicaUdp").
+        return o;
+    }
+
+    /**
+     * ConfigAdmin configurations that exist before any TinySEP bundle starts, as {@code pid → key → value}
+     * (written as {@code <pid>.cfg} into a folder FileInstall watches, like the distribution's {@code etc/}).
+     * The default puts the UDP bus radio on a free port of 127.0.0.1 ({@link #udpPortOf(String)} tells which),
+     * so tests never bind the production port. Subclasses may add entries.
+     */
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = new LinkedHashMap<>();
+        configs.put(UDP_PID, Map.of("port", "0", "bindAddress", "127.0.0.1"));
+        return configs;
+    }
+
+    /** FileInstall on {@code target/itest-etc/<test class>/}, filled from {@link #initialConfigurations()}. */
+    private List<Option> fileInstall() {
+        Path etc = Path.of("target", "itest-etc", getClass().getSimpleName()).toAbsolutePath();
+        try {
+            Files.createDirectories(etc);
+            try (Stream<Path> old = Files.list(etc)) {
+                for (Path file : old.toList()) {
+                    Files.delete(file);
+                }
+            }
+            for (Map.Entry<String, Map<String, String>> config : initialConfigurations().entrySet()) {
+                StringBuilder text = new StringBuilder();
+                config.getValue().forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+                Files.writeString(etc.resolve(config.getKey() + ".cfg"), text);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("Cannot prepare " + etc, e);
+        }
+        return List.of(
+                frameworkProperty("felix.fileinstall.dir").value(etc.toString()),
+                frameworkProperty("felix.fileinstall.filter").value(".*\\.cfg"),
+                frameworkProperty("felix.fileinstall.noInitialDelay").value("true"),
+                frameworkProperty("felix.fileinstall.poll").value("500"),
+                frameworkProperty("felix.fileinstall.enableConfigSave").value("false"),
+                frameworkProperty("felix.fileinstall.log.level").value("2"),
+                mavenBundle("org.apache.felix", "org.apache.felix.fileinstall").versionAsInProject().startLevel(3));
+    }
+
+    /**
+     * A bundle of this reactor, by the jar path the build put in system property {@code bundle.<artifactId>}.
+     *
+     * @throws IllegalStateException when the property is missing (not declared in the pom)
+     */
+    protected static Option reactorBundle(String artifactId, int startLevel) {
+        String path = System.getProperty("bundle." + artifactId);
+        if (path == null || path.isBlank() || path.startsWith("${")) {
+            throw new IllegalStateException("System property bundle." + artifactId + " is not set: declare "
+                    + artifactId + " as a test dependency and in surefire's systemPropertyVariables (itests/pom.xml)");
+        }
+        return bundle(new File(path).toURI().toString()).startLevel(startLevel);
+    }
+
+    /**
+     * Executes a Gogo command line, as typed in the shell.
+     *
+     * @return what the command printed plus its formatted result
+     * @throws AssertionError when the command fails, with its output
+     */
+    protected String shell(String commandLine) {
+        CommandProcessor processor = awaitService(CommandProcessor.class, null, TIMEOUT);
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        PrintStream out = new PrintStream(bytes, true, StandardCharsets.UTF_8);
+        try (CommandSession session = processor.createSession(new ByteArrayInputStream(new byte[0]), out, out)) {
+            Object result = session.execute(commandLine);
+            if (result != null) {
+                out.println(session.format(result, Converter.INSPECT));
+            }
+        } catch (Exception e) {
+            throw new AssertionError("'" + commandLine + "' failed: " + e + "\n" + bytes.toString(StandardCharsets.UTF_8), e);
+        }
+        String text = bytes.toString(StandardCharsets.UTF_8);
+        log.info("g! {}\n{}", commandLine, text);
+        return text;
+    }
+
+    /**
+     * Waits for a service and returns it.
+     *
+     * @param ldapFilter extra filter on service properties, or {@code null}
+     * @throws AssertionError after {@code timeout}
+     */
+    protected <T> T awaitService(Class<T> type, String ldapFilter, Duration timeout) {
+        ServiceReference<?> ref = awaitReference(type, ldapFilter, timeout);
+        return type.cast(context.getService(ref));
+    }
+
+    /**
+     * Polls {@code condition} every 20 ms until it holds.
+     *
+     * @param what what is awaited, for the failure message
+     * @throws AssertionError after {@code timeout}
+     */
+    protected void await(Duration timeout, BooleanSupplier condition, String what) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() - deadline > 0) {
+                fail("Timed out after " + timeout.toMillis() + " ms waiting for " + what);
+            }
+            try {
+                Thread.sleep(20);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                fail("Interrupted waiting for " + what);
+            }
+        }
+    }
+
+    /**
+     * The UDP port a bus radio driver is bound to: its Driver service property {@value #UDP_PORT_PROPERTY}.
+     *
+     * @param driverName the driver's {@link DeviceProperties#DRIVER_NAME}
+     */
+    protected int udpPortOf(String driverName) {
+        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=" + driverName + ")(" + UDP_PORT_PROPERTY + "=*))";
+        Object port = awaitReference(Driver.class, filter, TIMEOUT).getProperty(UDP_PORT_PROPERTY);
+        return port instanceof Number n ? n.intValue() : Integer.parseInt(port.toString().trim());
+    }
+
+    /** Creates or replaces the ConfigAdmin configuration {@code pid} (any location) with {@code props}. */
+    protected void configure(String pid, Map<String, ?> props) {
+        ConfigurationAdmin admin = awaitService(ConfigurationAdmin.class, null, TIMEOUT);
+        try {
+            admin.getConfiguration(pid, "?").update(new Hashtable<>(props));
+        } catch (Exception e) {
+            throw new AssertionError("Cannot configure " + pid + ": " + e, e);
+        }
+    }
+
+    private ServiceReference<?> awaitReference(Class<?> type, String ldapFilter, Duration timeout) {
+        String spec = "(&(objectClass=" + type.getName() + ")" + (ldapFilter == null ? "" : ldapFilter) + ")";
+        Filter filter;
+        try {
+            filter = context.createFilter(spec);
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalArgumentException("Bad filter " + spec, e);
+        }
+        ServiceTracker<?, ?> tracker = new ServiceTracker<>(context, filter, null);
+        tracker.open(true);
+        try {
+            if (tracker.waitForService(timeout.toMillis()) == null) {
+                fail("Timed out after " + timeout.toMillis() + " ms waiting for a service " + spec);
+            }
+            return tracker.getServiceReference();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError("Interrupted waiting for " + spec, e);
+        } finally {
+            tracker.close();
+        }
+    }
+}

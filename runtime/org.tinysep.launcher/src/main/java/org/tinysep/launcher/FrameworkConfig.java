@@ -1,0 +1,54 @@
+package org.tinysep.launcher;
+
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Map;
+import org.osgi.framework.Constants;
+
+/**
+ * The framework launch properties of a TinySEP distribution rooted at {@code home}.
+ *
+ * <p>The cache {@code var/felix-cache} is cleaned on every launch ({@code onFirstInit}): the distribution's
+ * folders, not the cache, are the source of truth (bundles/, etc/*.cfg, deploy/). FileInstall watches
+ * {@code etc/} for ConfigAdmin {@code *.cfg} files; the shipped {@code etc/org.apache.felix.fileinstall-deploy.cfg}
+ * adds a second watcher on {@code deploy/} for hot-deployed jars.
+ */
+public final class FrameworkConfig {
+
+    /** Framework property holding the distribution directory (usable as {@code ${tinysep.home}} in cfg files). */
+    public static final String HOME = "tinysep.home";
+    /** Felix's hook for its own log output: an {@code org.apache.felix.framework.Logger} instance ({@link FelixLog}). */
+    static final String FELIX_LOGGER = "felix.log.logger";
+
+    private FrameworkConfig() {
+    }
+
+    /**
+     * @param home       the distribution directory
+     * @param daemon     whether the Gogo shell must stay non-interactive
+     * @param startLevel the framework's beginning start level (the highest group level)
+     * @return launch properties; all values are strings
+     */
+    public static Map<String, String> properties(Path home, boolean daemon, int startLevel) {
+        Map<String, String> p = new HashMap<>();
+        p.put(HOME, home.toString());
+        p.put(Constants.FRAMEWORK_STORAGE, home.resolve("var").resolve("felix-cache").toString());
+        p.put(Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT);
+        p.put(Constants.FRAMEWORK_BEGINNING_STARTLEVEL, Integer.toString(startLevel));
+        p.put("felix.startlevel.bundle", Integer.toString(startLevel)); // bundles installed later: deploy/, shell
+        p.put("felix.log.level", "2");
+        // slf4j-simple is on the launcher's class path too: with Felix's implicit boot delegation,
+        // java.util.ServiceLoader inside slf4j-api would find it there ("not a subtype") and SLF4J falls to NOP
+        p.put("felix.bootdelegation.implicit", "false");
+        // FileInstall: etc/ holds ConfigAdmin configurations (<pid>.cfg, <factoryPid>-<name>.cfg)
+        p.put("felix.fileinstall.dir", home.resolve("etc").toString());
+        p.put("felix.fileinstall.filter", ".*\\.cfg");
+        p.put("felix.fileinstall.poll", "1000");
+        p.put("felix.fileinstall.noInitialDelay", "true");
+        p.put("felix.fileinstall.log.level", "2");
+        if (daemon) {
+            p.put("gosh.args", "--nointeractive");
+        }
+        return p;
+    }
+}

@@ -1,0 +1,214 @@
+package org.tinysep.launcher;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.ServiceLoader;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.jar.JarFile;
+import java.util.jar.Manifest;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.BundleException;
+import org.osgi.framework.Constants;
+import org.osgi.framework.FrameworkEvent;
+import org.osgi.framework.launch.Framework;
+import org.osgi.framework.launch.FrameworkFactory;
+import org.osgi.framework.startlevel.BundleStartLevel;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Embeds an OSGi framework (found through {@link FrameworkFactory} and {@link ServiceLoader}), installs the
+ * distribution's bundle groups at their start levels and starts them. The Gogo shell bundle is installed only
+ * in interactive mode and started last, by {@link #startShell()}, after the banner.
+ */
+public final class Launcher {
+
+    /** Symbolic name of the interactive Gogo shell. */
+    public static final String SHELL_BSN = "org.apache.felix.gogo.shell";
+
+    private static final Logger LOG = LoggerFactory.getLogger(Launcher.class);
+    private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
+
+    private final Options options;
+    private final Map<Long, String> errors = new ConcurrentHashMap<>();
+    private final Map<Bundle, String> groupOf = new LinkedHashMap<>();
+    private final List<StartReport.Failure> installFailures = new ArrayList<>();
+    private volatile Framework framework;
+    private Bundle shell;
+
+    public Launcher(Options options) {
+        this.options = options;
+    }
+
+    /**
+     * Creates, initialises and starts the framework and waits until it reaches its start level.
+     *
+     * @return the report for the banner
+     * @throws IOException     when {@code bundles/} cannot be read
+     * @throws BundleException when the framework itself cannot start
+     */
+    public StartReport start() throws IOException, BundleException, InterruptedException {
+        long t0 = System.nanoTime();
+        Path home = options.home();
+        List<BundleGroup> groups = BundleLayout.scan(home.resolve("bundles"));
+        int level = BundleLayout.maxStartLevel(groups);
+        Files.createDirectories(home.resolve("deploy"));
+        Files.createDirectories(home.resolve("etc"));
+        LOG.info("Starting TinySEP from {} ({} bundle groups, {})", home, groups.size(),
+                options.daemon() ? "daemon" : "interactive");
+
+        Map<String, Object> config = new HashMap<>(FrameworkConfig.properties(home, options.daemon(), level));
+        config.put(FrameworkConfig.FELIX_LOGGER, new FelixLog()); // Felix takes a Logger instance here
+        @SuppressWarnings({"unchecked", "rawtypes"})
+        Map<String, String> launchProperties = (Map) config;
+        Framework fw = ServiceLoader.load(FrameworkFactory.class).findFirst()
+                .orElseThrow(() -> new IllegalStateException("no OSGi framework on the class path"))
+                .newFramework(launchProperties);
+        fw.init();
+        framework = fw;
+
+        CountDownLatch started = new CountDownLatch(1);
+        fw.getBundleContext().addFrameworkListener(event -> {
+            if (event.getType() == FrameworkEvent.ERROR && event.getBundle() != null && event.getThrowable() != null) {
+                errors.put(event.getBundle().getBundleId(), Failures.describe(event.getThrowable()));
+            } else if (event.getType() == FrameworkEvent.STARTED) {
+                started.countDown();
+            }
+        });
+        for (BundleGroup group : groups) {
+            install(fw.getBundleContext(), group);
+        }
+        fw.start();
+        if (!started.await(START_TIMEOUT.toSeconds(), TimeUnit.SECONDS)) {
+            LOG.warn("Framework did not report STARTED within {} s", START_TIMEOUT.toSeconds());
+        }
+        return report(Duration.ofNanos(System.nanoTime() - t0), level);
+    }
+
+    /** Starts the interactive Gogo shell, when it was installed (interactive mode). */
+    public void startShell() throws BundleException {
+        if (shell != null) {
+            shell.start();
+        }
+    }
+
+    /** @return the running framework, or {@code null} before {@link #start()} */
+    public Framework framework() {
+        return framework;
+    }
+
+    /**
+     * Blocks until the framework has stopped.
+     *
+     * @return the process exit code: 0 after a normal stop, 1 after an error
+     */
+    public int awaitStop() throws InterruptedException {
+        FrameworkEvent event = framework.waitForStop(0);
+        return event.getType() == FrameworkEvent.ERROR ? 1 : 0;
+    }
+
+    /** Stops the framework, if running, and waits up to {@code timeout}. Safe to call more than once. */
+    public void stop(Duration timeout) {
+        Framework fw = framework;
+        if (fw == null || (fw.getState() & (Bundle.ACTIVE | Bundle.STARTING)) == 0) {
+            return;
+        }
+        try {
+            LOG.info("Stopping TinySEP");
+            fw.stop();
+            if (fw.waitForStop(timeout.toMillis()).getType() == FrameworkEvent.WAIT_TIMEDOUT) {
+                LOG.warn("Framework did not stop within {} s", timeout.toSeconds());
+            }
+        } catch (BundleException e) {
+            LOG.error("Could not stop the framework: {}", Failures.describe(e));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void install(BundleContext context, BundleGroup group) {
+        for (Path jar : group.jars()) {
+            boolean isShell = SHELL_BSN.equals(symbolicName(jar));
+            if (isShell && options.daemon()) {
+                LOG.debug("Daemon mode: not installing {}", jar.getFileName());
+                continue;
+            }
+            try {
+                Bundle bundle = context.installBundle(jar.toUri().toString());
+                bundle.adapt(BundleStartLevel.class).setStartLevel(group.startLevel());
+                groupOf.put(bundle, group.label());
+                if (isShell) {
+                    shell = bundle;
+                } else if (!isFragment(bundle)) {
+                    bundle.start(); // marks it for starting when the framework reaches the group's level
+                }
+            } catch (BundleException | RuntimeException e) {
+                installFailures.add(new StartReport.Failure(jar.getFileName().toString(), group.label(),
+                        "cannot install: " + Failures.describe(e)));
+            }
+        }
+    }
+
+    private StartReport report(Duration took, int level) {
+        Map<String, Integer> active = new LinkedHashMap<>();
+        List<StartReport.Failure> failures = new ArrayList<>(installFailures);
+        groupOf.forEach((bundle, group) -> {
+            active.putIfAbsent(group, 0);
+            if (bundle == shell) {
+                return;
+            }
+            if (isUp(bundle)) {
+                active.merge(group, 1, Integer::sum);
+            } else {
+                String reason = errors.getOrDefault(bundle.getBundleId(), "state " + stateName(bundle.getState()));
+                failures.add(new StartReport.Failure(bundle.getSymbolicName() + " " + bundle.getVersion(), group, reason));
+            }
+        });
+        int installed = groupOf.size() - (shell == null ? 0 : 1) + installFailures.size();
+        String version = Main.class.getPackage().getImplementationVersion();
+        return new StartReport(version == null ? "(dev)" : version, took, level, options.daemon(),
+                active, installed, failures);
+    }
+
+    private static boolean isUp(Bundle bundle) {
+        return bundle.getState() == Bundle.ACTIVE
+                || (isFragment(bundle) && bundle.getState() == Bundle.RESOLVED)
+                || (bundle.getState() == Bundle.STARTING && "lazy".equals(bundle.getHeaders().get(Constants.BUNDLE_ACTIVATIONPOLICY)));
+    }
+
+    private static boolean isFragment(Bundle bundle) {
+        return bundle.getHeaders().get(Constants.FRAGMENT_HOST) != null;
+    }
+
+    /** @return the jar's Bundle-SymbolicName without directives, or {@code null} */
+    static String symbolicName(Path jar) {
+        try (JarFile file = new JarFile(jar.toFile())) {
+            Manifest manifest = file.getManifest();
+            String bsn = manifest == null ? null : manifest.getMainAttributes().getValue(Constants.BUNDLE_SYMBOLICNAME);
+            return bsn == null ? null : bsn.split(";")[0].trim();
+        } catch (IOException e) {
+            return null;
+        }
+    }
+
+    static String stateName(int state) {
+        return switch (state) {
+            case Bundle.INSTALLED -> "INSTALLED (not resolved)";
+            case Bundle.RESOLVED -> "RESOLVED (not started)";
+            case Bundle.STARTING -> "STARTING";
+            case Bundle.STOPPING -> "STOPPING";
+            case Bundle.ACTIVE -> "ACTIVE";
+            default -> "UNINSTALLED";
+        };
+    }
+}

@@ -1,0 +1,93 @@
+package org.tinysep.launcher;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * Command-line options of the launcher.
+ *
+ * @param daemon run without the interactive Gogo shell until SIGTERM ({@code --daemon} or {@code TINYSEP_DAEMON=1})
+ * @param home   the distribution directory holding {@code bundles/}, {@code etc/}, {@code deploy/} and {@code var/}
+ * @param help   print the usage and exit
+ */
+public record Options(boolean daemon, Path home, boolean help) {
+
+    /** Environment variable that switches daemon mode on ({@code 1}, {@code true} or {@code yes}). */
+    public static final String DAEMON_ENV = "TINYSEP_DAEMON";
+    /** System property naming the distribution directory. */
+    public static final String HOME_PROPERTY = "tinysep.home";
+
+    /** The usage text printed by {@code --help} and on a bad argument. */
+    public static final String USAGE = String.join(System.lineSeparator(),
+            "Usage: java -jar tinysep.jar [--daemon] [--home DIR] [--help]",
+            "  --daemon, -d   no interactive shell; run until SIGTERM (also: TINYSEP_DAEMON=1)",
+            "  --home DIR     distribution directory (default: -Dtinysep.home, else the folder of tinysep.jar,",
+            "                 else the current directory)",
+            "  --help, -h     print this text");
+
+    /**
+     * Parses the arguments.
+     *
+     * @param args        command-line arguments
+     * @param env         environment variables (for {@value #DAEMON_ENV})
+     * @param defaultHome the home used when {@code --home} is absent
+     * @throws IllegalArgumentException on an unknown argument or a missing value
+     */
+    public static Options parse(List<String> args, Map<String, String> env, Path defaultHome) {
+        boolean daemon = isTrue(env.get(DAEMON_ENV));
+        boolean help = false;
+        Path home = defaultHome;
+        for (int i = 0; i < args.size(); i++) {
+            String arg = args.get(i);
+            switch (arg) {
+                case "--daemon", "-d" -> daemon = true;
+                case "--help", "-h" -> help = true;
+                case "--home" -> {
+                    if (i + 1 >= args.size()) {
+                        throw new IllegalArgumentException("--home needs a directory");
+                    }
+                    home = Path.of(args.get(++i));
+                }
+                default -> {
+                    if (arg.startsWith("--home=") && arg.length() > "--home=".length()) {
+                        home = Path.of(arg.substring("--home=".length()));
+                    } else {
+                        throw new IllegalArgumentException("unknown argument: " + arg);
+                    }
+                }
+            }
+        }
+        return new Options(daemon, home.toAbsolutePath().normalize(), help);
+    }
+
+    /**
+     * The home used without {@code --home}: {@code -Dtinysep.home}, else the directory of the launcher jar
+     * when it holds a {@code bundles/} folder, else the current directory.
+     */
+    public static Path defaultHome(Path launcherLocation) {
+        String property = System.getProperty(HOME_PROPERTY);
+        if (property != null && !property.isBlank()) {
+            return Path.of(property);
+        }
+        if (launcherLocation != null && Files.isRegularFile(launcherLocation)) {
+            Path dir = launcherLocation.toAbsolutePath().getParent();
+            if (dir != null && Files.isDirectory(dir.resolve("bundles"))) {
+                return dir;
+            }
+        }
+        return Path.of("");
+    }
+
+    static boolean isTrue(String value) {
+        if (value == null) {
+            return false;
+        }
+        return switch (value.trim().toLowerCase(Locale.ROOT)) {
+            case "1", "true", "yes", "on" -> true;
+            default -> false;
+        };
+    }
+}

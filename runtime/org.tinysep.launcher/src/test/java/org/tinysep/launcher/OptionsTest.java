@@ -1,0 +1,55 @@
+package org.tinysep.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+class OptionsTest {
+
+    private static final Path HOME = Path.of("/opt/tinysep");
+
+    @Test
+    void defaultsToInteractiveInTheDefaultHome() {
+        Options o = Options.parse(List.of(), Map.of(), HOME);
+        assertFalse(o.daemon());
+        assertFalse(o.help());
+        assertEquals(HOME, o.home());
+    }
+
+    @Test
+    void daemonFromFlagOrEnvironment() {
+        assertTrue(Options.parse(List.of("--daemon"), Map.of(), HOME).daemon());
+        assertTrue(Options.parse(List.of("-d"), Map.of(), HOME).daemon());
+        assertTrue(Options.parse(List.of(), Map.of("TINYSEP_DAEMON", "1"), HOME).daemon());
+        assertTrue(Options.parse(List.of(), Map.of("TINYSEP_DAEMON", " TRUE "), HOME).daemon());
+        assertFalse(Options.parse(List.of(), Map.of("TINYSEP_DAEMON", "0"), HOME).daemon());
+    }
+
+    @Test
+    void homeInBothSpellingsIsMadeAbsolute() {
+        assertEquals(Path.of("/srv/t"), Options.parse(List.of("--home", "/srv/t"), Map.of(), HOME).home());
+        assertEquals(Path.of("/srv/u"), Options.parse(List.of("--home=/srv/x/../u"), Map.of(), HOME).home());
+        assertTrue(Options.parse(List.of("--home", "rel"), Map.of(), HOME).home().isAbsolute());
+    }
+
+    @Test
+    void help() {
+        assertTrue(Options.parse(List.of("-h"), Map.of(), HOME).help());
+        assertTrue(Options.parse(List.of("--daemon", "--help"), Map.of(), HOME).help());
+    }
+
+    @Test
+    void rejectsUnknownArgumentsAndMissingValues() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Options.parse(List.of("--deamon"), Map.of(), HOME));
+        assertTrue(e.getMessage().contains("--deamon"));
+        assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("--home"), Map.of(), HOME));
+        assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("--home="), Map.of(), HOME));
+    }
+}
