@@ -121,7 +121,8 @@ final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvid
         return List.of(
                 Parameter.readOnly("node", address, "netgroup.address of the node"),
                 Parameter.readOnly("nodeTypes", String.join(",", nodeTypes), "from the keep-alive product id"),
-                Parameter.readOnly("remote", remote, "UDP address the node last sent from; commands go there"),
+                Parameter.readOnly("remote", remote.getAddress().getHostAddress() + ":" + remote.getPort(),
+                        "UDP address the node last sent from; commands go there"),
                 Parameter.readOnly("lastSeen", lastSeen, "time of the last valid packet"),
                 Parameter.readOnly("packets", packets.get(), "valid packets received"),
                 Parameter.readOnly("uptimeSeconds", ka.uptimeSeconds(), "from the last keep-alive"),
