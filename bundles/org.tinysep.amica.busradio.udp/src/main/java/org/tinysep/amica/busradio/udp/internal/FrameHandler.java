@@ -57,8 +57,9 @@ final class FrameHandler implements UdpTransport.Receiver {
         AmicaBusDevice device = nodes.find(frame.sender());
         if (device == null) {
             if (!(payload instanceof KeepAlive keepAlive)) {
-                reject(RejectReason.UNKNOWN_NODE, "node " + frame.sender() + " sent "
-                        + payload.getClass().getSimpleName() + " before any keep-alive", raw, origin);
+                reject(RejectReason.UNKNOWN_NODE, new AmicaProtocolException(RejectReason.UNKNOWN_NODE, "node "
+                        + frame.sender() + " sent " + payload.getClass().getSimpleName() + " before any keep-alive")
+                        .getMessage(), raw, origin);
                 return;
             }
             context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
@@ -69,9 +70,9 @@ final class FrameHandler implements UdpTransport.Receiver {
         device.received(frame, payload, from, at);
     }
 
-    private void reject(RejectReason reason, String detail, byte[] raw, String origin) {
-        rejects.reject(reason, detail, origin);
-        context.reporter().packet(Direction.RECEIVED, origin, raw, reason + ": " + detail);
+    private void reject(RejectReason reason, String message, byte[] raw, String origin) {
+        rejects.reject(reason, message, origin);
+        context.reporter().packet(Direction.RECEIVED, origin, raw, message);
     }
 
     long received() {

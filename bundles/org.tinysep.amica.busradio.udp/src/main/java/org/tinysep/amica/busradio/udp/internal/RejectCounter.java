@@ -31,11 +31,15 @@ final class RejectCounter {
         }
     }
 
-    /** Counts one rejection; logs it if it is the first of its reason. */
-    void reject(RejectReason reason, String detail, String from) {
+    /**
+     * Counts one rejection; logs it if it is the first of its reason.
+     *
+     * @param message the reason and detail in the form of {@code AmicaProtocolException#getMessage()}
+     */
+    void reject(RejectReason reason, String message, String from) {
         if (counts.get(reason).incrementAndGet() == 1) {
-            String text = "rejected datagram from " + from + ": " + reason.description() + " (" + detail
-                    + "); further " + reason + " rejections are only counted";
+            String text = "rejected datagram from " + from + ": " + message + "; further " + reason
+                    + " rejections are only counted";
             LOG.warn("{}: {}", context.driverName(), text);
             context.event(EventKind.PROBLEM, text);
         }
