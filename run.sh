@@ -6,6 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 if [[ "${SKIP_BUILD:-0}" != "1" ]]; then
+  scripts/install-deps.sh
   mvn -B -q -DskipTests package
 fi
 cd runtime/org.tinysep.launcher/target/tinysep

@@ -8,9 +8,10 @@ import org.osgi.framework.ServiceRegistration;
 import org.tinysep.api.device.Device;
 
 /**
- * The OSGi services of one device: its provider interfaces and its {@link Device} service, all carrying the same
- * properties. Providers are registered before the Device service and unregistered after it, so that when the
- * device manager sees the Device its interfaces are already known.
+ * The OSGi services of one device: its {@link Device} service and its provider interfaces, all carrying the same
+ * properties. The Device service is registered first and unregistered first. Consumers react to the providers
+ * synchronously (creating or removing their own devices), so this order makes the device manager's event log
+ * read cause before effect: "bus device created", then "AmicaMovement created", then "FlatOccupancy created".
  */
 final class DeviceServices {
 
@@ -53,10 +54,10 @@ final class DeviceServices {
         synchronized (this) {
             props = new Hashtable<>(properties);
         }
+        add(context.registerService(Device.class, device, props));
         for (Published p : published) {
             add(context.registerService(p.interfaces, p.service, props));
         }
-        add(context.registerService(Device.class, device, props));
     }
 
     private synchronized void add(ServiceRegistration<?> r) {
@@ -69,9 +70,9 @@ final class DeviceServices {
             regs = new ArrayList<>(registrations);
             registrations.clear();
         }
-        for (int i = regs.size() - 1; i >= 0; i--) {
+        for (ServiceRegistration<?> r : regs) { // the Device service first, as registered
             try {
-                regs.get(i).unregister();
+                r.unregister();
             } catch (IllegalStateException ignored) {
                 // already gone, e.g. the bundle is stopping
             }

@@ -27,7 +27,7 @@ final class Announcer {
 
     void deviceCreated(DeviceRecord d, List<String> interfaces) {
         log.record(EventKind.DEVICE_CREATED, d.uid(), d.type() + " \"" + d.name() + "\" created; node types: "
-                + list(d.node().types()) + "; provides: " + list(interfaces));
+                + list(d.node().types()) + (interfaces.isEmpty() ? "" : "; provides: " + list(interfaces)));
     }
 
     void deviceRemoved(DeviceRecord d) {
