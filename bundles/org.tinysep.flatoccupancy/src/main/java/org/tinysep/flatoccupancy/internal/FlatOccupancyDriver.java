@@ -45,29 +45,10 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         leaveTimeout = Duration.ofSeconds(Math.max(10, config.leaveTimeoutSeconds()));
         exitGrace = Duration.ofSeconds(Math.min(Math.max(0, config.exitGraceSeconds()), leaveTimeout.toSeconds() - 1));
         start(bundleContext);
-        movements = new ProviderTracker<>(bundleContext, MovementProvider.class, null,
-                new ProviderTracker.Callback<>() {
-                    @Override
-                    public void added(MovementProvider p, String uid) {
-                        device().watch(p);
-                    }
-
-                    @Override
-                    public void removed(MovementProvider p, String uid) {
-                        providerGone(uid);
-                    }
-                }).open();
-        doors = new ProviderTracker<>(bundleContext, DoorProvider.class, null, new ProviderTracker.Callback<>() {
-            @Override
-            public void added(DoorProvider p, String uid) {
-                device().watch(p);
-            }
-
-            @Override
-            public void removed(DoorProvider p, String uid) {
-                providerGone(uid);
-            }
-        }).open();
+        movements = new ProviderTracker<>(bundleContext, MovementProvider.class, null, ProviderTracker.Callback.of(
+                (movement, uid) -> device().watch(movement), (movement, uid) -> providerGone(uid))).open();
+        doors = new ProviderTracker<>(bundleContext, DoorProvider.class, null, ProviderTracker.Callback.of(
+                (door, uid) -> device().watch(door), (door, uid) -> providerGone(uid))).open();
         ticker = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "flat-occupancy-tick"));
         ticker.scheduleAtFixedRate(this::tick, 1, 1, TimeUnit.SECONDS);
     }

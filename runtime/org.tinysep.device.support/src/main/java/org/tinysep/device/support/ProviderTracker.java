@@ -1,5 +1,6 @@
 package org.tinysep.device.support;
 
+import java.util.function.BiConsumer;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.Filter;
@@ -27,6 +28,21 @@ public final class ProviderTracker<P> implements AutoCloseable {
         void added(P provider, String providerDeviceUid);
 
         void removed(P provider, String providerDeviceUid);
+
+        /** @return a callback made of two lambdas */
+        static <P> Callback<P> of(BiConsumer<P, String> added, BiConsumer<P, String> removed) {
+            return new Callback<>() {
+                @Override
+                public void added(P provider, String providerDeviceUid) {
+                    added.accept(provider, providerDeviceUid);
+                }
+
+                @Override
+                public void removed(P provider, String providerDeviceUid) {
+                    removed.accept(provider, providerDeviceUid);
+                }
+            };
+        }
     }
 
     private final ServiceTracker<P, P> tracker;

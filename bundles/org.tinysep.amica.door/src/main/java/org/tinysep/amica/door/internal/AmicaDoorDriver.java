@@ -7,43 +7,34 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.ProviderDeviceDriver;
 
 /**
- * AmICA Door (thesis 4.4.2.2): one {@link AmicaDoorDevice} per AmICA bus device of node type {@code door}.
+ * AmICA Door: one {@link AmicaDoorDevice} per AmICA bus device of node type {@code door}; nodes of other
+ * types are ignored (thesis Fig 3.3).
  */
 @Component(service = {}, immediate = true)
-public final class AmicaDoorDriver extends AbstractDriver implements ProviderTracker.Callback<BusRadioAmicaProvider> {
+public final class AmicaDoorDriver extends ProviderDeviceDriver<BusRadioAmicaProvider> {
 
     static final String NAME = "AmicaDoor";
-    static final String FILTER = "(" + DeviceProperties.NODE_TYPE + "=" + NodeType.DOOR + ")";
-
-    private ProviderTracker<BusRadioAmicaProvider> buses;
 
     public AmicaDoorDriver() {
-        super(NAME);
+        super(NAME, BusRadioAmicaProvider.class, "(" + DeviceProperties.NODE_TYPE + "=" + NodeType.DOOR + ")");
     }
 
     @Activate
     void activate(BundleContext bundleContext) {
-        start(bundleContext);
-        buses = new ProviderTracker<>(bundleContext, BusRadioAmicaProvider.class, FILTER, this).open();
+        open(bundleContext);
     }
 
     @Deactivate
     void deactivate() {
-        buses.close();
-        stop();
+        close();
     }
 
     @Override
-    public void added(BusRadioAmicaProvider bus, String busUid) {
-        addDevice(new AmicaDoorDevice(context(), bus));
-    }
-
-    @Override
-    public void removed(BusRadioAmicaProvider bus, String busUid) {
-        providerGone(busUid);
+    protected AbstractDevice createDevice(BusRadioAmicaProvider bus) {
+        return new AmicaDoorDevice(context(), bus);
     }
 }
