@@ -62,6 +62,17 @@ public abstract class TinySepTestSupport {
     public static final String UDP_PID = "org.tinysep.amica.busradio.udp";
     /** Driver service property carrying the UDP bus radio's bound port. */
     public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
+    /** The AmICA hardware bundles beyond the first slice; provisioned by default. */
+    protected static final List<String> AMICA_HARDWARE = List.of("org.tinysep.amica.busradio.serial",
+            "org.tinysep.amica.window", "org.tinysep.amica.simplelight", "org.tinysep.amica.dimmablelight",
+            "org.tinysep.amica.heater", "org.tinysep.amica.speaker", "org.tinysep.amica.petmovement");
+    /**
+     * The Sun SPOT bundles, in install order. Not provisioned by default: thesis scenario 3 installs them at
+     * runtime; other tests add them with {@link #sunSpotBundles(int)}.
+     */
+    protected static final List<String> SUN_SPOT = List.of("org.tinysep.sunspot.protocol",
+            "org.tinysep.sunspot.busradio", "org.tinysep.sunspot.movement", "org.tinysep.sunspot.temperature",
+            "org.tinysep.sunspot.light", "org.tinysep.sunspot.petmovement");
     /** Default time limit of the helpers. */
     protected static final Duration TIMEOUT = Duration.ofSeconds(10);
 
@@ -120,6 +131,10 @@ public abstract class TinySepTestSupport {
         o.add(reactorBundle("org.tinysep.amica.movement", 5));
         o.add(reactorBundle("org.tinysep.amica.door", 5));
         o.add(reactorBundle("org.tinysep.flatoccupancy", 5));
+        o.add(mavenBundle("com.fazecast", "jSerialComm").versionAsInProject().startLevel(3));
+        for (String amica : AMICA_HARDWARE) {
+            o.add(reactorBundle(amica, 5));
+        }
         // The bus radio starts on a free port (initialConfigurations()); tests send to udpPortOf("BusRadioAmicaUdp").
         return o;
     }
@@ -176,6 +191,20 @@ public abstract class TinySepTestSupport {
                     + artifactId + " as a test dependency and in surefire's systemPropertyVariables (itests/pom.xml)");
         }
         return bundle(new File(path).toURI().toString()).startLevel(startLevel);
+    }
+
+    /** @return provisioning options for every Sun SPOT bundle at {@code startLevel} */
+    protected static List<Option> sunSpotBundles(int startLevel) {
+        return SUN_SPOT.stream().map(b -> reactorBundle(b, startLevel)).toList();
+    }
+
+    /** @return the {@code file:} URL of a reactor bundle, for installing it at runtime (e.g. {@code install <url>}) */
+    protected static String bundleUrl(String artifactId) {
+        String path = System.getProperty("bundle." + artifactId);
+        if (path == null || path.startsWith("${")) {
+            throw new IllegalStateException("System property bundle." + artifactId + " is not set (itests/pom.xml)");
+        }
+        return new File(path).toURI().toString();
     }
 
     /**
