@@ -60,6 +60,8 @@ public abstract class TinySepTestSupport {
 
     /** ConfigAdmin pid of the UDP bus radio (keys {@code port}, {@code bindAddress}). */
     public static final String UDP_PID = "org.tinysep.amica.busradio.udp";
+    /** ConfigAdmin pid of the Sun SPOT bus radio (keys {@code udpPort}, {@code udpBindAddress}, …). */
+    public static final String SUN_SPOT_PID = "org.tinysep.sunspot.busradio";
     /** Driver service property carrying the UDP bus radio's bound port. */
     public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
     /** The AmICA hardware bundles beyond the first slice; provisioned by default. */
@@ -142,12 +144,14 @@ public abstract class TinySepTestSupport {
     /**
      * ConfigAdmin configurations that exist before any TinySEP bundle starts, as {@code pid → key → value}
      * (written as {@code <pid>.cfg} into a folder FileInstall watches, like the distribution's {@code etc/}).
-     * The default puts the UDP bus radio on a free port of 127.0.0.1 ({@link #udpPortOf(String)} tells which),
+     * The default puts the UDP bus radios (AmICA, and Sun SPOT once installed) on free ports of 127.0.0.1 ({@link #udpPortOf(String)} tells which),
      * so tests never bind the production port. Subclasses may add entries.
      */
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>();
         configs.put(UDP_PID, Map.of("port", "0", "bindAddress", "127.0.0.1"));
+        // used only once Sun SPOT bundles are installed: their UDP link on a free port too
+        configs.put(SUN_SPOT_PID, Map.of("udpPort", "0", "udpBindAddress", "127.0.0.1"));
         return configs;
     }
 
