@@ -1,0 +1,122 @@
+package org.tinysep.sunspot.temperature.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.OptionalDouble;
+import org.junit.jupiter.api.Test;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.PlatformClock;
+import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.sunspot.protocol.LightStatus;
+import org.tinysep.sunspot.protocol.MovementDetection;
+import org.tinysep.sunspot.protocol.SunSpotPayloads;
+import org.tinysep.sunspot.protocol.SunSpotSensorType;
+import org.tinysep.sunspot.protocol.TemperatureStatus;
+
+/** Temperature Status payloads in, temperatures out, thinned by the dead band. */
+class SunSpotTemperatureDeviceTest {
+
+    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    private static final int TEMPERATURE = SunSpotSensorType.TEMPERATURE.code();
+
+    private final FakeSunSpotBus bus = new FakeSunSpotBus();
+    private final RecordingLogs logs = new RecordingLogs(() -> T0);
+    private final SunSpotTemperatureDevice sensor = new SunSpotTemperatureDevice(
+            new DriverContext(null, "d", "SunSpotTemperature", logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final List<String> heard = new ArrayList<>();
+
+    SunSpotTemperatureDeviceTest() {
+        sensor.connect((src, celsius, at) -> heard.add(celsius + "@" + (at.getEpochSecond() - T0.getEpochSecond())));
+    }
+
+    private void feed(double celsius, int second) {
+        sensor.payloadReceived(bus, TEMPERATURE, SunSpotPayloads.encode(new TemperatureStatus(celsius)),
+                T0.plusSeconds(second));
+    }
+
+    @Test
+    void listenersHearReadingsThatMoveByTheDeadBandFromTheLastOneTheyHeard() {
+        assertEquals(OptionalDouble.empty(), sensor.celsius());
+        feed(21.5, 0);
+        feed(21.5, 10); // the node repeats itself every 10 s
+        feed(21.6, 20); // 0.1 from 21.5 (the payload's resolution)
+        feed(21.6, 30);
+        feed(21.7, 40); // 0.1 from 21.6, although 21.7 - 21.6 < 0.1 in binary floating point
+        feed(21.0, 50);
+
+        assertEquals(List.of("21.5@0", "21.6@20", "21.7@40", "21.0@50"), heard);
+        assertEquals(21.0, sensor.celsius().orElseThrow(), 1e-9);
+        assertEquals(T0.plusSeconds(50).toString(), parameter("lastUpdate"));
+        assertEquals(DeviceStatus.State.ONLINE, sensor.status().state());
+    }
+
+    @Test
+    void aWiderDeadBandHidesNoiseAndAnnouncesDriftOnceItAddsUp() {
+        sensor.setParameter("deadbandCelsius", "0.5");
+        feed(20.0, 0);
+        feed(20.2, 10); // noise
+        feed(19.8, 20);
+        for (int i = 1; i <= 10; i++) {
+            feed(20.0 + i * 0.1, 20 + i * 10); // slow drift upwards
+        }
+        assertEquals(List.of("20.0@0", "20.5@70", "21.0@120"), heard);
+        assertEquals(21.0, sensor.celsius().orElseThrow(), 1e-9, "the provider always tells the latest reading");
+    }
+
+    @Test
+    void aZeroDeadBandPassesEveryReadingOn() {
+        sensor.setParameter("deadbandCelsius", "0");
+        feed(19.0, 0);
+        feed(19.0, 10);
+        assertEquals(List.of("19.0@0", "19.0@10"), heard);
+    }
+
+    @Test
+    void otherSensorsOfTheNodeAreIgnoredAndBadPayloadsGiveNoEventAndNoException() {
+        sensor.payloadReceived(bus, SunSpotSensorType.LIGHT.code(), SunSpotPayloads.encode(new LightStatus(30)), T0);
+        sensor.payloadReceived(bus, SunSpotSensorType.MOVEMENT.code(),
+                SunSpotPayloads.encode(new MovementDetection(true, null)), T0);
+        assertEquals(DeviceStatus.State.UNKNOWN, sensor.status().state(), "nothing of ours arrived yet");
+
+        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {3, 1}, T0);
+        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {(byte) 0xFF, 0, 0, 0}, T0);
+        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {3, 1, 0x7F, 0}, T0); // 3251.2 °C
+        sensor.payloadReceived(bus, TEMPERATURE, SunSpotPayloads.encode(new LightStatus(30)), T0);
+
+        assertEquals(List.of(), heard);
+        assertTrue(sensor.celsius().isEmpty());
+        assertEquals("4", parameter("rejectedPayloads"));
+        assertEquals(DeviceStatus.State.ERROR, sensor.status().state());
+        assertTrue(sensor.status().detail().startsWith("rejected payload: "), sensor.status().detail());
+
+        feed(22.3, 5);
+        assertEquals(List.of("22.3@5"), heard);
+        assertEquals(DeviceStatus.State.ONLINE, sensor.status().state());
+    }
+
+    @Test
+    void deadBandIsValidated() {
+        assertEquals("0.1", parameter("deadbandCelsius"));
+        for (String bad : new String[] {"-0.1", "warm", "", "NaN", "Infinity"}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> sensor.setParameter("deadbandCelsius", bad));
+            assertEquals("deadbandCelsius must be a number >= 0, was '" + bad + "'", e.getMessage());
+        }
+        assertEquals(0.1, sensor.deadband(), "unchanged after bad values");
+        sensor.setParameter("deadbandCelsius", " 0.25 ");
+        assertEquals(0.25, sensor.deadband());
+        assertThrows(IllegalArgumentException.class, () -> sensor.setParameter("celsius", "20"));
+    }
+
+    private String parameter(String key) {
+        return sensor.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
+                .orElseThrow();
+    }
+}
