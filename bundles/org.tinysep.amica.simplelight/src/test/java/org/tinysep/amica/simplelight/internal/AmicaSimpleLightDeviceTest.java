@@ -1,0 +1,137 @@
+package org.tinysep.amica.simplelight.internal;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.HeaterControl;
+import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.protocol.LightControl;
+import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.PlatformClock;
+import org.tinysep.device.support.RecordingLogs;
+
+/** Light Control status in, on/off out; switching sends Light Control 100/0 and waits for the node to confirm. */
+class AmicaSimpleLightDeviceTest {
+
+    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+
+    private final FakeBus bus = new FakeBus("1.30", "simple-light", "movement");
+    private final RecordingLogs logs = new RecordingLogs(() -> T0);
+    private final AmicaSimpleLightDevice light = new AmicaSimpleLightDevice(new DriverContext(null, "d",
+            AmicaSimpleLightDriver.NAME, logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final List<String> heard = new ArrayList<>();
+
+    AmicaSimpleLightDeviceTest() {
+        light.connect((source, on, at) -> heard.add((on ? "on@" : "off@") + (at.getEpochSecond() - T0.getEpochSecond())));
+    }
+
+    private void receive(AmicaPayload payload, int second) {
+        light.payloadReceived(bus, AmicaPayloads.encode(payload), T0.plusSeconds(second));
+    }
+
+    @Test
+    void statusReportsBecomeOnOffChangesAndOtherPayloadsAreIgnored() {
+        assertEquals(Optional.empty(), light.isOn());
+        receive(new LightControl(0), 0);
+        receive(new LightControl(0), 10);
+        receive(new MotionDetection(true), 11);
+        receive(new HeaterControl(80), 11);
+        receive(new KeepAlive(5, 3000, 1, 0x81, 9), 11);
+        receive(new LightControl(1), 20);
+        receive(new LightControl(100), 30);
+        receive(new LightControl(0), 40);
+
+        assertEquals(List.of("off@0", "on@20", "off@40"), heard);
+        assertEquals(Optional.of(false), light.isOn());
+        assertEquals(DeviceStatus.State.ONLINE, light.status().state());
+        assertEquals(0, bus.sent.size());
+    }
+
+    @Test
+    void switchingSendsTheExactCommandAndWaitsForTheNodesNextStatus() {
+        receive(new LightControl(0), 0);
+        light.switchLight(true);
+
+        assertEquals(1, bus.sent.size());
+        assertArrayEquals(new byte[] {5, 2, 0, 100}, bus.sent.get(0));
+        assertEquals(Optional.of(false), light.isOn(), "not on before the node confirms");
+        assertEquals(List.of("off@0"), heard);
+        assertEquals("true", parameter("pending"));
+        assertEquals("false", parameter("on"));
+
+        receive(new LightControl(100), 10);
+        assertEquals(Optional.of(true), light.isOn());
+        assertEquals(List.of("off@0", "on@10"), heard);
+        assertEquals("", parameter("pending"));
+
+        light.switchLight(false);
+        assertArrayEquals(new byte[] {5, 2, 0, 0}, bus.sent.get(1));
+        assertEquals(List.of("off@0", "on@10"), heard);
+        receive(new LightControl(0), 20);
+        assertEquals(List.of("off@0", "on@10", "off@20"), heard);
+        assertEquals(List.of("light off", "light on requested", "light on (confirmed)", "light off requested",
+                "light off (confirmed)"), deviceEvents());
+    }
+
+    @Test
+    void theOnParameterSwitchesLikeSwitchLightAndRejectsNonsense() {
+        light.setParameter("on", "true");
+        assertArrayEquals(new byte[] {5, 2, 0, 100}, bus.sent.get(0));
+        light.setParameter("on", "off");
+        assertArrayEquals(new byte[] {5, 2, 0, 0}, bus.sent.get(1));
+        assertEquals("false", parameter("pending"));
+
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> light.setParameter("on", "maybe"));
+        assertEquals("on must be true or false (or on/off), was 'maybe'", e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> light.setParameter("pending", "true"));
+        assertEquals(2, bus.sent.size(), "nothing sent for a bad value");
+        assertEquals("false", parameter("pending"), "unchanged by a bad value");
+    }
+
+    @Test
+    void aCommandTheNodeDoesNotTakeIsGivenUpAfterTwoStatusReports() {
+        receive(new LightControl(0), 0);
+        light.switchLight(true);
+        receive(new LightControl(0), 10); // may have crossed the command
+        assertEquals("true", parameter("pending"));
+        receive(new LightControl(0), 20);
+        assertEquals("", parameter("pending"));
+        assertEquals(List.of("off@0"), heard);
+        assertTrue(deviceEvents().contains("light on not confirmed: the node still reports light off after 2 status "
+                + "report(s); request given up"), deviceEvents().toString());
+    }
+
+    @Test
+    void aBusRadioThatCannotSendIsADeviceStatusNotAnException() {
+        bus.failure = new IllegalStateException("bus radio is closed");
+        light.switchLight(true);
+        assertEquals(DeviceStatus.State.ERROR, light.status().state());
+        assertEquals("", parameter("pending"));
+        assertTrue(deviceEvents().contains("light on not sent: bus radio is closed"), deviceEvents().toString());
+        receive(new LightControl(0), 10);
+        assertEquals(DeviceStatus.State.ONLINE, light.status().state(), "the node is heard again");
+    }
+
+    private List<String> deviceEvents() {
+        return logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).map(e -> e.message()).toList();
+    }
+
+    private String parameter(String key) {
+        return light.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
+                .orElseThrow();
+    }
+}

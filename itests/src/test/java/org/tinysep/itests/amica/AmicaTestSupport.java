@@ -1,0 +1,92 @@
+package org.tinysep.itests.amica;
+
+import static org.junit.Assert.assertArrayEquals;
+import static org.junit.Assert.assertEquals;
+
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.function.Supplier;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.itests.TinySepTestSupport;
+
+/**
+ * Helpers for the AmICA hardware-abstraction tests: simulated nodes on the UDP bus radio, the devices and
+ * providers of one node address, their parameters.
+ */
+public abstract class AmicaTestSupport extends TinySepTestSupport {
+
+    static final String BUS = "BusRadioAmicaUdp";
+
+    /** @return a simulated node that talks to the running UDP bus radio */
+    protected SimulatedNode node(int netgroup, int address, AmicaNodeType... types) throws Exception {
+        return new SimulatedNode(netgroup, address, udpPortOf(BUS), types);
+    }
+
+    /** Waits for the provider service of that interface at that node address. */
+    protected <P> P provider(Class<P> type, String node) {
+        return awaitService(type, "(" + DeviceProperties.NODE_ADDRESS + "=" + node + ")", TIMEOUT);
+    }
+
+    /** @return the node types published on the provider service of that interface at that node address */
+    protected List<String> providerNodeTypes(Class<?> type, String node) {
+        provider(type, node);
+        ServiceReference<?> ref = references(type.getName(), node).get(0);
+        return List.of((String[]) ref.getProperty(DeviceProperties.NODE_TYPE));
+    }
+
+    /** Waits for the Device service of that device type at that node address. */
+    protected Device device(String deviceType, String node) {
+        return awaitService(Device.class, "(&(" + DeviceProperties.DEVICE_TYPE + "=" + deviceType + ")("
+                + DeviceProperties.NODE_ADDRESS + "=" + node + "))", TIMEOUT);
+    }
+
+    /** @return the types of every device registered at that node address, sorted */
+    protected Set<String> deviceTypesAt(String node) {
+        Set<String> types = new TreeSet<>();
+        for (ServiceReference<?> ref : references(Device.class.getName(), node)) {
+            types.add((String) ref.getProperty(DeviceProperties.DEVICE_TYPE));
+        }
+        return types;
+    }
+
+    /** @return the current value of one of the device's parameters */
+    protected static String parameter(Device device, String key) {
+        return device.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
+                .orElseThrow(() -> new AssertionError(device + " has no parameter " + key));
+    }
+
+    /** Polls until {@code actual} equals {@code expected}; on timeout fails showing both. */
+    protected <T> void awaitEquals(String what, T expected, Supplier<T> actual) {
+        try {
+            await(TIMEOUT, () -> expected.equals(actual.get()), what);
+        } catch (AssertionError timeout) {
+            assertEquals(what, expected, actual.get());
+            throw timeout;
+        }
+    }
+
+    /** Reads the next command the platform sends to the node and compares it byte by byte. */
+    protected static void expectCommand(SimulatedNode node, int... payload) throws Exception {
+        byte[] expected = new byte[payload.length];
+        for (int i = 0; i < payload.length; i++) {
+            expected[i] = (byte) payload[i];
+        }
+        assertArrayEquals("command to " + node.id(), expected, node.receivePayload());
+    }
+
+    private List<ServiceReference<?>> references(String objectClass, String node) {
+        try {
+            ServiceReference<?>[] refs = context.getServiceReferences(objectClass,
+                    "(" + DeviceProperties.NODE_ADDRESS + "=" + node + ")");
+            return refs == null ? List.of() : List.of(refs);
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+}
