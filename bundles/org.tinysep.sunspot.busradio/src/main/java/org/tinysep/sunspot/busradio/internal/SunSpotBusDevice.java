@@ -1,0 +1,133 @@
+package org.tinysep.sunspot.busradio.internal;
+
+import java.time.Instant;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.concurrent.atomic.AtomicLong;
+import org.tinysep.api.bus.BusRadioSunSpotListener;
+import org.tinysep.api.bus.BusRadioSunSpotProvider;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.Uids;
+import org.tinysep.sunspot.protocol.SunSpotAddress;
+import org.tinysep.sunspot.protocol.SunSpotFrame;
+import org.tinysep.sunspot.protocol.SunSpotSensorType;
+
+/**
+ * One Sun SPOT as seen through the bus radio (thesis 4.4.1.3, A.2). Its node types are the sensor types seen from
+ * it so far: a new one is added to the {@code tinysep.node.type} service property before the packet that revealed
+ * it is delivered, so an abstraction driver that attaches because of it gets that packet too. Forwards every
+ * valid payload to its listeners without analysing it, each listener getting its own copy. Thread-safe: packets
+ * may arrive on several links at once.
+ */
+final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotProvider {
+
+    private final SunSpotAddress address;
+    private final Listeners<BusRadioSunSpotListener> listeners;
+    private final AtomicLong packets = new AtomicLong();
+    private volatile Set<String> nodeTypes;
+    private volatile String link;
+    private volatile Instant lastSeen;
+
+    /**
+     * @param type  the device type, {@code BusRadioSunSpot}; the UID derives from the driver name and the address
+     * @param first the sensor type of the first packet
+     * @param link  the link the first packet came on, e.g. {@code udp 127.0.0.1:5000}
+     */
+    SunSpotBusDevice(DriverContext context, String type, SunSpotAddress address, SunSpotSensorType first,
+            String link) {
+        super(context, Uids.of(context.driverName(), address.toString()), type, "Sun SPOT " + address);
+        this.address = address;
+        this.link = link;
+        this.listeners = new Listeners<>(uid());
+        this.nodeTypes = Set.of(first.typeName());
+        serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
+        serviceProperty(DeviceProperties.NODE_TYPE, new String[] {first.typeName()});
+        publish(this, BusRadioSunSpotProvider.class);
+    }
+
+    /** Handles one valid packet from this node, on the link's receive thread: the device is ONLINE again. */
+    void received(SunSpotFrame frame, SunSpotSensorType type, String from, Instant at) {
+        link = from;
+        lastSeen = at;
+        addType(type);
+        status(DeviceStatus.State.ONLINE, "");
+        byte[] bytes = frame.payload();
+        int sensorType = frame.sensorType();
+        listeners.fire(l -> l.payloadReceived(this, sensorType, bytes.clone(), at));
+        packets.incrementAndGet(); // counted once delivered
+    }
+
+    private synchronized void addType(SunSpotSensorType type) {
+        if (nodeTypes.contains(type.typeName())) {
+            return;
+        }
+        Set<String> more = new TreeSet<>(nodeTypes);
+        more.add(type.typeName());
+        event("node type " + type.typeName() + " seen; node types now " + more);
+        nodeTypes = Set.copyOf(more);
+        serviceProperty(DeviceProperties.NODE_TYPE, more.toArray(String[]::new));
+    }
+
+    /** Marks the device OFFLINE if it was last heard on {@code link}; its next packet brings it back ONLINE. */
+    void offline(String lostLink, String detail) {
+        if (lostLink.equals(link)) {
+            status(DeviceStatus.State.OFFLINE, detail);
+        }
+    }
+
+    @Override
+    public String deviceUid() {
+        return uid();
+    }
+
+    @Override
+    public Connection connect(BusRadioSunSpotListener listener) {
+        return listeners.add(listener);
+    }
+
+    @Override
+    public String nodeAddress() {
+        return address.toString();
+    }
+
+    @Override
+    public Set<String> nodeTypes() {
+        return nodeTypes;
+    }
+
+    SunSpotAddress address() {
+        return address;
+    }
+
+    /** @return the link the node was last heard on */
+    String link() {
+        return link;
+    }
+
+    long packets() {
+        return packets.get();
+    }
+
+    @Override
+    protected List<Parameter> moreParameters() {
+        return List.of(
+                Parameter.readOnly("node", address, "64-bit IEEE address of the Sun SPOT"),
+                Parameter.readOnly("nodeTypes", String.join(",", new TreeSet<>(nodeTypes)),
+                        "sensor types seen from this node so far"),
+                Parameter.readOnly("link", link, "where the node was last heard"),
+                Parameter.readOnly("lastSeen", lastSeen, "time of the last valid packet"),
+                Parameter.readOnly("packets", packets.get(), "valid packets received and delivered"));
+    }
+
+    @Override
+    protected void onDispose() {
+        listeners.closeAll();
+    }
+}

@@ -1,0 +1,80 @@
+package org.tinysep.sunspot.busradio.internal;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.osgi.framework.BundleContext;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.metatype.annotations.Designate;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.AbstractDriver;
+
+/**
+ * Bus Radio Sun SPOT (thesis 4.4.1.3): one bus device per Sun SPOT address, created on the first valid packet of
+ * any kind, providing {@code BusRadioSunSpotProvider}. Packets arrive on up to three links configured together
+ * (UDP, serial basestation, Sun SPOT SDK in-process) and take one path through a shared {@link PacketHandler} and
+ * node table. The Driver service carries the bound UDP port ({@value #PORT_PROPERTY}) when the UDP link is on.
+ */
+@Component(service = {}, immediate = true, configurationPid = SunSpotBusRadioDriver.PID)
+@Designate(ocd = BusRadioSunSpotConfig.class)
+public final class SunSpotBusRadioDriver extends AbstractDriver {
+
+    public static final String PID = "org.tinysep.sunspot.busradio";
+    public static final String NAME = "BusRadioSunSpot";
+    public static final String PORT_PROPERTY = "tinysep.udp.port";
+    /** Pause between attempts to open a missing serial port or SDK radiogram port. */
+    static final Duration REOPEN_EVERY = Duration.ofSeconds(5);
+
+    private volatile SunSpotLinks links;
+    private volatile SunSpotNodes nodes;
+    private volatile PacketHandler handler;
+    private volatile RejectCounter rejects;
+
+    public SunSpotBusRadioDriver() {
+        super(NAME);
+    }
+
+    @Activate
+    void activate(BundleContext bundleContext, BusRadioSunSpotConfig config) {
+        links = new SunSpotLinks(LinkSettings.of(config), SdkRadiograms.OPENER, REOPEN_EVERY, NAME);
+        links.bind();
+        Map<String, Object> props = new HashMap<>();
+        links.udpPort().ifPresent(port -> props.put(PORT_PROPERTY, port));
+        start(bundleContext, props);
+        rejects = new RejectCounter(context());
+        nodes = new SunSpotNodes(context(), NAME, this::addDevice);
+        handler = new PacketHandler(context(), nodes, rejects);
+        links.start(handler, nodes, context());
+    }
+
+    @Deactivate
+    void deactivate() {
+        if (links != null) {
+            links.close();
+        }
+        stop(); // removes the bus devices one by one, each removal announced, then the driver
+    }
+
+    @Override
+    protected void onDeviceRemoved(AbstractDevice device) {
+        nodes.forget(device);
+    }
+
+    @Override
+    public List<Parameter> parameters() {
+        List<Parameter> out = new ArrayList<>();
+        if (links != null) {
+            out.addAll(links.parameters());
+        }
+        out.add(Parameter.readOnly("nodes", nodes == null ? 0 : nodes.size(), "known Sun SPOTs"));
+        out.add(Parameter.readOnly("received", handler == null ? 0 : handler.received(),
+                "packets received on all links"));
+        out.addAll(rejects == null ? List.of() : rejects.parameters());
+        return out;
+    }
+}

@@ -1,0 +1,69 @@
+package org.tinysep.sunspot.busradio.internal;
+
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.util.List;
+import java.util.function.BooleanSupplier;
+import java.util.function.UnaryOperator;
+import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.PlatformClock;
+import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.sunspot.protocol.SunSpotAddress;
+import org.tinysep.sunspot.protocol.SunSpotCodec;
+import org.tinysep.sunspot.protocol.SunSpotFrame;
+import org.tinysep.sunspot.protocol.SunSpotPayload;
+import org.tinysep.sunspot.protocol.SunSpotPayloads;
+
+/**
+ * The bus radio's shared parts wired as the driver wires them, without a framework: in-memory logs, a node table
+ * that does not register services, one packet handler.
+ */
+final class TestBus {
+
+    static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    static final SunSpotAddress SPOT_A = SunSpotAddress.parse("0014.4F01.0000.1234");
+    static final SunSpotAddress SPOT_B = SunSpotAddress.parse("0014.4F01.0000.5678");
+
+    final RecordingLogs logs = new RecordingLogs(() -> T0);
+    final DriverContext context =
+            new DriverContext(null, "driver-uid", "BusRadioSunSpot", logs.reporter(), new PlatformClock(() -> T0));
+    final RejectCounter rejects = new RejectCounter(context);
+    final SunSpotNodes nodes = new SunSpotNodes(context, "BusRadioSunSpot", UnaryOperator.identity());
+    final PacketHandler handler = new PacketHandler(context, nodes, rejects);
+
+    void feed(byte[] datagram, String from) {
+        handler.datagram(datagram, datagram.length, from);
+    }
+
+    SunSpotBusDevice node(SunSpotAddress address) {
+        return nodes.find(address);
+    }
+
+    List<String> problems() {
+        return logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM).map(EventEntry::message).toList();
+    }
+
+    static byte[] frame(SunSpotAddress source, SunSpotPayload payload) {
+        return SunSpotCodec.encode(SunSpotFrame.of(source, SunSpotPayloads.encode(payload)));
+    }
+
+    /** Polls until the condition holds; fails after the timeout (no timed assertions). */
+    static void await(String what, Duration timeout, BooleanSupplier condition) {
+        long end = System.nanoTime() + timeout.toNanos();
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > end) {
+                fail("timed out after " + timeout + " waiting for " + what);
+            }
+            try {
+                Thread.sleep(10);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                fail("interrupted waiting for " + what);
+            }
+        }
+    }
+}

@@ -1,0 +1,52 @@
+package org.tinysep.sunspot.protocol;
+
+/** Formats bytes as upper-case hex for messages and {@code toString()}; package-private helper. */
+final class Hex {
+
+    private static final char[] DIGITS = "0123456789ABCDEF".toCharArray();
+
+    private Hex() {
+    }
+
+    /** @return e.g. {@code "02 01 00 01"}; empty string for no bytes */
+    static String of(byte[] bytes, int off, int len) {
+        StringBuilder sb = new StringBuilder(len * 3);
+        for (int i = 0; i < len; i++) {
+            if (i > 0) {
+                sb.append(' ');
+            }
+            int b = bytes[off + i] & 0xFF;
+            sb.append(DIGITS[b >>> 4]).append(DIGITS[b & 0x0F]);
+        }
+        return sb.toString();
+    }
+
+    /** @return e.g. {@code "0xA1"} */
+    static String ofByte(int value) {
+        return "0x" + DIGITS[(value >>> 4) & 0x0F] + DIGITS[value & 0x0F];
+    }
+
+    /** @return the value of one hex digit, or -1 if {@code c} is none */
+    static int digit(char c) {
+        if (c >= '0' && c <= '9') {
+            return c - '0';
+        }
+        if (c >= 'A' && c <= 'F') {
+            return c - 'A' + 10;
+        }
+        if (c >= 'a' && c <= 'f') {
+            return c - 'a' + 10;
+        }
+        return -1;
+    }
+
+    /** @return {@code digits} upper-case hex digits of the low bits of {@code value}, zero-padded */
+    static String digits(long value, int digits) {
+        char[] out = new char[digits];
+        for (int i = digits - 1; i >= 0; i--) {
+            out[i] = DIGITS[(int) (value & 0x0F)];
+            value >>>= 4;
+        }
+        return new String(out);
+    }
+}

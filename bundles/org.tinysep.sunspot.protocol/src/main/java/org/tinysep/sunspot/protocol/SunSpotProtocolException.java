@@ -1,0 +1,35 @@
+package org.tinysep.sunspot.protocol;
+
+import java.util.Objects;
+
+/**
+ * Signals a frame or payload that violates the Sun SPOT node protocol. The {@link #reason()} says which rule was
+ * broken; the message adds the detail (which byte, which value). Created without a stack trace, since rejecting
+ * garbage is an expected, frequent event on a radio link.
+ */
+public final class SunSpotProtocolException extends Exception {
+
+    private static final long serialVersionUID = 1L;
+
+    private final RejectReason reason;
+
+    /**
+     * @param reason the broken rule
+     * @param detail what exactly was wrong, e.g. {@code "checksum 0x12, computed 0x34"}; may be null
+     */
+    public SunSpotProtocolException(RejectReason reason, String detail) {
+        super(message(reason, detail), null, false, false);
+        this.reason = reason;
+    }
+
+    /** @return the broken rule, never null */
+    public RejectReason reason() {
+        return reason;
+    }
+
+    private static String message(RejectReason reason, String detail) {
+        Objects.requireNonNull(reason, "reason");
+        String head = reason.name() + " (" + reason.description() + ")";
+        return detail == null || detail.isEmpty() ? head : head + ": " + detail;
+    }
+}

@@ -1,0 +1,69 @@
+package org.tinysep.sunspot.protocol;
+
+import java.util.Optional;
+
+/**
+ * The Sun SPOT sensor types: the header's sensor type byte, which is also the first byte of the payloads of thesis
+ * Table 3.2. {@link #typeName()} is the matching node type name of the TinySEP API
+ * ({@code org.tinysep.api.device.NodeType}).
+ */
+public enum SunSpotSensorType {
+
+    /** Movement sensor node (accelerometer), code 2. */
+    MOVEMENT(2, "movement"),
+    /** Temperature sensor node, code 3. */
+    TEMPERATURE(3, "temperature"),
+    /** Light sensor node (brightness only, no actuator), code 4. */
+    LIGHT(4, "light-sensor"),
+    /** Pet collar (pet movement), code 5. */
+    PET_COLLAR(5, "pet-collar");
+
+    private final int code;
+    private final String typeName;
+
+    SunSpotSensorType(int code, String typeName) {
+        this.code = code;
+        this.typeName = typeName;
+    }
+
+    /** @return the sensor type byte, e.g. 3 for {@link #TEMPERATURE} */
+    public int code() {
+        return code;
+    }
+
+    /** @return the TinySEP node type name, e.g. {@code "light-sensor"} */
+    public String typeName() {
+        return typeName;
+    }
+
+    /**
+     * @param code a sensor type byte (any int)
+     * @return the sensor type with that code, if any
+     */
+    public static Optional<SunSpotSensorType> fromCode(int code) {
+        for (SunSpotSensorType t : values()) {
+            if (t.code == code) {
+                return Optional.of(t);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /** @return true if {@code code} is one of the four sensor types, without allocating */
+    static boolean isKnown(int code) {
+        return code >= MOVEMENT.code && code <= PET_COLLAR.code;
+    }
+
+    /**
+     * @param typeName a TinySEP node type name, e.g. {@code "temperature"}
+     * @return the sensor type with that name, if any
+     */
+    public static Optional<SunSpotSensorType> fromTypeName(String typeName) {
+        for (SunSpotSensorType t : values()) {
+            if (t.typeName.equals(typeName)) {
+                return Optional.of(t);
+            }
+        }
+        return Optional.empty();
+    }
+}

@@ -1,0 +1,54 @@
+package org.tinysep.sunspot.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.EnumSet;
+import java.util.Map;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.tinysep.api.device.NodeType;
+
+class SunSpotSensorTypeTest {
+
+    @Test
+    void typeNamesEqualTheApiNodeTypeConstants() {
+        Map<SunSpotSensorType, String> api = Map.of(
+                SunSpotSensorType.MOVEMENT, NodeType.MOVEMENT,
+                SunSpotSensorType.TEMPERATURE, NodeType.TEMPERATURE,
+                SunSpotSensorType.LIGHT, NodeType.LIGHT_SENSOR,
+                SunSpotSensorType.PET_COLLAR, NodeType.PET_COLLAR);
+        assertEquals(EnumSet.allOf(SunSpotSensorType.class), api.keySet(), "every sensor type has an API name");
+        for (SunSpotSensorType t : SunSpotSensorType.values()) {
+            assertEquals(api.get(t), t.typeName(), t.name());
+            assertEquals(Optional.of(t), SunSpotSensorType.fromTypeName(api.get(t)));
+        }
+        assertEquals(Optional.empty(), SunSpotSensorType.fromTypeName(NodeType.DOOR));
+    }
+
+    @Test
+    void codesAreThePayloadsFirstBytes() throws Exception {
+        assertEquals(2, SunSpotSensorType.MOVEMENT.code());
+        assertEquals(3, SunSpotSensorType.TEMPERATURE.code());
+        assertEquals(4, SunSpotSensorType.LIGHT.code());
+        assertEquals(5, SunSpotSensorType.PET_COLLAR.code());
+        for (SunSpotPayload p : new SunSpotPayload[] {new MovementDetection(true), new TemperatureStatus(20),
+                new LightStatus(5), new PetMovementDetection(true)}) {
+            assertEquals(p.sensorType().code(), SunSpotPayloads.encode(p)[0], p.toString());
+        }
+    }
+
+    @Test
+    void fromCodeKnowsExactlyTwoToFive() {
+        for (int code = -300; code < 300; code++) {
+            Optional<SunSpotSensorType> t = SunSpotSensorType.fromCode(code);
+            assertEquals(code >= 2 && code <= 5, t.isPresent(), "code " + code);
+            assertEquals(t.isPresent(), SunSpotSensorType.isKnown(code), "code " + code);
+            t.ifPresent(type -> assertEquals(type.code(), (int) SunSpotSensorType.fromCode(type.code())
+                    .orElseThrow().code()));
+        }
+        assertTrue(SunSpotSensorType.fromCode(4).orElseThrow() == SunSpotSensorType.LIGHT);
+        assertFalse(SunSpotSensorType.fromCode(0x102).isPresent(), "no truncation to a byte");
+    }
+}
