@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Installs what the build and tests need beyond the JDK and Maven. Idempotent; safe to run on every build.
+#   java, maven  - build
+#   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
 set -euo pipefail
 need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v mvn >/dev/null || need+=(maven)
+command -v socat >/dev/null || need+=(socat)
 if [ ${#need[@]} -gt 0 ]; then
   if [ "$(id -u)" -ne 0 ]; then
-    echo "Missing packages: ${need[*]} - install them (apt-get install ${need[*]}) and run again." >&2
+    echo "Missing packages: ${need[*]} - install them (apt-get update && apt-get install ${need[*]}) and run again." >&2
     exit 1
   fi
   echo "Installing ${need[*]} ..."
@@ -16,5 +19,9 @@ fi
 java_major=$(java -version 2>&1 | sed -n 's/.*version "\([0-9]*\).*/\1/p' | head -1)
 if [ "${java_major:-0}" -lt 17 ]; then
   echo "Java 17 or newer is needed, found ${java_major:-none}." >&2
+  exit 1
+fi
+if ! command -v socat >/dev/null; then
+  echo "socat is still missing after installation." >&2
   exit 1
 fi

@@ -2,14 +2,10 @@ package org.tinysep.amica.busradio.udp.internal;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -17,24 +13,23 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.amica.protocol.AmicaAddress;
-import org.tinysep.amica.protocol.AmicaCodec;
-import org.tinysep.amica.protocol.AmicaFrame;
-import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.busradio.base.AmicaNodes;
+import org.tinysep.amica.busradio.base.FrameHandler;
+import org.tinysep.amica.busradio.base.RejectCounter;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
 
 /**
- * Bus Radio AmICA UDP/IP (thesis 4.4.1.2): listens on a UDP port, creates one {@link AmicaBusDevice} per node on
- * the node's first keep-alive, and forwards later payloads to it. Its Driver service carries the bound port
- * ({@value #PORT_PROPERTY}).
+ * Bus Radio AmICA UDP/IP (thesis 4.4.1.2): listens on a UDP port and hands each datagram to the shared AmICA bus
+ * radio logic ({@code org.tinysep.amica.busradio.base}), which creates one bus device per node on the node's first
+ * keep-alive and forwards later payloads to it. This class is the transport: a node's route is the UDP address
+ * it last sent from. Its Driver service carries the bound port ({@value #PORT_PROPERTY}).
  */
 @Component(service = {}, immediate = true, configurationPid = AmicaUdpDriver.PID)
 @Designate(ocd = BusRadioUdpConfig.class)
-public final class AmicaUdpDriver extends AbstractDriver implements FrameHandler.Nodes, AmicaBusDevice.Link {
+public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.Transport<InetSocketAddress> {
 
     public static final String PID = "org.tinysep.amica.busradio.udp";
     public static final String NAME = "BusRadioAmicaUdp";
@@ -42,11 +37,9 @@ public final class AmicaUdpDriver extends AbstractDriver implements FrameHandler
 
     private static final Logger LOG = LoggerFactory.getLogger(AmicaUdpDriver.class);
 
-    private final Map<AmicaAddress, AmicaBusDevice> nodes = new ConcurrentHashMap<>();
-    private final AtomicInteger sequence = new AtomicInteger();
-    private final AtomicLong sent = new AtomicLong();
     private RejectCounter rejects;
-    private FrameHandler handler;
+    private AmicaNodes<InetSocketAddress> nodes;
+    private FrameHandler<InetSocketAddress> handler;
     private UdpTransport transport;
     private String listening;
 
@@ -69,10 +62,11 @@ public final class AmicaUdpDriver extends AbstractDriver implements FrameHandler
             LOG.error("{} {}", NAME, problem);
         }
         start(bundleContext, props);
-        rejects = new RejectCounter(context());
-        handler = new FrameHandler(context(), this, rejects);
+        rejects = new RejectCounter(context(), "datagram", "datagrams rejected in total");
+        nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
+        handler = new FrameHandler<>(context(), nodes, rejects);
         if (transport != null) {
-            transport.start(handler);
+            transport.start(handler::datagram);
         } else {
             context().event(EventKind.PROBLEM, problem);
         }
@@ -87,52 +81,33 @@ public final class AmicaUdpDriver extends AbstractDriver implements FrameHandler
     }
 
     @Override
-    public AmicaBusDevice find(AmicaAddress address) {
-        return nodes.get(address);
-    }
-
-    @Override
-    public AmicaBusDevice create(AmicaAddress address, KeepAlive keepAlive, InetSocketAddress from, Instant at) {
-        AmicaBusDevice device = new AmicaBusDevice(context(), address, keepAlive, from, this);
-        nodes.put(address, device);
-        return addDevice(device);
-    }
-
-    @Override
     protected void onDeviceRemoved(AbstractDevice device) {
-        if (device instanceof AmicaBusDevice bus) {
-            nodes.remove(bus.address(), bus);
-        }
+        nodes.forget(device);
     }
 
     @Override
-    public void send(AmicaBusDevice device, byte[] payload, InetSocketAddress to) {
-        AmicaAddress node = device.address();
-        byte[] frame = AmicaCodec.encode(new AmicaFrame(node.netgroup(), AmicaCodec.PLATFORM_ADDRESS,
-                node.address(), sequence.getAndIncrement() & 0xFF, payload));
+    public void transmit(byte[] frame, InetSocketAddress to, AmicaNodes.Outcome outcome) {
         UdpTransport t = transport;
         if (t == null) {
-            context().reporter().packet(Direction.SENT, "node " + node, frame, "not sent: " + listening);
+            outcome.done("not sent: " + listening);
             return;
         }
-        t.send(frame, to, (bytes, target, failure) -> {
-            String where = "node " + node + " via " + target.getAddress().getHostAddress() + ":" + target.getPort();
-            if (failure == null) {
-                sent.incrementAndGet();
-                context().reporter().packet(Direction.SENT, where, bytes, "");
-            } else {
-                context().reporter().packet(Direction.SENT, where, bytes, "send failed: " + failure.getMessage());
-            }
-        });
+        t.send(frame, to, (bytes, target, failure) ->
+                outcome.done(failure == null ? null : "send failed: " + failure.getMessage()));
+    }
+
+    @Override
+    public String describe(InetSocketAddress route) {
+        return route.getAddress().getHostAddress() + ":" + route.getPort();
     }
 
     @Override
     public List<Parameter> parameters() {
         List<Parameter> out = new ArrayList<>();
         out.add(Parameter.readOnly("status", listening, "socket state"));
-        out.add(Parameter.readOnly("nodes", nodes.size(), "known nodes"));
+        out.add(Parameter.readOnly("nodes", nodes == null ? 0 : nodes.size(), "known nodes"));
         out.add(Parameter.readOnly("received", handler == null ? 0 : handler.received(), "datagrams received"));
-        out.add(Parameter.readOnly("sent", sent.get(), "frames sent to nodes"));
+        out.add(Parameter.readOnly("sent", nodes == null ? 0 : nodes.sent(), "frames sent to nodes"));
         out.addAll(rejects == null ? List.of() : rejects.parameters());
         return out;
     }

@@ -1,6 +1,5 @@
-package org.tinysep.amica.busradio.udp.internal;
+package org.tinysep.amica.busradio.base;
 
-import java.net.InetSocketAddress;
 import java.time.Instant;
 import java.util.List;
 import java.util.Set;
@@ -23,32 +22,42 @@ import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
 
 /**
- * One AmICA sensor node as seen through the UDP bus radio (thesis 4.4.1). Forwards every valid payload to its
- * listeners without analysing it, and sends commands back to the node's last UDP source address.
+ * One AmICA sensor node as seen through a bus radio (thesis 4.4.1). Forwards every valid payload to its listeners
+ * without analysing it, and sends commands back along the route the node was last heard on.
+ *
+ * @param <R> the route type: where the node was last heard and where its commands go
  */
-final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvider {
+public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioAmicaProvider {
 
-    /** Sends an encoded frame to the node; the driver's transport. */
-    interface Link {
-        void send(AmicaBusDevice device, byte[] frame, InetSocketAddress to);
+    /** Sends a command payload to the node along a route; the driver's side. */
+    public interface Link<R> {
+        /** Frames and queues the payload; never blocks. */
+        void send(AmicaBusDevice<R> device, byte[] payload, R route);
+
+        /** @return the route for the user, e.g. {@code 127.0.0.1:5000} or {@code /dev/ttyUSB0} */
+        String describe(R route);
     }
 
     private final AmicaAddress address;
-    private final Link link;
+    private final Link<R> link;
     private final Listeners<BusRadioAmicaListener> listeners;
     private final AtomicLong packets = new AtomicLong();
     private volatile Set<String> nodeTypes;
     private volatile KeepAlive keepAlive;
-    private volatile InetSocketAddress remote;
+    private volatile R route;
     private volatile Instant lastSeen;
 
-    AmicaBusDevice(DriverContext context, AmicaAddress address, KeepAlive keepAlive, InetSocketAddress remote,
-            Link link) {
-        super(context, Uids.of(context.driverName(), address.toString()), context.driverName(),
-                "AmICA node " + address);
+    /**
+     * @param type  the device type, e.g. {@code BusRadioAmicaUdp}; the UID derives from the driver name and the
+     *              node address
+     * @param route where the keep-alive came from
+     */
+    public AmicaBusDevice(DriverContext context, String type, AmicaAddress address, KeepAlive keepAlive, R route,
+            Link<R> link) {
+        super(context, Uids.of(context.driverName(), address.toString()), type, "AmICA node " + address);
         this.address = address;
         this.link = link;
-        this.remote = remote;
+        this.route = route;
         this.keepAlive = keepAlive;
         this.listeners = new Listeners<>(uid());
         this.nodeTypes = typeNames(keepAlive);
@@ -63,10 +72,10 @@ final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvid
         return Set.copyOf(names);
     }
 
-    /** Handles one valid frame from this node, on the receive thread. */
-    void received(AmicaFrame frame, AmicaPayload payload, InetSocketAddress from, Instant at) {
+    /** Handles one valid frame from this node, on the receive thread: the device is ONLINE again. */
+    public void received(AmicaFrame frame, AmicaPayload payload, R from, Instant at) {
         packets.incrementAndGet();
-        remote = from;
+        route = from;
         lastSeen = at;
         if (payload instanceof KeepAlive ka) {
             keepAlive = ka;
@@ -80,6 +89,11 @@ final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvid
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
         listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
+    }
+
+    /** Marks the device OFFLINE, e.g. because its link went down; the next packet brings it back ONLINE. */
+    public void offline(String detail) {
+        status(DeviceStatus.State.OFFLINE, detail);
     }
 
     @Override
@@ -108,11 +122,16 @@ final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvid
             throw new IllegalArgumentException("AmICA payload must be 1.." + AmicaCodec.MAX_PAYLOAD + " bytes, was "
                     + (payload == null ? "null" : payload.length));
         }
-        link.send(this, payload.clone(), remote);
+        link.send(this, payload.clone(), route);
     }
 
-    AmicaAddress address() {
+    public AmicaAddress address() {
         return address;
+    }
+
+    /** @return where the node was last heard */
+    public R route() {
+        return route;
     }
 
     @Override
@@ -121,8 +140,8 @@ final class AmicaBusDevice extends AbstractDevice implements BusRadioAmicaProvid
         return List.of(
                 Parameter.readOnly("node", address, "netgroup.address of the node"),
                 Parameter.readOnly("nodeTypes", String.join(",", nodeTypes), "from the keep-alive product id"),
-                Parameter.readOnly("remote", remote.getAddress().getHostAddress() + ":" + remote.getPort(),
-                        "UDP address the node last sent from; commands go there"),
+                Parameter.readOnly("remote", link.describe(route),
+                        "where the node was last heard from; commands go there"),
                 Parameter.readOnly("lastSeen", lastSeen, "time of the last valid packet"),
                 Parameter.readOnly("packets", packets.get(), "valid packets received"),
                 Parameter.readOnly("uptimeSeconds", ka.uptimeSeconds(), "from the last keep-alive"),

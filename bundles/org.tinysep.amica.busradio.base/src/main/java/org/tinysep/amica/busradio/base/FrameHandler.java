@@ -1,0 +1,111 @@
+package org.tinysep.amica.busradio.base;
+
+import java.time.Instant;
+import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicLong;
+import org.tinysep.amica.protocol.AmicaAddress;
+import org.tinysep.amica.protocol.AmicaCodec;
+import org.tinysep.amica.protocol.AmicaFrame;
+import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.AmicaProtocolException;
+import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.protocol.RejectReason;
+import org.tinysep.api.log.Direction;
+import org.tinysep.device.support.DriverContext;
+
+/**
+ * Turns one frame into a delivery to a bus device, a new bus device (keep-alive from an unknown node), or a
+ * counted rejection; every input ends up in the packet log, a rejected one with its reason. Runs on the
+ * transport's receive thread only.
+ *
+ * @param <R> the route type (where a frame came from)
+ */
+public final class FrameHandler<R> {
+
+    /** Where nodes live: the driver's node table. */
+    public interface Nodes<R> {
+        AmicaBusDevice<R> find(AmicaAddress address);
+
+        AmicaBusDevice<R> create(AmicaAddress address, KeepAlive keepAlive, R from, Instant at);
+
+        /** @return the route for logs, e.g. {@code 127.0.0.1:5000} */
+        String describe(R route);
+    }
+
+    private final DriverContext context;
+    private final Nodes<R> nodes;
+    private final RejectCounter rejects;
+    private final AtomicLong received = new AtomicLong();
+
+    public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
+        this.context = context;
+        this.nodes = nodes;
+        this.rejects = rejects;
+    }
+
+    /** Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after. */
+    public void datagram(byte[] data, int length, R from) {
+        received.incrementAndGet();
+        byte[] raw = Arrays.copyOf(data, length);
+        AmicaFrame frame;
+        try {
+            frame = AmicaCodec.decode(data, 0, length);
+        } catch (AmicaProtocolException e) {
+            reject(e.reason(), e.getMessage(), raw, from);
+            return;
+        }
+        handle(frame, raw, from);
+    }
+
+    /** Handles a frame already found in a byte stream (framing checked); {@code raw} are its bytes. */
+    public void frame(AmicaFrame frame, byte[] raw, R from) {
+        received.incrementAndGet();
+        handle(frame, raw, from);
+    }
+
+    /**
+     * Records input that the transport's framing already rejected, e.g. a run of bytes a stream decoder skipped:
+     * counted under its reason and written to the packet log.
+     */
+    public void rejected(RejectReason reason, String message, byte[] raw, R from) {
+        reject(reason, message, raw, from);
+    }
+
+    private void handle(AmicaFrame frame, byte[] raw, R from) {
+        Instant at = context.now();
+        String origin = nodes.describe(from);
+        AmicaPayload payload;
+        try {
+            payload = AmicaPayloads.decode(frame.payload());
+        } catch (AmicaProtocolException e) {
+            reject(e.reason(), e.getMessage(), raw, from);
+            return;
+        }
+        AmicaBusDevice<R> device = nodes.find(frame.sender());
+        if (device == null) {
+            if (!(payload instanceof KeepAlive keepAlive)) {
+                reject(RejectReason.UNKNOWN_NODE, new AmicaProtocolException(RejectReason.UNKNOWN_NODE, "node "
+                        + frame.sender() + " sent " + payload.getClass().getSimpleName() + " before any keep-alive")
+                        .getMessage(), raw, from);
+                return;
+            }
+            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+            device = nodes.create(frame.sender(), keepAlive, from, at);
+        } else {
+            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+        }
+        device.received(frame, payload, from, at);
+    }
+
+    private void reject(RejectReason reason, String message, byte[] raw, R from) {
+        String origin = nodes.describe(from);
+        rejects.reject(reason, message, origin);
+        context.reporter().packet(Direction.RECEIVED, origin, raw, message);
+    }
+
+    /** @return how many datagrams or frames were handed in (rejected ones included, stream runs not) */
+    public long received() {
+        return received.get();
+    }
+}

@@ -1,0 +1,89 @@
+package org.tinysep.amica.busradio.serial.internal;
+
+import java.util.List;
+import java.util.Map;
+import org.osgi.framework.BundleContext;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.metatype.annotations.Designate;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.AbstractDriver;
+
+/**
+ * Bus Radio AmICA (serial), thesis 4.4.1.1: one instance per factory configuration, i.e. per serial port, named
+ * {@code BusRadioAmicaSerial <port>}. The modified AmICA base node on the port forwards the frames of every node
+ * in range; the shared AmICA bus radio logic creates one bus device per node on its first keep-alive. Its Driver
+ * service carries the port ({@value #PORT_PROPERTY}).
+ */
+@Component(service = {}, immediate = true, configurationPid = AmicaSerialDriver.PID,
+        configurationPolicy = ConfigurationPolicy.REQUIRE)
+@Designate(ocd = BusRadioSerialConfig.class, factory = true)
+public final class AmicaSerialDriver extends AbstractDriver {
+
+    public static final String PID = "org.tinysep.amica.busradio.serial";
+    public static final String NAME = "BusRadioAmicaSerial";
+    public static final String PORT_PROPERTY = "tinysep.serial.port";
+
+    private static final Logger LOG = LoggerFactory.getLogger(AmicaSerialDriver.class);
+
+    private final SerialSettings settings;
+    private volatile SerialRadio radio;
+
+    /** DS constructor injection: the configuration names the driver (one per port). */
+    @Activate
+    public AmicaSerialDriver(BusRadioSerialConfig config, Map<String, Object> properties) {
+        this(SerialSettings.of(config, properties));
+    }
+
+    private AmicaSerialDriver(SerialSettings settings) {
+        super(settings.driverName());
+        this.settings = settings;
+    }
+
+    @Activate
+    void activate(BundleContext bundleContext) {
+        start(bundleContext, settings.port() == null ? Map.of() : Map.of(PORT_PROPERTY, settings.port()));
+        for (String problem : settings.problems()) {
+            LOG.warn("{}: {}", name(), problem);
+            context().event(EventKind.PROBLEM, problem);
+        }
+        if (settings.port() != null) {
+            SerialRadio r = new SerialRadio(context(), settings, this::addDevice);
+            radio = r;
+            r.start();
+        }
+    }
+
+    @Deactivate
+    void deactivate() {
+        SerialRadio r = radio;
+        if (r != null) {
+            r.close();
+        }
+        stop(); // removes the bus devices one by one, each removal announced, then the driver
+    }
+
+    @Override
+    protected void onDeviceRemoved(AbstractDevice device) {
+        SerialRadio r = radio;
+        if (r != null) {
+            r.forget(device);
+        }
+    }
+
+    @Override
+    public List<Parameter> parameters() {
+        SerialRadio r = radio;
+        if (r == null) {
+            return List.of(Parameter.readOnly("status", "not running: " + String.join("; ", settings.problems()),
+                    "serial port state"));
+        }
+        return r.parameters();
+    }
+}
