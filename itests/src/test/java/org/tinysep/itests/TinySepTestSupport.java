@@ -101,6 +101,10 @@ public abstract class TinySepTestSupport {
         // the test class path holds slf4j-simple too: without this, Felix lets java.util.ServiceLoader see it
         // ("SimpleServiceProvider not a subtype") and SLF4J falls back to NOP inside the framework
         o.add(frameworkProperty("felix.bootdelegation.implicit").value("false"));
+        // jSerialComm loads its JNI library once per class loader and the JVM refuses the same library file in a
+        // second one: every framework after the first in this JVM (one per test class or method) would fail to
+        // open any port ("Cannot load native library"). A random file name per load avoids that.
+        o.add(systemProperty("jSerialComm.library.randomizeNativeName").value("true"));
         for (String key : List.of("org.ops4j.pax.url.mvn.localRepository", "org.ops4j.pax.url.mvn.repositories",
                 "org.slf4j.simpleLogger.defaultLogLevel", "org.slf4j.simpleLogger.showDateTime", "org.slf4j.simpleLogger.dateTimeFormat",
                 "org.slf4j.simpleLogger.showShortLogName")) {

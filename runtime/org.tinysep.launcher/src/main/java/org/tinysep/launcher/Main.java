@@ -18,8 +18,15 @@ public final class Main {
     private Main() {
     }
 
+    static final String JSERIALCOMM_RANDOM_NAME = "jSerialComm.library.randomizeNativeName";
+
     public static void main(String[] args) {
         LoggingDefaults.apply(); // before the first logger
+        // jSerialComm loads its JNI library per class loader and the JVM refuses one library file in a second
+        // loader: without a random file name, updating the jSerialComm bundle at runtime breaks every serial port
+        if (System.getProperty(JSERIALCOMM_RANDOM_NAME) == null) {
+            System.setProperty(JSERIALCOMM_RANDOM_NAME, "true");
+        }
         Options options;
         try {
             options = Options.parse(Arrays.asList(args), System.getenv(), Options.defaultHome(launcherJar()));

@@ -49,6 +49,7 @@ class DistributionIT {
         LoggingDefaults.apply();
         copyDistribution(Path.of(System.getProperty("tinysep.dist", "target/tinysep")), home);
         Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=0\nbindAddress=127.0.0.1\n");
+        Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
         launcher = new Launcher(new Options(true, home, false));
         report = launcher.start();
         report.lines().forEach(System.out::println);
@@ -135,7 +136,8 @@ class DistributionIT {
 
     private static int udpPort() {
         try {
-            ServiceReference<?>[] refs = context().getAllServiceReferences("org.tinysep.api.device.Driver", "(tinysep.udp.port=*)");
+            ServiceReference<?>[] refs = context().getAllServiceReferences("org.tinysep.api.device.Driver",
+                    "(&(tinysep.driver.name=BusRadioAmicaUdp)(tinysep.udp.port=*))");
             return refs == null ? -1 : Integer.parseInt(String.valueOf(refs[0].getProperty("tinysep.udp.port")));
         } catch (Exception e) {
             return -1;
