@@ -7,7 +7,11 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 
-/** The far end of a pseudo-terminal pair, opened as plain files: writes bytes, reads them with a deadline. */
+/**
+ * The far end of a pseudo-terminal pair, opened as plain files: writes bytes, reads them with a deadline. A
+ * deliberate copy of {@code org.tinysep.serial.support.testing.PtyPeer}: the probe bundle cannot load that package
+ * (see {@link SocatPair}).
+ */
 final class PtyPeer implements AutoCloseable {
 
     private final FileInputStream in;

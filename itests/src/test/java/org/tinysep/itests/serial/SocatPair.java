@@ -10,6 +10,10 @@ import java.util.concurrent.TimeUnit;
  * A socat pseudo-terminal pair with stable link paths {@code dir/a} and {@code dir/b}: what a USB serial adapter
  * and the node behind it look like to the link. Killing it makes both ends vanish; starting it again creates new
  * pseudo-terminals behind the same link paths.
+ * <p>
+ * A deliberate copy of {@code org.tinysep.serial.support.testing.SocatPair}, the one the unit tests share: these
+ * tests run inside Pax Exam's probe bundle, which loads only its own classes and packages exported in the
+ * framework, and no bundle exports that package (ClassNotFoundException when tried).
  */
 final class SocatPair implements AutoCloseable {
 

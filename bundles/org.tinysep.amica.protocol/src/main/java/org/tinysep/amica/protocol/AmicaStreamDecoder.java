@@ -74,16 +74,27 @@ public final class AmicaStreamDecoder {
     /**
      * Discards all buffered bytes, e.g. after the link was reopened. Bytes already dropped but not yet reported, and
      * the bytes of an incomplete candidate frame, are reported as one run (reason {@link RejectReason#TRUNCATED} if
-     * only an incomplete candidate was buffered).
+     * only an incomplete candidate was buffered). Like every run it is reported in chunks of at most
+     * {@value #BUFFER_SIZE} bytes: should it be longer, the first {@value #BUFFER_SIZE} bytes are reported with its
+     * reason and the rest, bytes of the incomplete candidate, as a second run with reason
+     * {@link RejectReason#TRUNCATED}.
      */
     public void reset() {
-        if (skipped == 0 && count > 0) {
-            skipReason = RejectReason.TRUNCATED;
-        }
-        skipped += count;
+        int left = count;
         start = 0;
         count = 0;
+        if (skipped == 0 && left > 0) {
+            skipReason = RejectReason.TRUNCATED;
+        }
+        int first = Math.min(left, BUFFER_SIZE - skipped);
+        skipped += first;
+        left -= first;
         reportRun();
+        if (left > 0) { // fewer than BUFFER_SIZE: skipped was below it, count at most BUFFER_SIZE
+            skipped = left;
+            skipReason = RejectReason.TRUNCATED;
+            reportRun();
+        }
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */

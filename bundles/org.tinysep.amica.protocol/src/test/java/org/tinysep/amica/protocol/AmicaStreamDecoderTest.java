@@ -175,6 +175,20 @@ class AmicaStreamDecoderTest {
     }
 
     @Test
+    void resetReportsARunLongerThanTheBufferInChunksOfTheBufferSize() {
+        // 4095 dropped bytes (one short of a reported chunk), then 10 bytes of an incomplete candidate frame
+        feed(concat(new byte[AmicaStreamDecoder.BUFFER_SIZE - 1], Arrays.copyOf(KEEP_ALIVE_1_17, 10)));
+        assertEquals(List.of(), sink.events);
+        assertEquals(10, decoder.buffered());
+        decoder.reset();
+        // the run with its reason up to the bound, then the rest of the candidate as a truncated frame
+        assertEquals(List.of("BAD_HEADER 4096", "TRUNCATED 9"), sink.events);
+        assertEquals(0, decoder.buffered());
+        decoder.reset();
+        assertEquals(2, sink.events.size(), "nothing left to report");
+    }
+
+    @Test
     void rejectsRangesOutsideTheInput() {
         assertThrows(IndexOutOfBoundsException.class, () -> decoder.accept(new byte[4], 2, 3));
         assertThrows(NullPointerException.class, () -> new AmicaStreamDecoder(null));
