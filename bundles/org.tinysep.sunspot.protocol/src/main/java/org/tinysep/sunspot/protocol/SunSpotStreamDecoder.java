@@ -75,16 +75,26 @@ public final class SunSpotStreamDecoder {
     /**
      * Discards all buffered bytes, e.g. after the link was reopened. Bytes already dropped but not yet reported, and
      * the bytes of an incomplete candidate frame, are reported as one run (reason {@link RejectReason#TRUNCATED} if
-     * only an incomplete candidate was buffered).
+     * only an incomplete candidate was buffered). No run is longer than {@value #BUFFER_SIZE}: if the two together
+     * exceed it, the first {@value #BUFFER_SIZE} bytes are reported with the run's reason and the rest of the
+     * candidate as a second, {@link RejectReason#TRUNCATED} run.
      */
     public void reset() {
-        if (skipped == 0 && count > 0) {
-            skipReason = RejectReason.TRUNCATED;
-        }
-        skipped += count;
+        int left = count;
         start = 0;
         count = 0;
+        if (skipped == 0 && left > 0) {
+            skipReason = RejectReason.TRUNCATED;
+        }
+        int first = Math.min(left, BUFFER_SIZE - skipped);
+        skipped += first;
+        left -= first;
         reportRun();
+        if (left > 0) {
+            skipped = left;
+            skipReason = RejectReason.TRUNCATED;
+            reportRun();
+        }
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */

@@ -178,4 +178,18 @@ class SunSpotStreamDecoderTest {
         assertThrows(IndexOutOfBoundsException.class, () -> decoder.accept(new byte[4], 2, 3));
         assertThrows(NullPointerException.class, () -> new SunSpotStreamDecoder(null));
     }
+
+    @Test
+    void resetNeverReportsARunLongerThanTheBuffer() {
+        // 4095 bytes dropped (one short of a reported chunk), then 15 bytes of a 16-byte candidate frame
+        byte[] zeros = new byte[SunSpotStreamDecoder.BUFFER_SIZE - 1];
+        zeros[0] = 1; // S=1 but L=0: every zero-led candidate after it is dropped too
+        feed(concat(zeros, java.util.Arrays.copyOf(LIGHT_9ABC, LIGHT_9ABC.length - 1)));
+        assertEquals(List.of(), sink.events);
+        decoder.reset();
+        assertEquals(2, sink.events.size(), sink.events.toString());
+        assertEquals("LENGTH_MISMATCH " + SunSpotStreamDecoder.BUFFER_SIZE, sink.events.get(0));
+        assertEquals("TRUNCATED " + (LIGHT_9ABC.length - 2), sink.events.get(1));
+        assertEquals(0, decoder.buffered());
+    }
 }
