@@ -68,6 +68,10 @@ public abstract class TinySepTestSupport {
     protected static final List<String> AMICA_HARDWARE = List.of("org.tinysep.amica.busradio.serial",
             "org.tinysep.amica.window", "org.tinysep.amica.simplelight", "org.tinysep.amica.dimmablelight",
             "org.tinysep.amica.heater", "org.tinysep.amica.speaker", "org.tinysep.amica.petmovement");
+    /** The intermediate and AAL services beyond Flat Occupancy; provisioned by default. */
+    protected static final List<String> SERVICES = List.of("org.tinysep.houseinformation",
+            "org.tinysep.timecontroller", "org.tinysep.mailmanager", "org.tinysep.inactivity",
+            "org.tinysep.followmelight");
     /**
      * The Sun SPOT bundles, in install order. Not provisioned by default: thesis scenario 3 installs them at
      * runtime; other tests add them with {@link #sunSpotBundles(int)}.
@@ -140,6 +144,12 @@ public abstract class TinySepTestSupport {
         o.add(mavenBundle("com.fazecast", "jSerialComm").versionAsInProject().startLevel(3));
         for (String amica : AMICA_HARDWARE) {
             o.add(reactorBundle(amica, 5));
+        }
+        o.add(mavenBundle("jakarta.activation", "jakarta.activation-api").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("jakarta.xml.bind", "jakarta.xml.bind-api").versionAsInProject().startLevel(3));
+        o.add(mavenBundle("com.sun.xml.bind", "jaxb-osgi").versionAsInProject().startLevel(3));
+        for (String service : SERVICES) {
+            o.add(reactorBundle(service, 5));
         }
         // The bus radio starts on a free port (initialConfigurations()); tests send to udpPortOf("BusRadioAmicaUdp").
         return o;

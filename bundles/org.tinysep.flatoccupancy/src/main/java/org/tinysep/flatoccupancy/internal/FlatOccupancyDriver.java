@@ -1,20 +1,17 @@
 package org.tinysep.flatoccupancy.internal;
 
 import java.time.Duration;
+import java.time.Instant;
 import java.util.List;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.TimeUnit;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.ProviderTracker;
 
 /**
@@ -28,13 +25,12 @@ public final class FlatOccupancyDriver extends AbstractDriver {
 
     static final String PID = "org.tinysep.flatoccupancy";
     static final String NAME = "FlatOccupancy";
-    private static final Logger LOG = LoggerFactory.getLogger(FlatOccupancyDriver.class);
 
     private Duration leaveTimeout;
     private Duration exitGrace;
     private ProviderTracker<MovementProvider> movements;
     private ProviderTracker<DoorProvider> doors;
-    private ScheduledExecutorService ticker;
+    private PlatformTicker ticker;
 
     public FlatOccupancyDriver() {
         super(NAME);
@@ -49,26 +45,21 @@ public final class FlatOccupancyDriver extends AbstractDriver {
                 (movement, uid) -> device().watch(movement), (movement, uid) -> providerGone(uid))).open();
         doors = new ProviderTracker<>(bundleContext, DoorProvider.class, null, ProviderTracker.Callback.of(
                 (door, uid) -> device().watch(door), (door, uid) -> providerGone(uid))).open();
-        ticker = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "flat-occupancy-tick"));
-        ticker.scheduleAtFixedRate(this::tick, 1, 1, TimeUnit.SECONDS);
+        ticker = new PlatformTicker(bundleContext, "flat-occupancy", this::tick);
     }
 
     @Deactivate
     void deactivate() {
-        ticker.shutdownNow();
+        ticker.close();
         movements.close();
         doors.close();
         stop();
     }
 
-    private void tick() {
-        try {
-            List<FlatOccupancyDevice> all = devices(FlatOccupancyDevice.class);
-            if (!all.isEmpty()) {
-                all.get(0).tick(context().now());
-            }
-        } catch (RuntimeException e) {
-            LOG.warn("Flat occupancy tick failed; the next one follows in a second: {}", e.toString());
+    private void tick(Instant now) {
+        List<FlatOccupancyDevice> all = devices(FlatOccupancyDevice.class);
+        if (!all.isEmpty()) {
+            all.get(0).tick(now);
         }
     }
 
