@@ -1,0 +1,56 @@
+package org.tinysep.mailmanager.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.MailStatus;
+
+/** Permanent refusals (5xx): given up and kept aside, never retried forever, never blocking the next message. */
+class GivenUpTest {
+
+    @TempDir
+    Path spool;
+
+    private final MailHarness h = new MailHarness();
+
+    @AfterEach
+    void tearDown() {
+        h.close();
+    }
+
+    @Test
+    void refusedMessageIsGivenUpKeptAsideAndTheNextOneIsSent() throws Exception {
+        try (RefusingSmtpServer server = new RefusingSmtpServer()) {
+            Map<String, Object> config = MailHarness.smtp(server.port(), spool);
+            config.put("recipients", "nobody@gone.test");
+            MailManagerDevice device = h.start(config);
+            MailManagerProvider mail = device.provider();
+
+            mail.send("refused", "x");
+            MailHarness.await("given up", () -> h.logs.events().stream()
+                    .anyMatch(e -> e.kind() == EventKind.PROBLEM && e.message().startsWith("mail given up: \"refused\"")));
+            MailHarness.await("IDLE", () -> mail.status() == MailStatus.IDLE);
+            try (var failed = Files.list(spool.resolve("failed"))) {
+                assertEquals(1, failed.count(), "kept in failed/");
+            }
+
+            config.put("recipients", "nobody@gone.test, carer@care.test");
+            device.reconfigure(MailSettings.parse(config, null), null);
+            mail.send("partly refused", "y");
+            MailHarness.await("sent to the valid recipient", () -> server.acceptedRecipients.contains("carer@care.test"));
+            MailHarness.await("reported", () -> h.eventTexts().stream()
+                    .anyMatch(e -> e.startsWith("mail sent: \"partly refused\"") && e.contains("nobody@gone.test")));
+            assertEquals(List.of("carer@care.test"), server.acceptedRecipients);
+            assertTrue(h.statuses.stream().noneMatch(MailStatus.RETRYING::equals), "no retry for a 5xx refusal");
+        }
+    }
+}

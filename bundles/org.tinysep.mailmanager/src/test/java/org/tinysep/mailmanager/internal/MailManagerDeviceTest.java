@@ -1,0 +1,189 @@
+package org.tinysep.mailmanager.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.icegreen.greenmail.configuration.GreenMailConfiguration;
+import com.icegreen.greenmail.util.GreenMail;
+import com.icegreen.greenmail.util.GreenMailUtil;
+import com.icegreen.greenmail.util.ServerSetup;
+import jakarta.mail.Message;
+import jakarta.mail.internet.MimeMessage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.MailStatus;
+
+/** The Mail Manager against a real SMTP server (GreenMail on 127.0.0.1). */
+class MailManagerDeviceTest {
+
+    @TempDir
+    Path spool;
+
+    private final MailHarness h = new MailHarness();
+    private GreenMail server;
+
+    private GreenMail startServer(int port, GreenMailConfiguration config) {
+        server = new GreenMail(new ServerSetup(port, "127.0.0.1", ServerSetup.PROTOCOL_SMTP));
+        if (config != null) {
+            server.withConfiguration(config);
+        }
+        server.start();
+        return server;
+    }
+
+    @AfterEach
+    void tearDown() {
+        h.close();
+        if (server != null) {
+            server.stop();
+        }
+    }
+
+    @Test
+    void deliversWithSenderRecipientsSubjectAndBody() throws Exception {
+        int port = MailHarness.freePort();
+        startServer(port, null);
+        MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
+
+        mail.send("Inactivity in the kitchen", "No movement for 2 h.\nPlease call Anna.");
+
+        awaitReceived(2); // one copy per recipient
+        MimeMessage m = server.getReceivedMessages()[0];
+        assertEquals("Inactivity in the kitchen", m.getSubject());
+        assertEquals("tinysep@home.test", m.getFrom()[0].toString());
+        assertEquals(List.of("carer@care.test", "family@kin.test"),
+                Arrays.stream(m.getRecipients(Message.RecipientType.TO)).map(Object::toString).toList());
+        assertEquals("No movement for 2 h.\r\nPlease call Anna.", GreenMailUtil.getBody(m).strip());
+        MailHarness.await("IDLE and spool empty", () -> mail.status() == MailStatus.IDLE && spoolFiles().isEmpty());
+        assertTrue(h.eventTexts().contains("mail queued: \"Inactivity in the kitchen\""));
+        assertTrue(h.eventTexts().stream().anyMatch(e -> e.startsWith("mail sent: \"Inactivity in the kitchen\"")));
+    }
+
+    @Test
+    void keepsMailWhileServerIsDownAndSendsItExactlyOnceWhenBack() throws Exception {
+        int port = MailHarness.freePort();
+        startServer(port, null);
+        MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
+        server.stop();
+
+        mail.send("first", "one");
+        mail.send("second", "two");
+        MailHarness.await("RETRYING", () -> mail.status() == MailStatus.RETRYING);
+        assertTrue(h.statuses.contains(MailStatus.RETRYING), "listeners heard it");
+        assertEquals(2, spoolFiles().size(), "both kept on disk while the server is down");
+
+        startServer(port, null);
+        MailHarness.await("IDLE again", () -> mail.status() == MailStatus.IDLE);
+        awaitReceived(4);
+        assertEquals(List.of("first", "second"), subjectsFor("carer@care.test"), "in order, exactly once");
+        assertEquals(List.of("first", "second"), subjectsFor("family@kin.test"));
+        assertTrue(spoolFiles().isEmpty());
+    }
+
+    @Test
+    void passwordNeverAppearsInLogsStatusOrParameters() throws Exception {
+        String secret = "Very-Secret-42";
+        int port = MailHarness.freePort();
+        startServer(port, GreenMailConfiguration.aConfig().withUser("alice@home.test", "alice", "other-pw"));
+        Map<String, Object> config = MailHarness.smtp(port, spool);
+        config.put("user", "alice");
+        config.put("password", secret);
+        MailManagerDevice device = h.start(config);
+
+        device.provider().send("alert", "body");
+        MailHarness.await("RETRYING after the refused login",
+                () -> device.provider().status() == MailStatus.RETRYING);
+        device.invoke("retryNow");
+        MailHarness.await("second failure", () -> h.statuses.stream().filter(MailStatus.RETRYING::equals).count() >= 2);
+
+        assertTrue(device.status().detail().contains("AuthenticationFailedException"), device.status().toString());
+        Parameter pw = device.parameters().stream().filter(p -> p.key().equals("password")).findFirst().orElseThrow();
+        assertEquals("***", pw.value());
+        assertFalse(h.stderr().contains(secret), "SLF4J output");
+        assertTrue(h.eventTexts().stream().noneMatch(e -> e.contains(secret)), "event log");
+        assertTrue(device.parameters().stream().noneMatch(p -> p.value().contains(secret)), "parameters");
+        assertFalse(device.status().toString().contains(secret), "status");
+        assertFalse(MailSettings.parse(config, null).toString().contains(secret), "settings");
+        assertEquals(1, spoolFiles().size(), "still queued");
+    }
+
+    @Test
+    void spoolSurvivesARestartOfTheComponent() throws Exception {
+        int port = MailHarness.freePort(); // nobody listens yet
+        MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
+        mail.send("before restart 1", "a");
+        mail.send("before restart 2", "b");
+        MailHarness.await("both spooled", () -> spoolFiles().size() == 2);
+        h.stopDevice();
+        Files.writeString(spool.resolve("00000000000000000001.mail"), "id=oops\nsubject=half");
+
+        startServer(port, null);
+        MailManagerDevice again = h.start(MailHarness.smtp(port, spool));
+
+        awaitReceived(4);
+        assertEquals(List.of("before restart 1", "before restart 2"), subjectsFor("carer@care.test"));
+        assertEquals(List.of("before restart 1", "before restart 2"), subjectsFor("family@kin.test"));
+        MailHarness.await("spool empty", () -> spoolFiles().isEmpty());
+        assertTrue(Files.exists(spool.resolve("damaged").resolve("00000000000000000001.mail")));
+        assertTrue(h.logs.events().stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                && e.message().contains("damaged spool file 00000000000000000001.mail")));
+        assertEquals(MailStatus.IDLE, again.provider().status());
+    }
+
+    @Test
+    void withoutHostMailIsWrittenToTheLog() {
+        MailManagerDevice device = h.start(Map.of("spoolDir", spool.toString()));
+        MailManagerProvider mail = device.provider();
+
+        mail.send("Help needed", "Nobody moved since 9:00.");
+
+        MailHarness.await("logged", () -> h.stderr().contains("Nobody moved since 9:00."));
+        assertTrue(h.stderr().contains("WARN"));
+        assertTrue(h.stderr().contains("Help needed"));
+        assertEquals(MailStatus.NOT_CONFIGURED, mail.status());
+        assertEquals(DeviceStatus.State.UNKNOWN, device.status().state());
+        assertTrue(spoolFiles().isEmpty());
+    }
+
+    private List<Path> spoolFiles() {
+        try (Stream<Path> s = Files.list(spool)) {
+            return s.filter(p -> p.toString().endsWith(".mail")).toList();
+        } catch (java.io.IOException e) {
+            throw new AssertionError(e);
+        }
+    }
+
+    private void awaitReceived(int n) {
+        MailHarness.await(n + " messages at the server", () -> server.getReceivedMessages().length >= n);
+    }
+
+    /** Subjects received in one mailbox, in arrival order (GreenMail groups received messages by mailbox). */
+    private List<String> subjectsFor(String recipient) throws Exception {
+        List<String> subjects = new java.util.ArrayList<>();
+        var inbox = server.getManagers().getImapHostManager().getInbox(server.getUserManager().getUserByEmail(recipient));
+        for (var stored : inbox.getMessages()) {
+            subjects.add(subject(stored.getMimeMessage()));
+        }
+        return subjects;
+    }
+
+    private static String subject(MimeMessage m) {
+        try {
+            return m.getSubject();
+        } catch (jakarta.mail.MessagingException e) {
+            throw new AssertionError(e);
+        }
+    }
+}
