@@ -1,0 +1,55 @@
+package org.tinysep.itests.time;
+
+import java.io.IOException;
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.nio.charset.StandardCharsets;
+import java.time.Instant;
+
+/**
+ * A minimal time synchroniser (docs/time-sync.md) on its own UDP socket of 127.0.0.1: sends one request and waits
+ * for the answer (5 s at most), i.e. lock-step.
+ */
+final class SyncPeer implements AutoCloseable {
+
+    private final DatagramSocket socket;
+    private final InetSocketAddress platform;
+    private final byte[] buffer = new byte[512];
+    private long seq;
+
+    SyncPeer(int platformPort) throws IOException {
+        socket = new DatagramSocket(0, InetAddress.getLoopbackAddress());
+        socket.setSoTimeout(5000);
+        platform = new InetSocketAddress(InetAddress.getLoopbackAddress(), platformPort);
+    }
+
+    /** Sends one datagram and returns the answer. */
+    String ask(String request) throws IOException {
+        byte[] b = request.getBytes(StandardCharsets.US_ASCII);
+        socket.send(new DatagramPacket(b, b.length, platform));
+        DatagramPacket in = new DatagramPacket(buffer, buffer.length);
+        socket.receive(in);
+        return new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+    }
+
+    /** {@code TICK <next seq> <at>}; returns the answer ({@code DONE ...} or {@code ERROR ...}). */
+    String tick(Instant at) throws IOException {
+        return ask("TICK " + (++seq) + " " + at);
+    }
+
+    /** Sends {@code TICK <next seq> <at>} and checks the answer is {@code DONE <seq> <at>}. */
+    void tickDone(Instant at) throws IOException {
+        String answer = tick(at);
+        String expected = "DONE " + seq + " " + at;
+        if (!expected.equals(answer)) {
+            throw new AssertionError("expected '" + expected + "' but the platform answered '" + answer + "'");
+        }
+    }
+
+    @Override
+    public void close() {
+        socket.close();
+    }
+}

@@ -1,0 +1,47 @@
+package org.tinysep.itests.time;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.osgi.framework.ServiceReference;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Driver;
+import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.TinySepTestSupport;
+
+/** Time Controller tests: its link on a free port of 127.0.0.1, starting in {@link #initialMode()}. */
+abstract class TimeTestSupport extends TinySepTestSupport {
+
+    static final String TIME_PID = "org.tinysep.timecontroller";
+    static final String SYNC_PORT_PROPERTY = "tinysep.sync.port";
+
+    /** @return REAL or EXTERNAL */
+    abstract String initialMode();
+
+    @Override
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
+        configs.put(TIME_PID, Map.of("mode", initialMode(), "syncPort", "0", "syncBindAddress", "127.0.0.1"));
+        return configs;
+    }
+
+    /** @return the configuration as first written, with another mode */
+    static Map<String, Object> config(String mode) {
+        return Map.of("mode", mode, "syncPort", "0", "syncBindAddress", "127.0.0.1");
+    }
+
+    /** @return the synchroniser port: the TimeController Driver service property */
+    int syncPort() {
+        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(" + SYNC_PORT_PROPERTY + "=*))";
+        awaitService(Driver.class, filter, TIMEOUT);
+        try {
+            ServiceReference<?> ref = context.getServiceReferences(Driver.class.getName(), filter)[0];
+            return ((Number) ref.getProperty(SYNC_PORT_PROPERTY)).intValue();
+        } catch (Exception e) {
+            throw new AssertionError("no TimeController driver with " + SYNC_PORT_PROPERTY, e);
+        }
+    }
+
+    TimeControllerProvider clock() {
+        return awaitService(TimeControllerProvider.class, null, TIMEOUT);
+    }
+}
