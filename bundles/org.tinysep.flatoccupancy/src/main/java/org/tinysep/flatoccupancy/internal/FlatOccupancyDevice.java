@@ -114,6 +114,12 @@ final class FlatOccupancyDevice extends AbstractDevice
         }
     }
 
+    /** The whole flat: no room of its own. */
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
+
     @Override
     protected List<Parameter> moreParameters() {
         synchronized (logic) {

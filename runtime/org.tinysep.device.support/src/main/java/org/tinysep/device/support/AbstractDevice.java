@@ -24,6 +24,7 @@ public abstract class AbstractDevice implements Device {
     private final String type;
     private final DeviceServices services = new DeviceServices();
     private final Consumptions consumptions = new Consumptions();
+    private final RoomPlacement room;
     private volatile String name;
     private volatile DeviceStatus status;
 
@@ -37,6 +38,20 @@ public abstract class AbstractDevice implements Device {
         services.property(DeviceProperties.DEVICE_TYPE, type);
         services.property(DeviceProperties.DRIVER_UID, context.driverUid());
         services.property(DeviceProperties.DRIVER_NAME, context.driverName());
+        this.room = new RoomPlacement(uid, context, services::property);
+    }
+
+    /**
+     * @return whether the device has a {@code room} parameter (default true); services of the whole flat, like
+     *         Flat Occupancy or House Information, override this to return false
+     */
+    protected boolean placeable() {
+        return true;
+    }
+
+    /** @return the UID of the room the device is placed in, or null */
+    protected final String roomUid() {
+        return room.roomUid();
     }
 
     /** Declares a provider service to register with the device; call from the constructor. */
@@ -61,6 +76,7 @@ public abstract class AbstractDevice implements Device {
 
     /** Unregisters the services and closes every connection, both ways. Called by its driver. */
     final void dispose() {
+        room.close();
         services.unregister();
         for (ConnectionInfo c : consumptions.infos()) {
             context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName() + " of "
@@ -145,11 +161,14 @@ public abstract class AbstractDevice implements Device {
     public final List<Parameter> parameters() {
         List<Parameter> all = new ArrayList<>();
         all.add(Parameter.writable("name", name, "name shown to the user"));
+        if (placeable()) {
+            all.add(room.parameter());
+        }
         all.addAll(moreParameters());
         return all;
     }
 
-    /** @return parameters beyond {@code name}, in display order */
+    /** @return parameters beyond {@code name} and {@code room}, in display order */
     protected List<Parameter> moreParameters() {
         return List.of();
     }
@@ -164,10 +183,14 @@ public abstract class AbstractDevice implements Device {
             context.reporter().event(EventKind.DEVICE_EVENT, uid, "renamed to \"" + name + "\"");
             return;
         }
+        if (RoomPlacement.KEY.equals(key) && placeable()) {
+            room.set(value);
+            return;
+        }
         applyParameter(key, value);
     }
 
-    /** Applies a parameter other than {@code name}; the default knows none. */
+    /** Applies a parameter other than {@code name} and {@code room}; the default knows none. */
     protected void applyParameter(String key, String value) {
         throw unknownParameter(key);
     }

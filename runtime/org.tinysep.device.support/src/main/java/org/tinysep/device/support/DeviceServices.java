@@ -21,6 +21,8 @@ final class DeviceServices {
     private final List<Published> published = new ArrayList<>();
     private final Hashtable<String, Object> properties = new Hashtable<>();
     private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
+    /** Counts property changes, so a registration that raced with one is brought up to date. */
+    private long version;
 
     void publish(Object service, Class<?>... interfaces) {
         String[] names = new String[interfaces.length];
@@ -31,6 +33,7 @@ final class DeviceServices {
     }
 
     synchronized void property(String key, Object value) {
+        version++;
         if (value == null) {
             properties.remove(key);
         } else {
@@ -50,18 +53,32 @@ final class DeviceServices {
     }
 
     void register(BundleContext context, Device device) {
-        Hashtable<String, Object> props;
-        synchronized (this) {
-            props = new Hashtable<>(properties);
-        }
-        add(context.registerService(Device.class, device, props));
+        long v = version();
+        add(context.registerService(Device.class, device, snapshot()), v);
         for (Published p : published) {
-            add(context.registerService(p.interfaces, p.service, props));
+            v = version();
+            add(context.registerService(p.interfaces, p.service, snapshot()), v);
         }
     }
 
-    private synchronized void add(ServiceRegistration<?> r) {
+    private synchronized long version() {
+        return version;
+    }
+
+    private synchronized Hashtable<String, Object> snapshot() {
+        return new Hashtable<>(properties);
+    }
+
+    /** Keeps a new registration; a property changed while it was being registered is applied to it now. */
+    private synchronized void add(ServiceRegistration<?> r, long registeredAt) {
         registrations.add(r);
+        if (registeredAt != version) {
+            try {
+                r.setProperties(properties);
+            } catch (IllegalStateException ignored) {
+                // already unregistered
+            }
+        }
     }
 
     void unregister() {

@@ -15,11 +15,12 @@ public final class DriverContext implements AutoCloseable {
     private final String driverName;
     private final Reporter reporter;
     private final PlatformClock clock;
+    private final RoomDirectory rooms;
 
     /** The context of a driver running in a framework: logs and clock follow the services. */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
         this(bundleContext, driverUid, driverName, Reporter.tracking(bundleContext),
-                PlatformClock.tracking(bundleContext));
+                PlatformClock.tracking(bundleContext), RoomDirectory.tracking(bundleContext));
     }
 
     /**
@@ -28,6 +29,13 @@ public final class DriverContext implements AutoCloseable {
      */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName, Reporter reporter,
             PlatformClock clock) {
+        this(bundleContext, driverUid, driverName, reporter, clock, RoomDirectory.none());
+    }
+
+    /** A context with explicit parts including the rooms (e.g. {@link RoomDirectory#of} a fake house). */
+    public DriverContext(BundleContext bundleContext, String driverUid, String driverName, Reporter reporter,
+            PlatformClock clock, RoomDirectory rooms) {
+        this.rooms = rooms;
         this.bundleContext = bundleContext;
         this.driverUid = driverUid;
         this.driverName = driverName;
@@ -54,6 +62,11 @@ public final class DriverContext implements AutoCloseable {
         return reporter;
     }
 
+    /** @return the rooms devices can be placed in */
+    public RoomDirectory rooms() {
+        return rooms;
+    }
+
     public Instant now() {
         return clock.now();
     }
@@ -65,6 +78,7 @@ public final class DriverContext implements AutoCloseable {
 
     @Override
     public void close() {
+        rooms.close();
         clock.close();
         reporter.close();
     }

@@ -1,0 +1,114 @@
+package org.tinysep.followmelight.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.tinysep.api.service.Occupancy;
+
+/** The Follow Me Light algorithm in virtual time; sensors report every 2 s while someone moves (AmICA). */
+class FollowMeLogicTest {
+
+    private static final Instant T0 = Instant.parse("2026-11-22T19:00:00Z");
+    private final FollowMeLogic logic = new FollowMeLogic(Duration.ofSeconds(60));
+    private final List<String> commands = new ArrayList<>();
+    private int clock;
+
+    private static Instant at(int s) {
+        return T0.plusSeconds(s);
+    }
+
+    private void record(List<Command> out, int s) {
+        out.forEach(c -> commands.add(c.roomUid() + (c.on() ? " on@" : " off@") + s));
+    }
+
+    /** Runs second by second to {@code until}; {@code who} says where motion is reported at a second. */
+    private void run(int until, Walk... walks) {
+        while (clock < until) {
+            clock++;
+            record(logic.tick(at(clock)), clock);
+            for (Walk w : walks) {
+                String room = w.roomAt(clock);
+                if (room != null && clock % 2 == 0) {
+                    record(w.pet ? logic.petMotion(room, at(clock)) : logic.personMotion(room, at(clock)), clock);
+                }
+            }
+        }
+    }
+
+    /** Where one person or pet is: {@code room, fromSecond, room, fromSecond, ...}; null means gone. */
+    private record Walk(boolean pet, Object... steps) {
+        String roomAt(int s) {
+            String room = null;
+            for (int i = 0; i < steps.length; i += 2) {
+                if (s >= (Integer) steps[i + 1]) {
+                    room = (String) steps[i];
+                }
+            }
+            return room;
+        }
+    }
+
+    private static Walk person(Object... steps) {
+        return new Walk(false, steps);
+    }
+
+    private static Walk pet(Object... steps) {
+        return new Walk(true, steps);
+    }
+
+    @Test
+    void aWalkFromBedroomThroughHallToKitchenSwitchesTheExpectedRoomsInOrder() {
+        record(logic.occupancy(Occupancy.OCCUPIED, T0), 0);
+        run(300, person("bedroom", 2, "hall", 32, "kitchen", 42));
+        assertEquals(List.of("bedroom on@2", "hall on@32", "kitchen on@42", "bedroom off@90", "hall off@100"),
+                commands);
+        assertEquals(Set.of("kitchen"), logic.litRooms());
+    }
+
+    @Test
+    void twoPersonsInTwoRoomsKeepBothLit() {
+        record(logic.occupancy(Occupancy.OCCUPIED, T0), 0);
+        run(1200, person("bedroom", 2), person("hall", 2, "kitchen", 10));
+        assertEquals(List.of("bedroom on@2", "hall on@2", "kitchen on@10", "hall off@68"), commands);
+        assertEquals(Set.of("bedroom", "kitchen"), logic.litRooms());
+    }
+
+    @Test
+    void aPetAloneAtHomeDoesNothing() {
+        record(logic.occupancy(Occupancy.UNOCCUPIED, T0), 0);
+        run(600, pet("living", 2, "kitchen", 100));
+        record(logic.occupancy(Occupancy.UNKNOWN, at(600)), 600);
+        run(900, pet("living", 2));
+        assertEquals(List.of(), commands);
+    }
+
+    @Test
+    void aPetWithAPersonHomeMovesTheLights() {
+        record(logic.occupancy(Occupancy.OCCUPIED, T0), 0);
+        run(300, pet("living", 2, "kitchen", 100));
+        assertEquals(List.of("living on@2", "kitchen on@100", "living off@158"), commands);
+    }
+
+    @Test
+    void anEmptyFlatGoesDarkAndStaysDark() {
+        record(logic.occupancy(Occupancy.OCCUPIED, T0), 0);
+        run(20, person("hall", 2), person("kitchen", 2));
+        record(logic.occupancy(Occupancy.UNOCCUPIED, at(20)), 20);
+        run(200, person("hall", 100));
+        assertEquals(List.of("hall on@2", "kitchen on@2", "hall off@20", "kitchen off@20"), commands);
+        assertEquals(Set.of(), logic.litRooms());
+    }
+
+    @Test
+    void motionHeardJustBeforeTheFlatBecomesOccupiedCounts() {
+        record(logic.personMotion("hall", at(10)), 10);
+        record(logic.personMotion("kitchen", at(1)), 1);
+        record(logic.occupancy(Occupancy.OCCUPIED, at(11)), 11);
+        assertEquals(List.of("hall on@11"), commands, "the kitchen motion is older than the arrival window");
+    }
+}

@@ -1,0 +1,131 @@
+package org.tinysep.houseinformation.internal;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
+
+/**
+ * The house file on disk. Writes are atomic (temp file in the same folder, fsync, atomic rename) and keep the
+ * previous file as {@code <name>.bak}. A malformed file is moved aside to {@code <name>.broken-<timestamp>} and the
+ * last good house is taken from the {@code .bak} (and written back); the last good house is never wiped.
+ */
+final class HouseFile {
+
+    /** What loading found: the plan to use and, when the file was malformed, what went wrong. */
+    record Load(HousePlan plan, String problem) {
+    }
+
+    private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")
+            .withZone(ZoneOffset.UTC);
+
+    private final Path file;
+    private final Path backup;
+    private final HouseCodec codec;
+    /** Whether the file on disk is known good (loaded or written by us); only a good file becomes the .bak. */
+    private volatile boolean diskIsGood;
+    /** Test seam: runs after the temp file is written and synced, before it replaces the file. */
+    Runnable beforeRename = () -> { };
+
+    HouseFile(Path file, HouseCodec codec) {
+        this.file = file.toAbsolutePath();
+        this.backup = this.file.resolveSibling(this.file.getFileName() + ".bak");
+        this.codec = codec;
+    }
+
+    Path path() {
+        return file;
+    }
+
+    /** Loads the house; a missing file is an empty house. */
+    Load load(Instant now) throws IOException {
+        diskIsGood = false;
+        if (!Files.exists(file)) {
+            diskIsGood = true;
+            return new Load(HousePlan.EMPTY, null);
+        }
+        try {
+            HousePlan plan = codec.read(Files.readAllBytes(file), file.toString());
+            diskIsGood = true;
+            return new Load(plan, null);
+        } catch (MalformedHouseException broken) {
+            Path aside = asideName(now);
+            Files.move(file, aside, StandardCopyOption.ATOMIC_MOVE);
+            String problem = broken.getMessage() + "; moved aside to " + aside.getFileName();
+            if (!Files.exists(backup)) {
+                return new Load(HousePlan.EMPTY, problem + "; no " + backup.getFileName()
+                        + ": starting with an empty house");
+            }
+            try {
+                HousePlan good = codec.read(Files.readAllBytes(backup), backup.toString());
+                replace(file, codec.write(good));
+                diskIsGood = true;
+                return new Load(good, problem + "; using the last good house from " + backup.getFileName() + " ("
+                        + good.rooms().size() + " rooms)");
+            } catch (MalformedHouseException alsoBroken) {
+                return new Load(HousePlan.EMPTY, problem + "; the backup is unusable too (" + alsoBroken.getMessage()
+                        + "): starting with an empty house");
+            }
+        }
+    }
+
+    /**
+     * Saves the plan atomically; the file replaced becomes the {@code .bak} when it was good, else (it could not be
+     * read or moved aside on load) it is moved aside, so a bad file never overwrites the last good house.
+     */
+    void save(HousePlan plan) throws IOException {
+        byte[] bytes = codec.write(plan);
+        Files.createDirectories(file.getParent());
+        if (Files.exists(file)) {
+            if (diskIsGood) {
+                replace(backup, Files.readAllBytes(file));
+            } else {
+                Files.move(file, asideName(Instant.now()), StandardCopyOption.ATOMIC_MOVE);
+            }
+        }
+        replace(file, bytes);
+        diskIsGood = true;
+    }
+
+    /** Writes {@code bytes} to a temp file next to {@code target}, syncs it, renames it over {@code target}. */
+    private void replace(Path target, byte[] bytes) throws IOException {
+        Path tmp = Files.createTempFile(target.getParent(), target.getFileName() + ".", ".tmp");
+        try {
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
+                ByteBuffer buf = ByteBuffer.wrap(bytes);
+                while (buf.hasRemaining()) {
+                    ch.write(buf);
+                }
+                ch.force(true);
+            }
+            beforeRename.run();
+            Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+        syncDirectory(target.getParent());
+    }
+
+    private static void syncDirectory(Path dir) {
+        try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
+            ch.force(true);
+        } catch (IOException | UnsupportedOperationException ignored) {
+            // not every platform can sync a directory; the rename itself is atomic
+        }
+    }
+
+    private Path asideName(Instant now) {
+        String base = file.getFileName() + ".broken-" + STAMP.format(now);
+        Path p = file.resolveSibling(base);
+        for (int i = 2; Files.exists(p); i++) {
+            p = file.resolveSibling(base + "-" + i);
+        }
+        return p;
+    }
+}

@@ -1,0 +1,27 @@
+package org.tinysep.inactivity.internal;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.util.Objects;
+
+/**
+ * One observed activity, already placed in its room.
+ *
+ * @param roomUid     the room's UID, empty when the reporting device has no room
+ * @param roomName    the room's name for people (e.g. "Bathroom", or "unknown room (device Hall sensor)")
+ * @param description what happened, e.g. "movement by Bathroom sensor"
+ * @param at          when it happened
+ * @param limit       how long inactivity may last after it before help is called
+ */
+record Activity(String roomUid, String roomName, String description, Instant at, Duration limit) {
+
+    Activity {
+        Objects.requireNonNull(roomUid, "roomUid");
+        Objects.requireNonNull(roomName, "roomName");
+        Objects.requireNonNull(description, "description");
+        Objects.requireNonNull(at, "at");
+        if (limit == null || limit.isNegative() || limit.isZero()) {
+            throw new IllegalArgumentException("limit must be positive, was " + limit);
+        }
+    }
+}

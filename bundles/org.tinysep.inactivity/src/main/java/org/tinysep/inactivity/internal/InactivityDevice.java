@@ -1,0 +1,197 @@
+package org.tinysep.inactivity.internal;
+
+import java.time.Instant;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.sensor.DoorProvider;
+import org.tinysep.api.sensor.MovementProvider;
+import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.api.service.FlatOccupancyProvider;
+import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.api.service.InactivityAlert;
+import org.tinysep.api.service.InactivityRecognitionListener;
+import org.tinysep.api.service.InactivityRecognitionProvider;
+import org.tinysep.api.service.InactivityState;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.Occupancy;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.Uids;
+
+/**
+ * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;
+ * Flat Occupancy, Mail Manager and House Information are optional.
+ */
+final class InactivityDevice extends AbstractDevice
+        implements InactivityRecognitionProvider {
+
+    private final Listeners<InactivityRecognitionListener> listeners;
+    private final InactivityLogic logic;
+    private final ActivityFactory activities;
+    private final HelpCall help;
+    private volatile String occupancySource;
+
+    InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
+        super(context, Uids.of(context.driverName(), "inactivity"), context.driverName(), "Inactivity recognition");
+        this.listeners = new Listeners<>(uid());
+        this.logic = new InactivityLogic(limits.defaultLimit(), context.now());
+        this.activities = new ActivityFactory(directory, limits, this::activity);
+        this.help = new HelpCall(words);
+        limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        status(DeviceStatus.State.ONLINE, "");
+        publish(this, InactivityRecognitionProvider.class);
+    }
+
+    void watch(MovementProvider p) {
+        connect(p, MovementProvider.class, activities, true);
+    }
+
+    void watch(DoorProvider p) {
+        connect(p, DoorProvider.class, activities, true);
+    }
+
+    void watch(WindowProvider p) {
+        connect(p, WindowProvider.class, activities, true);
+    }
+
+    void use(FlatOccupancyProvider p) {
+        occupancySource = p.deviceUid();
+        connect(p, FlatOccupancyProvider.class, (src, occupancy, at) -> occupancy(occupancy, at), false);
+        occupancy(p.occupancy(), p.since());
+    }
+
+    void use(MailManagerProvider p) {
+        help.add(p);
+        connect(p, MailManagerProvider.class, (src, status, at) -> { }, false);
+        mailPendingAlert();
+    }
+
+    void use(HouseInformationProvider p) {
+        connect(p, HouseInformationProvider.class, (src, rooms, at) -> activities.rooms(rooms), false);
+        activities.rooms(p.rooms());
+    }
+
+    /** A provider went away: forget what this device held of it (the driver closes the connection). */
+    void forget(String providerUid) {
+        help.remove(providerUid);
+        if (providerUid.equals(occupancySource)) {
+            occupancySource = null;
+            occupancy(Occupancy.UNKNOWN, now());
+        }
+    }
+
+    private void activity(Activity a) {
+        Optional<InactivityState> change;
+        synchronized (logic) {
+            change = logic.activity(a);
+        }
+        announce(change, a.at(), a.description() + " in " + a.roomName());
+    }
+
+    private void occupancy(Occupancy occupancy, Instant at) {
+        Optional<InactivityState> change;
+        synchronized (logic) {
+            change = logic.occupancy(occupancy, at);
+        }
+        announce(change, at, "flat " + lower(occupancy));
+    }
+
+    /** Advances the algorithm's clock; called every platform second by the driver. */
+    void tick(Instant now) {
+        Optional<InactivityState> change;
+        synchronized (logic) {
+            change = logic.tick(now);
+        }
+        announce(change, now, "limit reached");
+    }
+
+    private void announce(Optional<InactivityState> change, Instant at, String reason) {
+        change.ifPresent(s -> {
+            String detail = s == InactivityState.ALERT ? alert().map(help::subject).orElse("") : "";
+            event("inactivity " + lower(s) + " (" + reason + ")" + (detail.isEmpty() ? "" : ": " + detail));
+            listeners.fire(l -> l.inactivityStateChanged(this, s, at));
+            if (s == InactivityState.ALERT) {
+                mailPendingAlert();
+            } else {
+                status(DeviceStatus.State.ONLINE, "");
+            }
+        });
+    }
+
+    /** Sends the current alert once, as soon as a Mail Manager is there. */
+    private void mailPendingAlert() {
+        Optional<InactivityAlert> a = alert();
+        if (a.isEmpty()) {
+            return;
+        }
+        switch (help.call(a.get())) {
+            case SENT -> {
+                event("alert mailed: " + help.subject(a.get()));
+                status(DeviceStatus.State.ONLINE, "");
+            }
+            case NO_MAIL_MANAGER -> status(DeviceStatus.State.ERROR, "alert raised but no Mail Manager to send it");
+            case ALREADY_SENT -> { }
+        }
+    }
+
+    private static String lower(Enum<?> e) {
+        return e.name().toLowerCase(Locale.ROOT).replace('_', ' ');
+    }
+
+    @Override
+    public String deviceUid() {
+        return uid();
+    }
+
+    @Override
+    public Connection connect(InactivityRecognitionListener listener) {
+        return listeners.add(listener);
+    }
+
+    @Override
+    public InactivityState state() {
+        synchronized (logic) {
+            return logic.state();
+        }
+    }
+
+    @Override
+    public Optional<InactivityAlert> alert() {
+        synchronized (logic) {
+            return logic.alert();
+        }
+    }
+
+    /** A service of the whole flat: it has no room. */
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
+
+    @Override
+    protected List<Parameter> moreParameters() {
+        synchronized (logic) {
+            return List.of(
+                    Parameter.readOnly("state", logic.state(), "current state"),
+                    Parameter.readOnly("since", logic.since(), "when it was entered"),
+                    Parameter.readOnly("deadline", logic.deadline().map(Instant::toString).orElse(""),
+                            "when help is called if nothing happens"),
+                    Parameter.readOnly("lastActivity", logic.lastActivity()
+                            .map(a -> a.description() + " in " + a.roomName() + " at " + a.at()).orElse(""),
+                            "the last activity seen"),
+                    Parameter.readOnly("alert", logic.alert().map(help::subject).orElse(""), "the raised alert"),
+                    Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"));
+        }
+    }
+
+    @Override
+    protected void onDispose() {
+        listeners.closeAll();
+    }
+}
