@@ -47,6 +47,12 @@ public class RuntimeHardwareTest extends TinySepTestSupport {
         }
     }
 
+    /** Exactly the drivers the thesis loads for this scenario (Fig 3.3): no other device may join the graph. */
+    @Override
+    protected List<String> applications() {
+        return FIRST_SLICE;
+    }
+
     private void expectTopology(Set<String> expected) {
         Set<String> want = new TreeSet<>(expected);
         try {

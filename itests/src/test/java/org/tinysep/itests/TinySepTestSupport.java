@@ -64,6 +64,10 @@ public abstract class TinySepTestSupport {
     public static final String SUN_SPOT_PID = "org.tinysep.sunspot.busradio";
     /** Driver service property carrying the UDP bus radio's bound port. */
     public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
+    /** The drivers of thesis Fig 3.3 (and the codec they share): the first vertical slice. */
+    protected static final List<String> FIRST_SLICE = List.of("org.tinysep.amica.protocol",
+            "org.tinysep.amica.busradio.udp", "org.tinysep.amica.movement", "org.tinysep.amica.door",
+            "org.tinysep.flatoccupancy");
     /** The AmICA hardware bundles beyond the first slice; provisioned by default. */
     protected static final List<String> AMICA_HARDWARE = List.of("org.tinysep.amica.busradio.serial",
             "org.tinysep.amica.window", "org.tinysep.amica.simplelight", "org.tinysep.amica.dimmablelight",
@@ -135,21 +139,14 @@ public abstract class TinySepTestSupport {
         // level 4: platform
         o.add(reactorBundle("org.tinysep.api", 4));
         o.add(reactorBundle("org.tinysep.runtime", 4));
-        // level 5: application bundles (system properties bundle.<artifactId>, see pom.xml)
-        o.add(reactorBundle("org.tinysep.amica.protocol", 5));
-        o.add(reactorBundle("org.tinysep.amica.busradio.udp", 5));
-        o.add(reactorBundle("org.tinysep.amica.movement", 5));
-        o.add(reactorBundle("org.tinysep.amica.door", 5));
-        o.add(reactorBundle("org.tinysep.flatoccupancy", 5));
+        // libraries some applications need
         o.add(mavenBundle("com.fazecast", "jSerialComm").versionAsInProject().startLevel(3));
-        for (String amica : AMICA_HARDWARE) {
-            o.add(reactorBundle(amica, 5));
-        }
         o.add(mavenBundle("jakarta.activation", "jakarta.activation-api").versionAsInProject().startLevel(3));
         o.add(mavenBundle("jakarta.xml.bind", "jakarta.xml.bind-api").versionAsInProject().startLevel(3));
         o.add(mavenBundle("com.sun.xml.bind", "jaxb-osgi").versionAsInProject().startLevel(3));
-        for (String service : SERVICES) {
-            o.add(reactorBundle(service, 5));
+        // level 5: application bundles (system properties bundle.<artifactId>, see pom.xml)
+        for (String application : applications()) {
+            o.add(reactorBundle(application, 5));
         }
         // The bus radio starts on a free port (initialConfigurations()); tests send to udpPortOf("BusRadioAmicaUdp").
         return o;
@@ -209,6 +206,17 @@ public abstract class TinySepTestSupport {
                     + artifactId + " as a test dependency and in surefire's systemPropertyVariables (itests/pom.xml)");
         }
         return bundle(new File(path).toURI().toString()).startLevel(startLevel);
+    }
+
+    /**
+     * The application bundles installed at level 5. By default the first slice, every AmICA bundle and every
+     * service; a test of a thesis scenario narrows it to the drivers the thesis loads.
+     */
+    protected List<String> applications() {
+        List<String> all = new ArrayList<>(FIRST_SLICE);
+        all.addAll(AMICA_HARDWARE);
+        all.addAll(SERVICES);
+        return all;
     }
 
     /** @return provisioning options for every Sun SPOT bundle at {@code startLevel} */

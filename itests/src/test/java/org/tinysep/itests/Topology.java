@@ -18,12 +18,12 @@ import org.tinysep.api.device.DeviceProperties;
  * {@code Type@node <- Interface of Type@node} for every connection (marked {@code (optional)} when not vital).
  * Comparing whole sets makes a test fail on any missing or extra device or connection.
  */
-final class Topology {
+public final class Topology {
 
     private Topology() {
     }
 
-    static Set<String> of(BundleContext context) {
+    public static Set<String> of(BundleContext context) {
         Map<String, String> labels = new HashMap<>();
         List<Device> devices = new ArrayList<>();
         for (ServiceReference<Device> ref : references(context)) {
@@ -50,7 +50,7 @@ final class Topology {
     }
 
     /** @return the UID of the device of that type at that node address (node may be null) */
-    static String uid(BundleContext context, String type, String node) {
+    public static String uid(BundleContext context, String type, String node) {
         for (ServiceReference<Device> ref : references(context)) {
             Object n = ref.getProperty(DeviceProperties.NODE_ADDRESS);
             if (type.equals(ref.getProperty(DeviceProperties.DEVICE_TYPE)) && (node == null || node.equals(n))) {

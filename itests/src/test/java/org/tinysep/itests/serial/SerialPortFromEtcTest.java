@@ -18,6 +18,7 @@ import org.tinysep.api.device.Driver;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
+import org.tinysep.itests.Topology;
 
 /**
  * A serial port configured the way the README tells users to: a FileInstall factory configuration file

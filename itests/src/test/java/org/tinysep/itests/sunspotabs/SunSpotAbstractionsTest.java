@@ -28,6 +28,7 @@ import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.PetMovementDetection;
 import org.tinysep.sunspot.protocol.Position;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
+import org.tinysep.itests.Topology;
 
 /**
  * The four Sun SPOT hardware abstractions (thesis 4.4.2.8–4.4.2.11) in a real Felix, fed with real Sun SPOT frames

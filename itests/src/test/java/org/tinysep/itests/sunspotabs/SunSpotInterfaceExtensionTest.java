@@ -21,6 +21,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.Position;
+import org.tinysep.itests.Topology;
 
 /**
  * Thesis 3.5 (Fig 3.6 and the interface extension): with an AmICA and a Sun SPOT movement node running, Flat

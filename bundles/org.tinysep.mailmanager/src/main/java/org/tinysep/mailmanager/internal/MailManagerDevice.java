@@ -175,4 +175,10 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
             return "MailManagerProvider of " + uid();
         }
     }
+
+    /** A whole-flat service: it has no room. */
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
 }

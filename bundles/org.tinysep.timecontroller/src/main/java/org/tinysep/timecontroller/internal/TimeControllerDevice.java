@@ -87,4 +87,10 @@ final class TimeControllerDevice extends AbstractDevice {
     public String toString() {
         return super.toString() + " " + clock.mode() + " " + clock.now();
     }
+
+    /** A whole-flat service: it has no room. */
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
 }
