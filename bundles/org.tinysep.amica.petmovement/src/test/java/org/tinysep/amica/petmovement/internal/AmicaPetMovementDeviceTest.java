@@ -56,7 +56,7 @@ class AmicaPetMovementDeviceTest {
     void hasNoWritableParameterButName() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> pet.setParameter("lastMovement", "now"));
-        assertEquals("unknown or read-only parameter 'lastMovement' of AmicaPetMovement; writable: name",
+        assertEquals("unknown or read-only parameter 'lastMovement' of AmicaPetMovement; writable: name, room",
                 e.getMessage());
     }
 }

@@ -106,7 +106,7 @@ class AmicaWindowDeviceTest {
     void stateIsReadOnly() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> window.setParameter("state", "OPEN"));
-        assertEquals("unknown or read-only parameter 'state' of AmicaWindow; writable: name, position", e.getMessage());
+        assertEquals("unknown or read-only parameter 'state' of AmicaWindow; writable: name, room, position", e.getMessage());
     }
 
     private String parameter(String key) {

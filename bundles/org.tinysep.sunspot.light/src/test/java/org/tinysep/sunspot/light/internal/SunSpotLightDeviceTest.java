@@ -83,8 +83,8 @@ class SunSpotLightDeviceTest {
     void aSensorHasNothingToSetOrInvoke() {
         assertThrows(IllegalArgumentException.class, () -> sensor.setParameter("brightness", "50"));
         assertEquals(List.of(), sensor.functions());
-        assertTrue(sensor.parameters().stream().filter(Parameter::writable).map(Parameter::key)
-                .allMatch("name"::equals));
+        assertEquals(List.of("name", "room"), sensor.parameters().stream().filter(Parameter::writable)
+                .map(Parameter::key).toList(), "only the common name and room");
     }
 
     private String parameter(String key) {
