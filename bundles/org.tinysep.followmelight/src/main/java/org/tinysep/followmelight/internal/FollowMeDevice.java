@@ -25,6 +25,7 @@ import org.tinysep.api.service.Room;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.Placements;
 
 /**
  * The one Follow Me Light device (thesis 4.4.4.2). Lights (simple and dimmable) are its vital connections;

@@ -21,6 +21,7 @@ import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.TrackedPlacements;
 
 /**
  * Follow Me Light driver: creates its single device when the first light (simple or dimmable) appears and

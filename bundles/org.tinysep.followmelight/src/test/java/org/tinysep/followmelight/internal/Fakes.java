@@ -21,6 +21,7 @@ import org.tinysep.api.sensor.PetMovementProvider;
 import org.tinysep.api.service.FlatOccupancyListener;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
+import org.tinysep.device.support.Placements;
 
 /** Hand-written fakes of the API providers; every light command goes into one shared journal. */
 final class Fakes {

@@ -18,6 +18,7 @@ import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.service.Room;
+import org.tinysep.device.support.Placements;
 
 /**
  * Turns "device X reported something at T" into an {@link Activity}: the room from the device's

@@ -23,6 +23,7 @@ import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.Placements;
 
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;

@@ -22,6 +22,7 @@ import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.TrackedPlacements;
 
 /**
  * Inactivity Recognition driver: creates its single device when the first activity source (Movement, Door or

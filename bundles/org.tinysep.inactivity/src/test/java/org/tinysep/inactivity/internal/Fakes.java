@@ -21,6 +21,7 @@ import org.tinysep.api.service.MailManagerListener;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.Occupancy;
+import org.tinysep.device.support.Placements;
 
 /** Hand-written fakes of the API providers the device consumes. */
 final class Fakes {

@@ -1,4 +1,4 @@
-package org.tinysep.inactivity.internal;
+package org.tinysep.device.support;
 
 import java.util.Optional;
 
@@ -6,7 +6,7 @@ import java.util.Optional;
  * Where devices are and what they are called: the {@code tinysep.room} service property and the name of each
  * device, read at the moment an event arrives (the user may move a device at run time).
  */
-interface Placements {
+public interface Placements {
 
     /** @return the UID of the room the device is placed in, empty if not placed (or unknown) */
     Optional<String> roomOf(String deviceUid);

@@ -1,4 +1,4 @@
-package org.tinysep.followmelight.internal;
+package org.tinysep.device.support;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -16,12 +16,12 @@ import org.tinysep.api.device.DeviceProperties;
  * A {@link Placements} over the service registry: every service carrying {@code tinysep.device.uid}. Service
  * references show property modifications live, so the room read here is the one the device has right now.
  */
-final class TrackedPlacements implements Placements, AutoCloseable {
+public final class TrackedPlacements implements Placements, AutoCloseable {
 
     private final ServiceTracker<Object, ServiceReference<Object>> tracker;
     private final BundleContext context;
 
-    TrackedPlacements(BundleContext context) {
+    public TrackedPlacements(BundleContext context) {
         this.context = context;
         try {
             tracker = new ServiceTracker<>(context,
