@@ -1,0 +1,88 @@
+package org.tinysep.simulator.cli;
+
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.ZoneOffset;
+import org.tinysep.simulator.agent.Scenario;
+import org.tinysep.simulator.flat.Flat;
+import org.tinysep.simulator.flat.FlatLoader;
+import org.tinysep.simulator.node.Target;
+import org.tinysep.simulator.time.LockStepDriver;
+import org.tinysep.simulator.time.RealTimeDriver;
+import org.tinysep.simulator.time.SyncClient;
+import org.tinysep.simulator.time.VirtualClock;
+import org.tinysep.simulator.time.Welcome;
+
+/** The simulator's command line: loads a flat and a scenario and plays them against a platform. */
+public final class Main {
+
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        try {
+            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h"))) {
+                System.out.print(Options.USAGE);
+                return;
+            }
+            run(Options.parse(args));
+        } catch (IllegalArgumentException e) {
+            System.err.println("error: " + e.getMessage());
+            System.err.print(Options.USAGE);
+            System.exit(2);
+        } catch (Exception e) {
+            System.err.println("error: " + e.getMessage());
+            System.exit(1);
+        }
+    }
+
+    static void run(Options o) throws Exception {
+        Flat flat = FlatLoader.load(o.flat());
+        Scenario scenario = Simulation.scenario(o.scenario(), flat);
+        InetAddress host = InetAddress.getByName(o.target());
+        Target target = new Target(host, o.amicaPort(), o.sunSpotPort());
+        LocalDate day = o.date() != null ? o.date() : LocalDate.now(ZoneOffset.UTC);
+        SyncClient sync = null;
+        if (o.lockstep()) {
+            sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000);
+            Welcome w = sync.hello();
+            System.out.println("platform time " + w.platformTime() + ", clock " + w.mode());
+            if (!w.external()) {
+                sync.close();
+                throw new IllegalStateException("the platform clock is " + w.mode()
+                        + ": switch it with 'tinysep:time external' in the platform shell, then start again");
+            }
+            if (o.date() == null) {
+                day = w.platformTime().atZone(ZoneOffset.UTC).toLocalDate();
+                if (day.atStartOfDay(ZoneOffset.UTC).plusSeconds(o.fromSecond()).toInstant().isBefore(w.platformTime())) {
+                    day = day.plusDays(1);
+                }
+            }
+        }
+        long midnight = day.atStartOfDay(ZoneOffset.UTC).toEpochSecond();
+        Instant from = Instant.ofEpochSecond(midnight + o.fromSecond());
+        Instant until = Instant.ofEpochSecond(midnight + o.untilSecond());
+        VirtualClock clock = new VirtualClock(from);
+        System.out.println("flat " + flat.name() + ": " + flat.house().rooms().size() + " rooms, " + flat.nodes().size()
+                + " nodes -> AmICA " + target.amica() + ", Sun SPOT " + target.sunSpot() + "; scenario " + o.scenario()
+                + " (" + scenario.agents() + "), seed " + o.seed() + ", " + from + " .. " + until);
+        try (Simulation sim = new Simulation(flat, scenario, target, midnight, o.seed(), o.jitter(), o.wander(),
+                e -> System.out.println(clock.now() + " " + e))) {
+            for (long t = midnight; t < from.getEpochSecond(); t++) {
+                sim.rehearse(t);
+            }
+            Progress progress = new Progress(sim, o.progressMinutes(), from);
+            long wall = System.nanoTime();
+            if (sync != null) {
+                new LockStepDriver(sync, clock, o.paceMillis() * 1_000_000L).run(from, until, progress.wrap(sim::step));
+                sync.close();
+            } else {
+                new RealTimeDriver(clock, o.speed()).run(from, until, progress.wrap(sim::step));
+            }
+            System.out.printf("done: %d virtual seconds in %.1f s wall time%n", until.getEpochSecond() - from.getEpochSecond(),
+                    (System.nanoTime() - wall) / 1e9);
+        }
+    }
+}

@@ -1,0 +1,50 @@
+package org.tinysep.simulator.node;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.tinysep.amica.protocol.AmicaAddress;
+import org.tinysep.amica.protocol.AmicaCodec;
+import org.tinysep.amica.protocol.AmicaFrame;
+import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.amica.protocol.AmicaPayloads;
+
+/** One AmICA node's own UDP socket: frames to the bus radio (sequence numbers 0..255), commands back from it. */
+final class AmicaPort implements AutoCloseable {
+
+    private final AmicaAddress address;
+    private final DatagramChannel channel;
+    private final InetSocketAddress radio;
+    private final AtomicInteger sequence = new AtomicInteger();
+
+    AmicaPort(AmicaAddress address, Target target) throws IOException {
+        this.address = address;
+        this.radio = target.amica();
+        this.channel = DatagramChannel.open().bind(target.bind());
+    }
+
+    AmicaAddress address() {
+        return address;
+    }
+
+    DatagramChannel channel() {
+        return channel;
+    }
+
+    void send(AmicaPayload payload) {
+        byte[] b = AmicaCodec.encode(AmicaFrame.toPlatform(address, sequence.getAndIncrement() & 0xFF,
+                AmicaPayloads.encode(payload)));
+        try {
+            channel.send(ByteBuffer.wrap(b), radio);
+        } catch (IOException e) {
+            NodeLog.LOG.warning("node " + address + " could not send to " + radio + ": " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        channel.close();
+    }
+}

@@ -1,0 +1,51 @@
+package org.tinysep.simulator.node;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import org.tinysep.amica.protocol.AmicaAddress;
+import org.tinysep.simulator.flat.Flat;
+import org.tinysep.simulator.flat.Family;
+import org.tinysep.simulator.flat.NodeSpec;
+
+/** Creates the nodes of a flat: one UDP socket per AmICA node, one shared socket for the Sun SPOTs. */
+public final class NodeFactory {
+
+    private NodeFactory() {
+    }
+
+    /** @param events receives a line for every command a node carried out */
+    public static NodeSet create(Flat flat, Environment env, Target target, Consumer<String> events) throws IOException {
+        List<Closeable> resources = new ArrayList<>();
+        List<SimNode> nodes = new ArrayList<>();
+        List<AmicaNode> amica = new ArrayList<>();
+        RoomConditions conditions = new RoomConditions();
+        try {
+            SunSpotPort spots = null;
+            for (NodeSpec s : flat.nodes()) {
+                if (s.family() == Family.AMICA) {
+                    AmicaPort port = new AmicaPort(AmicaAddress.parse(s.address()), target);
+                    resources.add(port::close);
+                    AmicaNode n = new AmicaNode(s, port, env, events);
+                    amica.add(n);
+                    conditions.add(n);
+                    nodes.add(n);
+                } else {
+                    if (spots == null) {
+                        spots = new SunSpotPort(target);
+                        resources.add(spots::close);
+                    }
+                    nodes.add(new SunSpotNode(s, spots, env, conditions));
+                }
+            }
+            CommandReceiver receiver = new CommandReceiver(amica);
+            resources.add(0, receiver::close);
+        } catch (IOException | RuntimeException e) {
+            new NodeSet(nodes, resources).close();
+            throw e;
+        }
+        return new NodeSet(nodes, resources);
+    }
+}

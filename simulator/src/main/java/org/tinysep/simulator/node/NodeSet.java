@@ -1,0 +1,57 @@
+package org.tinysep.simulator.node;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/** All nodes of a simulated flat: ticked together, switched by id, closed together. */
+public final class NodeSet implements AutoCloseable {
+
+    private final Map<String, SimNode> nodes = new LinkedHashMap<>();
+    private final List<Closeable> resources;
+
+    NodeSet(List<SimNode> nodes, List<Closeable> resources) {
+        nodes.forEach(n -> this.nodes.put(n.spec().id(), n));
+        this.resources = resources;
+    }
+
+    public List<SimNode> nodes() {
+        return List.copyOf(nodes.values());
+    }
+
+    public SimNode node(String id) {
+        return nodes.get(id);
+    }
+
+    /** @return how many reported values changed (see {@link SimNode#tick}) */
+    public int tick(long t) {
+        int changed = 0;
+        for (SimNode n : nodes.values()) {
+            changed += n.tick(t);
+        }
+        return changed;
+    }
+
+    /** Switches a node's battery on or off; unknown ids are reported, never thrown. */
+    public void power(String id, boolean on) {
+        SimNode n = nodes.get(id);
+        if (n == null) {
+            NodeLog.LOG.warning("no node '" + id + "' to switch " + (on ? "on" : "off"));
+            return;
+        }
+        n.power(on);
+    }
+
+    @Override
+    public void close() {
+        for (Closeable c : resources) {
+            try {
+                c.close();
+            } catch (IOException e) {
+                NodeLog.LOG.fine("closing: " + e);
+            }
+        }
+    }
+}

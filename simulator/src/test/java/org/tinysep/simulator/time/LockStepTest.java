@@ -1,0 +1,92 @@
+package org.tinysep.simulator.time;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The lock-step client against a fake synchroniser peer over real UDP on 127.0.0.1. */
+class LockStepTest {
+
+    @Test
+    void helloReportsThePlatformTimeAndMode() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("REAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
+            Welcome w = c.hello();
+            assertEquals(Instant.parse("2026-11-22T12:00:00Z"), w.platformTime());
+            assertFalse(w.external());
+        }
+    }
+
+    @Test
+    void theDriverTicksEverySecondInOrderAfterItsFrames() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
+            assertTrue(c.hello().external());
+            Instant from = Instant.parse("2026-11-23T08:00:00Z");
+            VirtualClock clock = new VirtualClock(from);
+            List<String> log = new ArrayList<>();
+            new LockStepDriver(c, clock, 1_000_000).run(from, from.plusSeconds(100), t -> {
+                log.add(t + " step, platform at " + (peer.ticks().isEmpty() ? "-" : peer.ticks().get(peer.ticks().size() - 1)));
+                return t.getEpochSecond() % 10 == 0 ? 1 : 0;
+            });
+            List<Instant> ticks = peer.ticks();
+            assertEquals(100, ticks.size());
+            for (int i = 0; i < 100; i++) {
+                assertEquals(from.plusSeconds(i), ticks.get(i));
+            }
+            assertEquals(from.plusSeconds(5) + " step, platform at " + from.plusSeconds(4), log.get(5),
+                    "each second's frames go out before its TICK, after the previous DONE");
+            assertEquals(from.plusSeconds(99), clock.now());
+        }
+    }
+
+    @Test
+    void aLostDoneIsRetriedWithTheSameSequenceAndInstant() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 300)) {
+            peer.loseFirstDone();
+            Instant t = Instant.parse("2026-11-23T08:00:00Z");
+            c.tick(t);
+            c.tick(t.plusSeconds(1));
+            assertEquals(List.of("TICK 1 " + t, "TICK 1 " + t, "TICK 2 " + t.plusSeconds(1)), peer.requests);
+            assertEquals(2, peer.ticks().size(), "the retransmission did not fire again");
+        }
+    }
+
+    @Test
+    void anErrorAnswerStopsWithThePlatformsText() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
+            IOException e = assertThrows(IOException.class, () -> c.tick(Instant.parse("2020-01-01T00:00:00Z")));
+            assertTrue(e.getMessage().contains("backwards"), e.getMessage());
+        }
+    }
+
+    @Test
+    void noPeerGivesAClearMessage() throws Exception {
+        java.net.InetSocketAddress nobody;
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
+            nobody = peer.address();
+        }
+        try (SyncClient c = new SyncClient(nobody, 100)) {
+            IOException e = assertThrows(IOException.class, c::hello);
+            assertTrue(e.getMessage().contains("no answer to 'HELLO'"), e.getMessage());
+        }
+    }
+
+    @Test
+    void realTimeRunsAtTheGivenSpeed() throws Exception {
+        Instant from = Instant.parse("2026-11-23T08:00:00Z");
+        List<Instant> seen = new ArrayList<>();
+        long start = System.nanoTime();
+        new RealTimeDriver(new VirtualClock(from), 100).run(from, from.plusSeconds(20), t -> {
+            seen.add(t);
+            return 0;
+        });
+        assertEquals(20, seen.size());
+        assertTrue(System.nanoTime() - start >= 190_000_000L, "20 virtual seconds at speed 100 take at least 0.19 s");
+    }
+}
