@@ -3,7 +3,9 @@ package org.tinysep.flatoccupancy.internal;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
@@ -33,6 +35,8 @@ final class FlatOccupancyDevice extends AbstractDevice
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
+    /** The last state each door reported, so a first "closed" report is not taken for a closing. */
+    private final Map<String, OpenState> lastDoorStates = new ConcurrentHashMap<>();
 
     FlatOccupancyDevice(DriverContext context, Duration leaveTimeout, Duration exitGrace) {
         super(context, Uids.of(context.driverName(), "flat"), context.driverName(), "Flat occupancy");
@@ -63,8 +67,12 @@ final class FlatOccupancyDevice extends AbstractDevice
 
     @Override
     public void doorChanged(DoorProvider source, OpenState state, Instant at) {
+        OpenState previous = lastDoorStates.put(source.deviceUid(), state);
         if (source.kind() != DoorKind.OUTER || state == OpenState.UNKNOWN) {
             return;
+        }
+        if (state == OpenState.CLOSED && (previous == null || previous == OpenState.UNKNOWN)) {
+            return; // a door node's first report (power-up, restart) is no evidence that anyone left
         }
         Optional<Occupancy> change;
         synchronized (logic) {
