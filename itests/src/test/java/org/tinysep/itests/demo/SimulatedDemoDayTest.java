@@ -1,0 +1,181 @@
+package org.tinysep.itests.demo;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.ops4j.pax.exam.Option;
+import org.ops4j.pax.exam.junit.PaxExam;
+import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
+import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Driver;
+import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.MailStatus;
+import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.simulator.cli.Run;
+
+/**
+ * Issue 5, test item 1: the REAL simulator (flat A, scenario demo-day, seed 1) drives the platform over the wire
+ * protocols only (AmICA UDP, Sun SPOT UDP, the time synchroniser in lock-step), 06:00 to 18:05 virtual time (every scripted step up to Ben leaving).
+ * Asserted: Flat Occupancy's changes with their virtual times, the sequence of rooms whose light was switched on,
+ * Inactivity Recognition's states (exactly one ALERT) and exactly one mail naming the Bathroom.
+ * <p>
+ * {@code --wander 0}: no random short walks, so the rooms lit are exactly those of the scenario (jitter, seeded,
+ * still moves every scripted time). The simulation starts at 06:00 so that the platform has registered every
+ * node's devices (placed by the placement configuration) before Anna wakes at 06:45.
+ */
+@RunWith(PaxExam.class)
+@ExamReactorStrategy(PerClass.class)
+public class SimulatedDemoDayTest extends TinySepTestSupport {
+
+    private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
+
+    /**
+     * Flat Occupancy. demo-day: Anna (asleep at home) wakes 06:45 -> OCCUPIED with her first motion; leaves 08:30
+     * (± 90 s jitter), the door closes, UNOCCUPIED 600 s (leave timeout) later; arrives 11:40 (± 90 s) -> OCCUPIED
+     * when the door opens. Ben's visit (15:30-18:00) happens while Anna is home: no change.
+     */
+    private static final List<String> OCCUPANCY = List.of(
+            "06:45:13 OCCUPIED", // 06:45 wakes (+13 s jitter): her first bedroom motion
+            "08:39:28 UNOCCUPIED", // 08:30 leaves (-35 s jitter): door closed 08:29:28, + 600 s leave timeout
+            "11:40:12 OCCUPIED"); // 11:40 arrives (+12 s jitter): the outer door opens
+
+    /** Rooms lit, consecutive repeats merged; the scenario's walk along the house graph (Hall links everything). */
+    private static final List<String> ROOMS_LIT = List.of(
+            "Bedroom", // 06:45 wakes
+            "Hall", "Bathroom", // 06:50 bedroom -> bathroom
+            "Hall", "Living Room", "Kitchen", // 07:15 kitchen (breakfast)
+            "Living Room", // 07:45 living room
+            "Hall", // 08:30 leaves; 11:40 arrives (the hall again, merged)
+            "Living Room", "Kitchen", // ... in kitchen
+            "Living Room", // 12:30 living room
+            "Study", // 13:20 study
+            "Living Room", "Hall", "Bathroom", // 14:00 bathroom (14:02 collapses there: no more motion)
+            "Hall", "Living Room", // 15:30 Ben arrives in living room
+            "Hall", "Bathroom", // 15:32 Ben to the bathroom
+            "Hall", "Living Room", // 15:40-15:46 Anna gets up, both to the living room
+            "Kitchen", // 17:30 Ben kitchen
+            "Hall"); // 18:00 Ben leaves (the run ends at 18:05)
+
+    /** Inactivity Recognition: watching while occupied, one ALERT after the bathroom limit (45 min) from 14:02. */
+    private static final List<String> INACTIVITY = List.of(
+            "06:45:13 WATCHING", "08:39:28 NOT_WATCHING", "11:40:12 WATCHING", // with Flat Occupancy
+            // last bathroom motion report about 14:01:15 (she collapses at 14:02 - jitter) + 45 min; to the minute:
+            // an unchanged motion report is not paced in lock-step and may be stamped a second or two late
+            "14:46 ALERT",
+            "15:29:42 WATCHING"); // 15:30 Ben arrives (-18 s jitter): the door opening is activity
+
+    @Override
+    protected List<Option> options() {
+        List<Option> o = super.options();
+        o.addAll(sunSpotBundles(5));
+        o.add(reactorBundle("org.tinysep.simulator", 5));
+        return o;
+    }
+
+    @Override
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
+        configs.put("org.tinysep.timecontroller",
+                Map.of("mode", "EXTERNAL", "syncPort", "0", "syncBindAddress", "127.0.0.1"));
+        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        try {
+            Path house = Files.createTempDirectory("tinysep-demo-house-").resolve("house.xml");
+            Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
+            configs.put("org.tinysep.houseinformation", Map.of("file", house.toString()));
+            configs.put("org.tinysep.houseinformation.placement", Map.of("placements", placements()));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return configs;
+    }
+
+    /** {@code address=room} for every node of flat A's nodes.txt except pet collars (as scripts/demo-flat.sh). */
+    private static String placements() throws IOException {
+        List<String> entries = new ArrayList<>();
+        for (String line : Files.readAllLines(FLAT_A.resolve("nodes.txt"))) {
+            String[] f = line.strip().split("\\|", -1);
+            if (line.strip().startsWith("#") || f.length < 5 || (f.length > 5 && f[5].contains("agent="))) {
+                continue;
+            }
+            entries.add(f[2].strip() + "=" + f[4].strip());
+        }
+        return String.join(", ", entries);
+    }
+
+    @Test
+    public void theDemoDayProducesTheExpectedOccupancyLightsAndOneAlert() throws Exception {
+        ExecutorService executor = Executors.newSingleThreadExecutor();
+        PlatformRecord record = null;
+        try (SmtpSink sink = new SmtpSink().start()) {
+            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
+                    "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
+                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
+                    "spoolDir", Files.createTempDirectory("tinysep-demo-spool").toString()));
+            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
+            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
+            HouseInformationProvider house = awaitService(HouseInformationProvider.class, null, TIMEOUT);
+            await(TIMEOUT, () -> house.rooms().size() == 6, "flat A's six rooms");
+            record = new PlatformRecord(context, house);
+            List<String> args = List.of("--lockstep", "--amica-port", Integer.toString(udpPortOf("BusRadioAmicaUdp")),
+                    "--sunspot-port", Integer.toString(udpPortOf("BusRadioSunSpot")), "--sync-port",
+                    Integer.toString(syncPort()), "--flat", "flat-a", "--scenario", "demo-day", "--seed", "1",
+                    "--wander", "0", "--from", "06:00", "--until", "18:05", "--progress", "120");
+            long wall = System.nanoTime();
+            Future<?> run = executor.submit(() -> {
+                Run.simulate(args.toArray(new String[0]));
+                return null;
+            });
+            run.get(120, TimeUnit.SECONDS);
+            long millis = (System.nanoTime() - wall) / 1_000_000;
+            System.out.println("SimulatedDemoDayTest: 06:00-18:05 virtual in " + millis + " ms wall time");
+            log.info("recorded: {}", record);
+            sink.await(1, Duration.ofSeconds(10));
+
+            assertEquals("Flat Occupancy's changes", OCCUPANCY, record.occupancy);
+            assertEquals("rooms lit by Follow Me Light, in order", ROOMS_LIT, record.roomsLit());
+            assertEquals("Inactivity Recognition's states", INACTIVITY,
+                    record.inactivity.stream().map(e -> e.endsWith(" ALERT") ? e.substring(0, 5) + " ALERT" : e).toList());
+            assertEquals("exactly one ALERT", 1, record.inactivity.stream().filter(s -> s.endsWith(" ALERT")).count());
+            assertEquals("exactly one mail", 1, sink.messages().size());
+            SmtpSink.Received alert = sink.messages().get(0);
+            assertEquals("the alert mail", "TinySEP: no activity in Bathroom since 14:01", alert.subject());
+            assertTrue("the mail's text names the Bathroom: " + alert.body(), alert.body().contains("Bathroom"));
+            assertTrue("well under a minute of wall time: " + millis + " ms", millis < 60_000);
+        } finally {
+            if (record != null) {
+                record.close();
+            }
+            executor.shutdownNow();
+        }
+    }
+
+    private int syncPort() {
+        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
+        awaitService(Driver.class, filter, TIMEOUT);
+        try {
+            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
+                    .getProperty("tinysep.sync.port")).intValue();
+        } catch (Exception e) {
+            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
+        }
+    }
+}
