@@ -6,14 +6,12 @@ import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.function.BiFunction;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
-import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.actuator.SimpleLightProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.itests.Connections;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
@@ -32,17 +30,16 @@ final class PlatformRecord implements AutoCloseable {
     final List<String> inactivity = new CopyOnWriteArrayList<>();
     /** {@code "HH:mm:ss <room> on|off"}; a room of {@code ?} when the device is not placed yet */
     final List<String> lights = new CopyOnWriteArrayList<>();
-    private final List<ServiceTracker<?, ?>> trackers = new ArrayList<>();
-    private final BundleContext context;
+    private final Connections connections;
 
     PlatformRecord(BundleContext context, HouseInformationProvider house) {
-        this.context = context;
-        track(FlatOccupancyProvider.class, (ref, p) -> p.connect((src, o, at) -> occupancy.add(hms(at) + " " + o)));
-        track(InactivityRecognitionProvider.class,
+        this.connections = new Connections(context);
+        connections.to(FlatOccupancyProvider.class, (ref, p) -> p.connect((src, o, at) -> occupancy.add(hms(at) + " " + o)));
+        connections.to(InactivityRecognitionProvider.class,
                 (ref, p) -> p.connect((src, s, at) -> inactivity.add(hms(at) + " " + s)));
-        track(SimpleLightProvider.class, (ref, p) -> p.connect(
+        connections.to(SimpleLightProvider.class, (ref, p) -> p.connect(
                 (src, on, at) -> lights.add(hms(at) + " " + room(ref, house) + (on ? " on" : " off"))));
-        track(DimmableLightProvider.class, (ref, p) -> p.connect(
+        connections.to(DimmableLightProvider.class, (ref, p) -> p.connect(
                 (src, b, at) -> lights.add(hms(at) + " " + room(ref, house) + (b.value() > 0 ? " on" : " off"))));
     }
 
@@ -62,25 +59,9 @@ final class PlatformRecord implements AutoCloseable {
 
     @Override
     public void close() {
-        trackers.forEach(ServiceTracker::close);
+        connections.close();
     }
 
-    private <P> void track(Class<P> type, BiFunction<ServiceReference<P>, P, Connection> connector) {
-        ServiceTracker<P, Connection> tracker = new ServiceTracker<>(context, type, null) {
-            @Override
-            public Connection addingService(ServiceReference<P> ref) {
-                return connector.apply(ref, context.getService(ref));
-            }
-
-            @Override
-            public void removedService(ServiceReference<P> ref, Connection c) {
-                c.close();
-                context.ungetService(ref);
-            }
-        };
-        tracker.open();
-        trackers.add(tracker);
-    }
 
     private static String room(ServiceReference<?> ref, HouseInformationProvider house) {
         Object uid = ref.getProperty(DeviceProperties.ROOM);

@@ -21,15 +21,12 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import org.junit.Test;
 import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
-import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.Driver;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.simulator.cli.Replay;
 import org.tinysep.simulator.cli.ReplayResult;
 import org.tinysep.simulator.cli.Run;
@@ -52,7 +49,7 @@ import org.tinysep.simulator.replay.SensorEvent;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
-public class OrdonezReplayTest extends TinySepTestSupport {
+public class OrdonezReplayTest extends LockStepTestSupport {
 
     private static final Path DATA = Path.of("..", "..", "shared", "data", "ordonez");
     private static final Path SENSORS = DATA.resolve("OrdonezA_Sensors.txt");
@@ -62,19 +59,8 @@ public class OrdonezReplayTest extends TinySepTestSupport {
     private static final String RATE = System.getProperty("tinysep.replay.rate", "changes");
 
     @Override
-    protected List<Option> options() {
-        List<Option> o = super.options();
-        o.addAll(sunSpotBundles(5)); // the simulator imports the Sun SPOT protocol too
-        o.add(reactorBundle("org.tinysep.simulator", 5));
-        return o;
-    }
-
-    @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.timecontroller",
-                Map.of("mode", "EXTERNAL", "syncPort", "0", "syncBindAddress", "127.0.0.1"));
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
         try {
             Path house = Files.createTempDirectory("tinysep-ordonez-a-").resolve("house.xml");
             Files.copy(HOUSE, house, StandardCopyOption.REPLACE_EXISTING);
@@ -173,14 +159,4 @@ public class OrdonezReplayTest extends TinySepTestSupport {
         }
     }
 
-    private int syncPort() {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
-        try {
-            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
-                    .getProperty("tinysep.sync.port")).intValue();
-        } catch (Exception e) {
-            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
-        }
-    }
 }

@@ -1,19 +1,15 @@
 package org.tinysep.itests.replay;
 
 import java.time.Instant;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Map;
 import java.util.NavigableMap;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentSkipListMap;
-import java.util.function.BiFunction;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
-import org.osgi.util.tracker.ServiceTracker;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.itests.Connections;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
@@ -31,15 +27,14 @@ final class ReplayRecord implements AutoCloseable {
     private final Map<String, Integer> onCounts = new ConcurrentHashMap<>();
     private final Map<String, Boolean> lastOn = new ConcurrentHashMap<>();
     private final NavigableMap<Instant, Occupancy> occupancy = new ConcurrentSkipListMap<>();
-    private final List<ServiceTracker<?, ?>> trackers = new ArrayList<>();
-    private final BundleContext context;
+    private final Connections connections;
 
     ReplayRecord(BundleContext context) {
-        this.context = context;
-        track(MovementProvider.class, (ref, p) -> p.connect((src, m) -> sensor(ref, m.detected())));
-        track(DoorProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
-        track(WindowProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
-        track(FlatOccupancyProvider.class, (ref, p) -> p.connect((src, o, at) -> occupancy.put(at, o)));
+        this.connections = new Connections(context);
+        connections.to(MovementProvider.class, (ref, p) -> p.connect((src, m) -> sensor(ref, m.detected())));
+        connections.to(DoorProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
+        connections.to(WindowProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
+        connections.to(FlatOccupancyProvider.class, (ref, p) -> p.connect((src, o, at) -> occupancy.put(at, o)));
     }
 
     /** @return node address → times the sensor turned on, sorted */
@@ -60,25 +55,9 @@ final class ReplayRecord implements AutoCloseable {
         }
     }
 
-    private <P> void track(Class<P> type, BiFunction<ServiceReference<P>, P, Connection> connector) {
-        ServiceTracker<P, Connection> tracker = new ServiceTracker<>(context, type, null) {
-            @Override
-            public Connection addingService(ServiceReference<P> ref) {
-                return connector.apply(ref, context.getService(ref));
-            }
-
-            @Override
-            public void removedService(ServiceReference<P> ref, Connection c) {
-                c.close();
-                context.ungetService(ref);
-            }
-        };
-        tracker.open();
-        trackers.add(tracker);
-    }
 
     @Override
     public void close() {
-        trackers.forEach(ServiceTracker::close);
+        connections.close();
     }
 }
