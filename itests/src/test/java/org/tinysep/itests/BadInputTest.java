@@ -46,8 +46,12 @@ public class BadInputTest extends TinySepTestSupport {
         try (AmicaNode node = new AmicaNode(1, 17, port, MOVEMENT);
                 AmicaNode stranger = new AmicaNode(1, 99, port, MOVEMENT)) {
             node.keepAlive();
-            await(TIMEOUT, () -> Topology.of(context).contains("FlatOccupancy <- MovementProvider of AmicaMovement@1.17"),
-                    "the movement node's devices");
+            // every consumer of the movement node connected: the graph the garbage must not change
+            await(TIMEOUT, () -> Topology.of(context).containsAll(List.of(
+                    "AmicaMovement@1.17 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.17",
+                    "FlatOccupancy <- MovementProvider of AmicaMovement@1.17",
+                    "InactivityRecognition <- MovementProvider of AmicaMovement@1.17")),
+                    "the movement node's devices and their consumers");
             Set<String> graph = Topology.of(context);
             MovementProvider movement = awaitService(MovementProvider.class, null, TIMEOUT);
             movement.connect((src, m) -> {

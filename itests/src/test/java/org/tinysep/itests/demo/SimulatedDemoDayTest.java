@@ -22,6 +22,7 @@ import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
@@ -83,6 +84,7 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
+        configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000")); // the whole day's event log
         try {
             Path house = Files.createTempDirectory("tinysep-demo-house-").resolve("house.xml");
             Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
@@ -137,7 +139,8 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
             sink.await(1, Duration.ofSeconds(10));
 
             assertEquals("Flat Occupancy's changes", OCCUPANCY, record.occupancy);
-            assertEquals("rooms lit by Follow Me Light, in order", ROOMS_LIT, record.roomsLit());
+            assertEquals("rooms whose lights Follow Me Light switched on, in order", ROOMS_LIT,
+                    record.roomsRequested(awaitService(EventLog.class, null, TIMEOUT), house));
             assertEquals("Inactivity Recognition's states", INACTIVITY,
                     record.inactivity.stream().map(e -> e.endsWith(" ALERT") ? e.substring(0, 5) + " ALERT" : e).toList());
             assertEquals("exactly one ALERT", 1, record.inactivity.stream().filter(s -> s.endsWith(" ALERT")).count());
