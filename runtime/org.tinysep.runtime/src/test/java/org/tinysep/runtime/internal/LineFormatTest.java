@@ -87,4 +87,23 @@ class LineFormatTest {
             assertThrows(IllegalArgumentException.class, () -> packets.decode(bad), bad);
         }
     }
+
+    @Test
+    void theFastTimeParserAgreesWithInstantParse() {
+        Random r = new Random(7);
+        for (int i = 0; i < 5000; i++) {
+            Instant t = Instant.ofEpochSecond(r.nextLong(-30_000_000_000L, 200_000_000_000L),
+                    switch (i % 4) {
+                        case 0 -> 0;
+                        case 1 -> r.nextInt(1000) * 1_000_000;
+                        case 2 -> r.nextInt(1_000_000) * 1000;
+                        default -> r.nextInt(1_000_000_000);
+                    });
+            assertEquals(t, Fields.time(t.toString()), t.toString());
+        }
+        for (String bad : List.of("2026-13-01T00:00:00Z", "2026-02-30T00:00:00Z",
+                "2026-01-01T00:00:00.1234567890Z", "2026-01-01T0a:00:00Z", "2026-01-01")) {
+            assertThrows(IllegalArgumentException.class, () -> Fields.time(bad), bad);
+        }
+    }
 }
