@@ -22,9 +22,8 @@ import org.tinysep.itests.Topology;
 
 /**
  * Thesis 3.3: "If the user opts to remove a driver, then all its devices will be also removed, one by one.
- * Consequently, all devices and driver will be informed of each removal" — here by stopping the driver's bundle
- * (the Felix shell's {@code stop}; {@code tinysep:remove <driver>} does the same and is covered by
- * ThesisScenariosTest). And: "if a certain device loses all the necessary connections for its operation, it will
+ * Consequently, all devices and driver will be informed of each removal" — by stopping the driver's bundle (the
+ * Felix shell's {@code stop}) and by {@code tinysep:remove <driver name>}. And: "if a certain device loses all the necessary connections for its operation, it will
  * also uninstall itself" — the devices that needed the stopped bus radio's nodes remove themselves, each
  * removal logged with its reason, after the device it depended on.
  */
@@ -53,36 +52,48 @@ public class DriverRemovalTest extends RemovalTestSupport {
             String driverUid = (String) context.getServiceReferences(Driver.class,
                     "(" + DeviceProperties.DRIVER_NAME + "=AmicaMovement)").iterator().next()
                     .getProperty(DeviceProperties.DRIVER_UID);
-            long before = lastSequence();
-
             Bundle amicaMovement = bundle("org.tinysep.amica.movement");
-            amicaMovement.stop();
-            expectGraph(Set.of("BusRadioAmicaUdp@1.17", "BusRadioAmicaUdp@1.18", "FlatOccupancy",
+            Set<String> withoutMovements = Set.of("BusRadioAmicaUdp@1.17", "BusRadioAmicaUdp@1.18", "FlatOccupancy",
                     "FlatOccupancy <- DoorProvider of AmicaDoor@1.20", "InactivityRecognition",
-                    "InactivityRecognition <- DoorProvider of AmicaDoor@1.20"), movements);
-            long r1 = only(before, EventKind.DEVICE_REMOVED, first);
-            long r2 = only(before, EventKind.DEVICE_REMOVED, second);
-            long driverGone = only(before, EventKind.DRIVER_REMOVED, driverUid);
-            assertBefore("removed one by one in creation order", r1, r2);
-            assertBefore("the devices before their driver", r2, driverGone);
-            List<EventEntry> after = entriesAfter(before, e -> true);
-            assertTrue("the driver's own devices did not 'lose their vital connections': their driver went: " + after,
-                    after.stream().noneMatch(e -> e.message().contains("lost its vital connections")));
-            for (String consumer : List.of(flat, inactivity)) {
-                for (String gone : List.of(first, second)) {
-                    assertEquals(consumer + " disconnected from " + gone + ": " + after, 1, after.stream()
-                            .filter(e -> e.kind() == EventKind.DISCONNECTED && e.origin().equals(consumer)
-                                    && e.message().contains(" of " + gone)).count());
+                    "InactivityRecognition <- DoorProvider of AmicaDoor@1.20");
+            for (boolean shell : new boolean[] {false, true}) {
+                long before = lastSequence();
+                if (shell) {
+                    String reply = shell("tinysep:remove AmicaMovement");
+                    assertTrue(reply, reply.startsWith("stopped bundle " + amicaMovement.getBundleId()));
+                } else {
+                    amicaMovement.stop();
                 }
+                expectGraph(withoutMovements, movements);
+                assertRemovedOneByOne(before, List.of(first, second), driverUid, List.of(flat, inactivity));
+                amicaMovement.start(); // the bus devices are still there: both movement devices come back
+                expectGraph(movements, Set.of());
+                assertEquals(flat, Topology.uid(context, "FlatOccupancy", null));
+                assertEquals(first, Topology.uid(context, "AmicaMovement", "1.17"));
             }
-            assertTrue("Flat Occupancy and Inactivity stay (they still have the door)", after.stream()
-                    .noneMatch(e -> e.kind() == EventKind.DEVICE_REMOVED
-                            && (e.origin().equals(flat) || e.origin().equals(inactivity))));
+        }
+    }
 
-            amicaMovement.start(); // the bus devices are still there: both movement devices are created again
-            expectGraph(movements, Set.of());
-            assertEquals(flat, Topology.uid(context, "FlatOccupancy", null));
-            assertEquals(first, Topology.uid(context, "AmicaMovement", "1.17"));
+    /** Driver removal: devices one by one in creation order, then the driver; consumers told of each; no orphans. */
+    private void assertRemovedOneByOne(long before, List<String> devices, String driverUid, List<String> consumers) {
+        long previous = before;
+        for (String device : devices) {
+            long removed = only(before, EventKind.DEVICE_REMOVED, device);
+            assertBefore("removed one by one in creation order", previous, removed);
+            previous = removed;
+        }
+        assertBefore("the devices before their driver", previous, only(before, EventKind.DRIVER_REMOVED, driverUid));
+        List<EventEntry> after = entriesAfter(before, e -> true);
+        assertTrue("the driver's own devices did not 'lose their vital connections': their driver went: " + after,
+                after.stream().noneMatch(e -> e.message().contains("lost its vital connections")));
+        for (String consumer : consumers) {
+            for (String gone : devices) {
+                assertEquals(consumer + " disconnected from " + gone + ": " + after, 1, after.stream()
+                        .filter(e -> e.kind() == EventKind.DISCONNECTED && e.origin().equals(consumer)
+                                && e.message().contains(" of " + gone)).count());
+            }
+            assertTrue(consumer + " stays (it still has the door)", after.stream()
+                    .noneMatch(e -> e.kind() == EventKind.DEVICE_REMOVED && e.origin().equals(consumer)));
         }
     }
 
