@@ -2,7 +2,6 @@ package org.tinysep.runtime.internal;
 
 import java.nio.file.Path;
 import java.time.Duration;
-import java.util.function.IntSupplier;
 import org.osgi.framework.BundleContext;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -30,10 +29,10 @@ final class LogConfig {
                     + "the logs work in memory only");
             return null;
         }
-        long kb = value("logMaxFileSizeKb", config::logMaxFileSizeKb, 1, 1_048_576, 8192);
-        int files = value("logMaxFiles", config::logMaxFiles, 2, 10_000, LogSettings.DEFAULT_MAX_FILES);
-        int days = value("logRetentionDays", config::logRetentionDays, 0, 36_500, 30);
-        int sync = value("logSyncMillis", config::logSyncMillis, 10, 3_600_000, 2000);
+        long kb = Capacity.read("logMaxFileSizeKb", config::logMaxFileSizeKb, 1, 1_048_576, 8192);
+        int files = Capacity.read("logMaxFiles", config::logMaxFiles, 2, 10_000, LogSettings.DEFAULT_MAX_FILES);
+        int days = Capacity.read("logRetentionDays", config::logRetentionDays, 0, 36_500, 30);
+        int sync = Capacity.read("logSyncMillis", config::logSyncMillis, 10, 3_600_000, 2000);
         return new LogSettings(folder, Math.max(1024, kb * 1024), files, Duration.ofDays(days),
                 Duration.ofMillis(sync));
     }
@@ -52,22 +51,5 @@ final class LogConfig {
         }
         java.io.File data = context == null ? null : context.getDataFile("log");
         return data == null ? null : data.toPath().toAbsolutePath();
-    }
-
-    private static int value(String key, IntSupplier value, int min, int max, int fallback) {
-        int v;
-        try {
-            v = value.getAsInt();
-        } catch (RuntimeException e) {
-            LOG.warn("Configuration {}: {} is not a whole number ({}); using {}", RuntimeConfig.PID, key,
-                    e.toString(), fallback);
-            return fallback;
-        }
-        if (v < min || v > max) {
-            LOG.warn("Configuration {}: {}={} is outside {}..{}; using {}", RuntimeConfig.PID, key, v, min, max,
-                    fallback);
-            return fallback;
-        }
-        return v;
     }
 }
