@@ -16,4 +16,15 @@ public interface EventLog {
 
     /** @return the newest {@code max} entries, oldest first */
     List<EventEntry> recent(int max);
+
+    /**
+     * Searches the log's history: the stored history where the log keeps one, else what it holds in memory.
+     * The default searches {@link #recent(int)}.
+     *
+     * @since 1.1
+     */
+    default LogHistory<EventEntry> query(LogQuery query) {
+        List<EventEntry> all = recent(Integer.MAX_VALUE).stream().filter(query::matches).toList();
+        return new LogHistory<>(all.subList(Math.max(0, all.size() - query.limit()), all.size()), all.size(), 0);
+    }
 }

@@ -94,9 +94,15 @@ public abstract class AbstractDriver implements Driver {
 
     /**
      * Tells every device that a provider device went away; a device left without a vital connection is removed
-     * (thesis 3.3).
+     * (thesis 3.3). While the driver's own bundle is stopping, its closing trackers report every provider as
+     * removed: that is the driver going, not the providers, so nothing is done here and {@link #stop()} removes
+     * the devices one by one instead (no false "lost its vital connections" entries).
      */
     protected final void providerGone(String providerUid) {
+        DriverContext own = context;
+        if (own != null && own.stopping()) {
+            return;
+        }
         for (AbstractDevice d : snapshot()) {
             boolean hadIt = d.connections().stream().anyMatch(c -> c.providerDeviceUid().equals(providerUid));
             if (hadIt && !d.providerGone(providerUid)) {

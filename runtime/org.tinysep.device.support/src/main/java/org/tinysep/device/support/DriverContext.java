@@ -1,6 +1,7 @@
 package org.tinysep.device.support;
 
 import java.time.Instant;
+import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.tinysep.api.log.EventKind;
 
@@ -48,6 +49,26 @@ public final class DriverContext implements AutoCloseable {
             throw new IllegalStateException(driverName + " runs without a framework; nothing can be registered");
         }
         return bundleContext;
+    }
+
+    /**
+     * @return whether the driver's bundle is stopping (or its context is no longer valid): its trackers then report
+     *         every provider as removed, which is not the providers going away. Never true without a framework.
+     */
+    public boolean stopping() {
+        return stopping(bundleContext);
+    }
+
+    static boolean stopping(BundleContext bundleContext) {
+        if (bundleContext == null) {
+            return false;
+        }
+        try {
+            return (bundleContext.getBundle().getState() & (Bundle.STOPPING | Bundle.RESOLVED | Bundle.UNINSTALLED))
+                    != 0;
+        } catch (IllegalStateException e) {
+            return true; // the context was invalidated: the bundle has stopped
+        }
     }
 
     public String driverUid() {

@@ -63,6 +63,25 @@ final class RingBuffer<E> {
         return copy((int) (from - oldest), n);
     }
 
+    /**
+     * Fills an empty ring with entries loaded from the history (oldest first; only the newest that fit are kept)
+     * and makes numbering go on after {@code lastSequence}.
+     *
+     * @throws IllegalStateException when the ring is not empty
+     */
+    synchronized void restore(List<E> entries, long lastSequence) {
+        if (size > 0 || this.lastSequence > 0) {
+            throw new IllegalStateException("only an empty ring can be restored");
+        }
+        int n = Math.min(entries.size(), slots.length);
+        for (int i = 0; i < n; i++) {
+            slots[i] = entries.get(entries.size() - n + i);
+        }
+        head = 0;
+        size = n;
+        this.lastSequence = Math.max(lastSequence, 0);
+    }
+
     /** Changes the capacity, keeping the newest entries; sequence numbering goes on unchanged. */
     synchronized void resize(int capacity) {
         check(capacity);

@@ -8,15 +8,13 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.api.log.EventLog;
-import org.tinysep.api.log.PacketLog;
 
 /**
  * The {@code tinysep} Gogo commands. Each returns its output as one String (no trailing newline), so it prints in
  * the shell and can be read through {@code CommandProcessor}. Errors are thrown as {@link IllegalArgumentException}
  * or {@link IllegalStateException} with a one-line message; Gogo prints them as one line, never a stack trace.
- * {@code log} and {@code set} clash with {@code felix:log} and {@code gogo:set}: type {@code tinysep:log} and
- * {@code tinysep:set} (or {@code events}, the same as {@code log}).
+ * {@code set} clashes with {@code gogo:set}: type {@code tinysep:set}. The log commands are in
+ * {@link HistoryCommands}.
  */
 @Component(service = ShellCommands.class, property = {
     "osgi.command.scope=tinysep",
@@ -24,31 +22,21 @@ import org.tinysep.api.log.PacketLog;
     "osgi.command.function=devices",
     "osgi.command.function=remove",
     "osgi.command.function=set",
-    "osgi.command.function=invoke",
-    "osgi.command.function=log",
-    "osgi.command.function=events",
-    "osgi.command.function=packets"
+    "osgi.command.function=invoke"
 })
 public final class ShellCommands {
 
-    static final int DEFAULT_LINES = 20;
     private static final Logger LOG = LoggerFactory.getLogger(ShellCommands.class);
 
     private final Operations operations;
-    private final EventLog events;
-    private final PacketLog packets;
 
     @Activate
-    public ShellCommands(BundleContext context, @Reference(name = "inventory") Inventory inventory,
-            @Reference(name = "eventLog") EventLog events, @Reference(name = "packetLog") PacketLog packets) {
-        this(new Operations(inventory, id -> stop(context, id), context.getBundle().getBundleId()), events,
-                packets);
+    public ShellCommands(BundleContext context, @Reference(name = "inventory") Inventory inventory) {
+        this(new Operations(inventory, id -> stop(context, id), context.getBundle().getBundleId()));
     }
 
-    ShellCommands(Operations operations, EventLog events, PacketLog packets) {
+    ShellCommands(Operations operations) {
         this.operations = operations;
-        this.events = events;
-        this.packets = packets;
     }
 
     /** {@code drivers}: one table row per driver. */
@@ -76,43 +64,7 @@ public final class ShellCommands {
         return run("invoke", () -> operations.invoke(uid, function));
     }
 
-    /** {@code log}: the newest 20 event-log entries. */
-    public String log() {
-        return log(DEFAULT_LINES);
-    }
-
-    /** {@code log <n>}: the newest n event-log entries, oldest first. */
-    public String log(int n) {
-        return run("log", () -> Listings.events(events.recent(positive(n))));
-    }
-
-    /** {@code events [n]}: the same as {@code log [n]}, without the clash with {@code felix:log}. */
-    public String events() {
-        return log();
-    }
-
-    public String events(int n) {
-        return log(n);
-    }
-
-    /** {@code packets}: the newest 20 packet-log entries. */
-    public String packets() {
-        return packets(DEFAULT_LINES);
-    }
-
-    /** {@code packets <n>}: the newest n packet-log entries, oldest first. */
-    public String packets(int n) {
-        return run("packets", () -> Listings.packets(packets.recent(positive(n))));
-    }
-
-    private static int positive(int n) {
-        if (n < 1) {
-            throw new IllegalArgumentException("the number of lines must be at least 1, not " + n);
-        }
-        return n;
-    }
-
-    private static String run(String command, Supplier<String> body) {
+    static String run(String command, Supplier<String> body) {
         try {
             return body.get();
         } catch (IllegalArgumentException | IllegalStateException e) {

@@ -10,8 +10,6 @@ import java.time.ZoneOffset;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.api.log.Direction;
-import org.tinysep.api.log.EventKind;
 
 /** The shell output is a contract (integration tests parse it): these tests pin it character by character. */
 class ShellCommandsTest {
@@ -19,15 +17,7 @@ class ShellCommandsTest {
     static final Clock CLOCK = Clock.fixed(Instant.parse("2026-11-22T11:10:00.123456Z"), ZoneOffset.UTC);
 
     private final Home home = new Home();
-    private final EventLogService events = new EventLogService(CLOCK);
-    private final PacketLogService packets = new PacketLogService(CLOCK);
-    private final ShellCommands shell = new ShellCommands(new Operations(home.directory, id -> "b" + id, 5),
-            events, packets);
-
-    ShellCommandsTest() {
-        events.start(() -> 100, Runnable::run, e -> { });
-        packets.configure(() -> 100);
-    }
+    private final ShellCommands shell = new ShellCommands(new Operations(home.directory, id -> "b" + id, 5));
 
     @Test
     void devicesListsOneBlockPerDeviceSortedByUid() {
@@ -95,49 +85,14 @@ class ShellCommandsTest {
     }
 
     @Test
-    void logShowsTheNewestEntriesOldestFirst() {
-        for (int i = 1; i <= 25; i++) {
-            events.record(EventKind.DEVICE_EVENT, "door-" + i, "door opened");
-        }
-        events.record(EventKind.PROBLEM, "", "bad | input\nsecond line");
-        List<String> lines = shell.log().lines().toList();
-        assertEquals(21, lines.size(), "header and the default 20");
-        assertEquals("SEQ | TIME                     | KIND         | ORIGIN  | MESSAGE", lines.get(0));
-        assertEquals("7   | 2026-11-22T11:10:00.123Z | DEVICE_EVENT | door-7  | door opened", lines.get(1));
-        assertEquals("26  | 2026-11-22T11:10:00.123Z | PROBLEM      | -       | bad | input second line",
-                lines.get(20));
-        assertEquals(3, shell.log(2).lines().count());
-        assertEquals(shell.log(5), shell.events(5));
-    }
-
-    @Test
-    void packetsShowDecimalAndHexBytes() {
-        packets.record(Direction.RECEIVED, "busradio-amica 127.0.0.1:47001", new byte[] {(byte) 170, 1, 18, (byte) 255},
-                "");
-        packets.record(Direction.SENT, "busradio-amica", new byte[] {2, 16}, "");
-        packets.record(Direction.RECEIVED, "busradio-amica", new byte[0], "checksum mismatch");
-        assertEquals(String.join("\n",
-                "SEQ | TIME                     | DIRECTION | ORIGIN                         | DECIMAL      | HEX         | NOTE",
-                "1   | 2026-11-22T11:10:00.123Z | RECEIVED  | busradio-amica 127.0.0.1:47001 | 170 1 18 255 | AA 01 12 FF | -",
-                "2   | 2026-11-22T11:10:00.123Z | SENT      | busradio-amica                 | 2 16         | 02 10       | -",
-                "3   | 2026-11-22T11:10:00.123Z | RECEIVED  | busradio-amica                 | -            | -           | checksum mismatch"),
-                shell.packets());
-        assertEquals(2, shell.packets(1).lines().count());
-    }
-
-    @Test
-    void emptyLogsAndInventorySayso() {
-        ShellCommands empty = new ShellCommands(new Operations(new DeviceDirectory(), id -> "", 5), events, packets);
-        assertEquals("(no events)", empty.log());
-        assertEquals("(no packets)", empty.packets());
+    void emptyInventorySaysSo() {
+        ShellCommands empty = new ShellCommands(new Operations(new DeviceDirectory(), id -> "", 5));
         assertEquals("(no drivers)", empty.drivers());
         assertEquals("(no devices)", empty.devices());
     }
 
     @Test
     void errorsAreOneLineMessages() {
-        assertEquals("the number of lines must be at least 1, not 0",
-                assertThrows(IllegalArgumentException.class, () -> shell.log(0)).getMessage());
         assertEquals("no device matches 'nope-nope'",
                 assertThrows(IllegalArgumentException.class, () -> shell.set("nope-nope", "k", "v")).getMessage());
         String message = assertThrows(IllegalArgumentException.class, () -> shell.remove("xyz")).getMessage();
@@ -164,7 +119,7 @@ class ShellCommandsTest {
                 return List.of();
             }
         };
-        ShellCommands s = new ShellCommands(new Operations(broken, id -> "", 5), events, packets);
+        ShellCommands s = new ShellCommands(new Operations(broken, id -> "", 5));
         assertEquals("drivers failed: UnsupportedOperationException: inventory closed",
                 assertThrows(IllegalStateException.class, s::drivers).getMessage());
     }

@@ -1,0 +1,55 @@
+package org.tinysep.runtime.internal;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import org.osgi.framework.BundleContext;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Reads the log-history settings of {@link RuntimeConfig}, rejecting bad values with a WARN and their default.
+ * The folder is the configured {@code logDirectory}, else {@code ${tinysep.var}/log}, else
+ * {@code ${tinysep.home}/var/log}, else the bundle's data area {@code log}.
+ */
+final class LogConfig {
+
+    private static final Logger LOG = LoggerFactory.getLogger(LogConfig.class);
+
+    private LogConfig() {
+    }
+
+    /** @return the settings, or null when persistence is switched off or no folder can be found */
+    static LogSettings read(RuntimeConfig config, BundleContext context) {
+        if (!config.logPersistence()) {
+            return null;
+        }
+        Path folder = folder(config.logDirectory(), context);
+        if (folder == null) {
+            LOG.warn("No folder for the log history (no tinysep.var, tinysep.home or bundle data area); "
+                    + "the logs work in memory only");
+            return null;
+        }
+        long kb = Capacity.read("logMaxFileSizeKb", config::logMaxFileSizeKb, 1, 1_048_576, 8192);
+        int files = Capacity.read("logMaxFiles", config::logMaxFiles, 2, 10_000, LogSettings.DEFAULT_MAX_FILES);
+        int days = Capacity.read("logRetentionDays", config::logRetentionDays, 0, 36_500, 30);
+        int sync = Capacity.read("logSyncMillis", config::logSyncMillis, 10, 3_600_000, 2000);
+        return new LogSettings(folder, Math.max(1024, kb * 1024), files, Duration.ofDays(days),
+                Duration.ofMillis(sync));
+    }
+
+    static Path folder(String configured, BundleContext context) {
+        if (configured != null && !configured.isBlank()) {
+            return Path.of(configured.strip()).toAbsolutePath();
+        }
+        String var = context == null ? null : context.getProperty("tinysep.var");
+        if (var != null && !var.isBlank()) {
+            return Path.of(var.strip(), "log").toAbsolutePath();
+        }
+        String home = context == null ? null : context.getProperty("tinysep.home");
+        if (home != null && !home.isBlank()) {
+            return Path.of(home.strip(), "var", "log").toAbsolutePath();
+        }
+        java.io.File data = context == null ? null : context.getDataFile("log");
+        return data == null ? null : data.toPath().toAbsolutePath();
+    }
+}
