@@ -64,10 +64,11 @@ public final class Launcher {
         int level = BundleLayout.maxStartLevel(groups);
         Files.createDirectories(home.resolve("deploy"));
         Files.createDirectories(home.resolve("etc"));
-        LOG.info("Starting TinySEP from {} ({} bundle groups, {})", home, groups.size(),
+        Files.createDirectories(options.var());
+        LOG.info("Starting TinySEP from {}, state in {} ({} bundle groups, {})", home, options.var(), groups.size(),
                 options.daemon() ? "daemon" : "interactive");
 
-        Map<String, Object> config = new HashMap<>(FrameworkConfig.properties(home, options.daemon(), level));
+        Map<String, Object> config = new HashMap<>(FrameworkConfig.properties(home, options.var(), options.daemon(), level));
         config.put(FrameworkConfig.FELIX_LOGGER, new FelixLog()); // Felix takes a Logger instance here
         @SuppressWarnings({"unchecked", "rawtypes"})
         Map<String, String> launchProperties = (Map) config;
