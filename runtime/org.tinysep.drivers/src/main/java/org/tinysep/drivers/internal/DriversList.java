@@ -1,0 +1,224 @@
+package org.tinysep.drivers.internal;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.BundleEvent;
+import org.osgi.framework.BundleListener;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.metatype.annotations.Designate;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.device.support.StateFolder;
+
+/**
+ * The drivers list component (thesis 3.4): loads {@code drivers.xml} (seeding it from the applications folder on
+ * first start), installs and starts its enabled entries, keeps every entry's STATUS up to date in the file, follows
+ * shell installs and uninstalls, and reconciles on request. All list changes hold this object's lock.
+ */
+@Component(service = DriversList.class, immediate = true, configurationPid = DriversList.PID)
+@Designate(ocd = DriversConfig.class)
+public final class DriversList implements BundleListener {
+
+    static final String PID = "org.tinysep.drivers";
+    private static final Logger LOG = LoggerFactory.getLogger(DriversList.class);
+
+    private final BundleContext context;
+    private final DriversConfig config;
+    private final Locations locations;
+    private final DriversFile file;
+    private final OsgiBundles bundles;
+    private final Reconciler reconciler;
+    private final Path deployFolder;
+    private final ScheduledExecutorService saver = Executors.newSingleThreadScheduledExecutor(
+            r -> new Thread(r, "tinysep-drivers-save"));
+    private final AtomicBoolean savePending = new AtomicBoolean();
+    private List<DriverEntry> entries = List.of();
+
+    @Activate
+    public DriversList(BundleContext context, DriversConfig config) {
+        this.context = context;
+        this.config = config;
+        String home = context.getProperty(StateFolder.HOME);
+        Path homePath = home == null || home.isBlank() ? null : Path.of(home.strip());
+        this.locations = new Locations(homePath);
+        this.file = new DriversFile(StateFolder.resolve(config.file(), context, "drivers.xml")
+                .orElseGet(() -> context.getDataFile("drivers.xml").toPath()), new DriversCodec());
+        this.bundles = new OsgiBundles(context);
+        this.reconciler = new Reconciler(bundles, locations, config.startLevel());
+        this.deployFolder = folder(config.deployFolder(), homePath, "deploy");
+        context.addFrameworkListener(bundles);
+        synchronized (this) {
+            List<DriverEntry> initial = initialList(folder(config.seedFolder(), homePath, "bundles/5-apps"));
+            Reconciler.Result r = reconciler.apply(initial);
+            entries = r.entries();
+            LOG.info("Drivers list {}: {} entries; {}", file.path(), entries.size(),
+                    r.changes().isEmpty() ? "nothing to do" : String.join(", ", r.changes()));
+            save();
+        }
+        context.addBundleListener(this);
+    }
+
+    @Deactivate
+    void deactivate() {
+        context.removeBundleListener(this);
+        context.removeFrameworkListener(bundles);
+        saver.shutdownNow();
+    }
+
+    private List<DriverEntry> initialList(Path seedFolder) {
+        if (file.exists()) {
+            try {
+                return file.read(Instant.now());
+            } catch (MalformedDriversException e) {
+                LOG.error("Drivers list unusable: {}; starting from the applications folder {}", e.getMessage(),
+                        seedFolder);
+            } catch (IOException e) {
+                LOG.error("Cannot read the drivers list {}: {}; starting from the applications folder {}",
+                        file.path(), e.getMessage(), seedFolder);
+            }
+        }
+        try {
+            List<DriverEntry> seeded = Seed.fromFolder(seedFolder, locations);
+            LOG.info("Drivers list {} created from {} ({} applications)", file.path(), seedFolder, seeded.size());
+            return seeded;
+        } catch (IOException e) {
+            LOG.error("Cannot list {}: {}; the drivers list starts empty", seedFolder, e.getMessage());
+            return List.of();
+        }
+    }
+
+    /** @return the entries with their live status */
+    synchronized List<DriverEntry> entries() {
+        return entries.stream().map(e -> e.withStatus(reconciler.status(e))).toList();
+    }
+
+    /** @return the list file */
+    Path path() {
+        return file.path();
+    }
+
+    /**
+     * Re-reads the file and reconciles. A malformed file is moved aside and the previous list stays in force (and
+     * is written back).
+     *
+     * @return one line per change, or why nothing changed
+     */
+    synchronized List<String> reload() {
+        List<DriverEntry> wanted;
+        try {
+            wanted = file.exists() ? file.read(Instant.now()) : entries;
+        } catch (MalformedDriversException | IOException e) {
+            String problem = e.getMessage();
+            LOG.error("Drivers list not reloaded: {}; keeping the previous list ({} entries)", problem, entries.size());
+            save();
+            throw new IllegalStateException(problem + "; kept the previous list (" + entries.size() + " entries)");
+        }
+        Reconciler.Result r = reconciler.apply(wanted);
+        entries = r.entries();
+        save();
+        r.changes().forEach(c -> LOG.info("Drivers list reload: {}", c));
+        return r.changes();
+    }
+
+    /** Sets {@code ENABLED} of the entry named {@code bsn} and applies it at once. @return the changes */
+    synchronized List<String> setEnabled(String bsn, boolean enabled) {
+        List<DriverEntry> wanted = new ArrayList<>();
+        boolean found = false;
+        for (DriverEntry e : entries) {
+            boolean match = e.symbolicName().equals(bsn) || e.location().equals(bsn);
+            found |= match;
+            wanted.add(match ? e.withEnabled(enabled) : e);
+        }
+        if (!found) {
+            throw new IllegalArgumentException("no entry " + bsn + " in the drivers list (see tinysep:drivers)");
+        }
+        Reconciler.Result r = reconciler.apply(wanted);
+        entries = r.entries();
+        save();
+        return r.changes().isEmpty() ? List.of(bsn + " is already " + (enabled ? "enabled" : "disabled"))
+                : r.changes();
+    }
+
+    @Override
+    public void bundleChanged(BundleEvent event) {
+        if (context.getBundle(0).getState() == Bundle.STOPPING) {
+            return; // shutting down: the list keeps what was running
+        }
+        Bundle b = event.getBundle();
+        switch (event.getType()) {
+            case BundleEvent.INSTALLED -> shellInstalled(b);
+            case BundleEvent.UNINSTALLED -> shellUninstalled(b);
+            default -> {
+            }
+        }
+        if (reconciler.manages(b.getBundleId()) || event.getType() == BundleEvent.UNINSTALLED) {
+            scheduleSave();
+        }
+    }
+
+    private synchronized void shellInstalled(Bundle b) {
+        String location = b.getLocation();
+        if (!config.trackShellInstalls() || reconciler.manages(b.getBundleId()) || !location.startsWith("file:")
+                || locations.isUnder(location, deployFolder) || b.getSymbolicName() == null
+                || entries.stream().anyMatch(e -> e.symbolicName().equals(b.getSymbolicName()))) {
+            return;
+        }
+        DriverEntry added = new DriverEntry(locations.filePath(location), b.getSymbolicName(), true, "");
+        List<DriverEntry> next = new ArrayList<>(entries);
+        next.add(added);
+        entries = List.copyOf(next);
+        reconciler.adopt(added.key(), b.getBundleId());
+        LOG.info("Drivers list: added {} ({}), installed from outside the deploy folder", added.key(), location);
+    }
+
+    private synchronized void shellUninstalled(Bundle b) {
+        Optional<String> key = reconciler.uninstalled(b.getBundleId());
+        if (key.isPresent()) {
+            entries = entries.stream().filter(e -> !e.key().equals(key.get())).toList();
+            LOG.info("Drivers list: removed {}, uninstalled from the shell", key.get());
+        }
+    }
+
+    private void scheduleSave() {
+        if (savePending.compareAndSet(false, true)) {
+            try {
+                saver.schedule(() -> {
+                    savePending.set(false);
+                    synchronized (this) {
+                        save();
+                    }
+                }, 100, TimeUnit.MILLISECONDS);
+            } catch (RuntimeException e) {
+                savePending.set(false); // shut down
+            }
+        }
+    }
+
+    /** Writes the list with live statuses; a failure is logged, the list in memory stays. */
+    private void save() {
+        try {
+            file.save(entries());
+        } catch (IOException | RuntimeException e) {
+            LOG.error("Cannot write the drivers list {}: {}", file.path(), e.getMessage());
+        }
+    }
+
+    private static Path folder(String configured, Path home, String relative) {
+        if (configured != null && !configured.isBlank()) {
+            return Path.of(configured.strip()).toAbsolutePath();
+        }
+        return home == null ? null : home.resolve(relative);
+    }
+}

@@ -1,0 +1,49 @@
+package org.tinysep.drivers.internal;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.jar.JarFile;
+import java.util.jar.Manifest;
+import java.util.stream.Stream;
+
+/** The first drivers list: one enabled entry per bundle jar of the distribution's applications folder. */
+final class Seed {
+
+    private Seed() {
+    }
+
+    /**
+     * @param appsDir   {@code ${tinysep.home}/bundles/5-apps}; a missing folder gives an empty list
+     * @param locations turns each jar into its {@code FILE_PATH} (relative to home)
+     * @return the entries in file-name order (the launcher's old install order)
+     */
+    static List<DriverEntry> fromFolder(Path appsDir, Locations locations) throws IOException {
+        List<DriverEntry> entries = new ArrayList<>();
+        if (appsDir == null || !Files.isDirectory(appsDir)) {
+            return entries;
+        }
+        try (Stream<Path> files = Files.list(appsDir)) {
+            for (Path jar : files.filter(f -> f.getFileName().toString().endsWith(".jar")).sorted().toList()) {
+                String bsn = symbolicName(jar);
+                if (bsn != null) {
+                    entries.add(new DriverEntry(locations.filePath(jar.toUri().toString()), bsn, true, ""));
+                }
+            }
+        }
+        return entries;
+    }
+
+    /** @return the jar's Bundle-SymbolicName without directives, or null when it is no bundle */
+    static String symbolicName(Path jar) {
+        try (JarFile f = new JarFile(jar.toFile())) {
+            Manifest m = f.getManifest();
+            String bsn = m == null ? null : m.getMainAttributes().getValue("Bundle-SymbolicName");
+            return bsn == null ? null : bsn.split(";")[0].strip();
+        } catch (IOException e) {
+            return null;
+        }
+    }
+}
