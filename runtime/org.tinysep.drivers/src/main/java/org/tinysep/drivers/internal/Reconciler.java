@@ -46,14 +46,20 @@ final class Reconciler {
                 changes.add(uninstall(m.getKey(), m.getValue()));
             }
         }
-        List<DriverEntry> result = new ArrayList<>();
+        // install everything first, then start: a bundle started before its library is installed would not resolve
+        List<DriverEntry> installed = new ArrayList<>();
         for (DriverEntry e : wanted) {
-            result.add(applyOne(e, changes));
+            installed.add(install(e, changes));
+        }
+        List<DriverEntry> result = new ArrayList<>();
+        for (DriverEntry e : installed) {
+            result.add(start(e, changes));
         }
         return new Result(result, changes);
     }
 
-    private DriverEntry applyOne(DriverEntry e, List<String> changes) {
+    /** Stops a disabled entry, installs a missing enabled one; the entry's status is final unless it is empty. */
+    private DriverEntry install(DriverEntry e, List<String> changes) {
         long id = idOf(e);
         if (!e.enabled()) {
             if (id >= 0 && bundles.isRunning(id)) {
@@ -66,21 +72,31 @@ final class Reconciler {
             }
             return e.withStatus(Status.DISABLED);
         }
-        if (id < 0) {
-            Optional<Path> file = locations.file(e.location());
-            if (file.isPresent() && !Files.isRegularFile(file.get())) {
-                changes.add("missing " + e.key() + ": no file " + file.get());
-                return e.withStatus(Status.missing(file.get().toString()));
-            }
-            try {
-                id = bundles.install(locations.url(e.location()), startLevel);
-            } catch (Exception ex) {
-                changes.add("cannot install " + e.key() + ": " + ex.getMessage());
-                return e.withStatus(Status.failed(ex.getMessage()));
-            }
-            e = e.withSymbolicName(bundles.symbolicName(id));
-            managed.put(e.key(), id);
-            changes.add("installed " + e.key());
+        if (id >= 0) {
+            return e.withStatus("");
+        }
+        Optional<Path> file = locations.file(e.location());
+        if (file.isPresent() && !Files.isRegularFile(file.get())) {
+            changes.add("missing " + e.key() + ": no file " + file.get());
+            return e.withStatus(Status.missing(file.get().toString()));
+        }
+        try {
+            id = bundles.install(locations.url(e.location()), startLevel);
+        } catch (Exception ex) {
+            changes.add("cannot install " + e.key() + ": " + ex.getMessage());
+            return e.withStatus(Status.failed(ex.getMessage()));
+        }
+        DriverEntry named = e.withSymbolicName(bundles.symbolicName(id)).withStatus("");
+        managed.put(named.key(), id);
+        changes.add("installed " + named.key());
+        return named;
+    }
+
+    /** Starts an installed enabled entry that is not running; running bundles are left untouched. */
+    private DriverEntry start(DriverEntry e, List<String> changes) {
+        Long id = managed.get(e.key());
+        if (!e.status().isEmpty() || id == null) {
+            return e;
         }
         if (!bundles.isRunning(id)) {
             try {
