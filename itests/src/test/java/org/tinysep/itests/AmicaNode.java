@@ -20,7 +20,7 @@ import org.tinysep.amica.protocol.ReedSwitchStatus;
  * A simulated AmICA node for integration tests: sends real frames from its own UDP socket on 127.0.0.1 to the
  * platform's bus radio, and can read what the platform sends back.
  */
-final class AmicaNode implements AutoCloseable {
+public final class AmicaNode implements AutoCloseable {
 
     private final int netgroup;
     private final int address;
@@ -29,7 +29,7 @@ final class AmicaNode implements AutoCloseable {
     private final InetSocketAddress radio;
     private int sequence;
 
-    AmicaNode(int netgroup, int address, int radioPort, AmicaNodeType... types) throws IOException {
+    public AmicaNode(int netgroup, int address, int radioPort, AmicaNodeType... types) throws IOException {
         this.netgroup = netgroup;
         this.address = address;
         this.types = List.of(types);
@@ -38,33 +38,33 @@ final class AmicaNode implements AutoCloseable {
         this.radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), radioPort);
     }
 
-    String id() {
+    public String id() {
         return netgroup + "." + address;
     }
 
-    void keepAlive() throws IOException {
+    public void keepAlive() throws IOException {
         send(new KeepAlive(120, 2900, 0x0A11, AmicaNodeType.productId(types), 4242));
     }
 
-    void motion(boolean detected) throws IOException {
+    public void motion(boolean detected) throws IOException {
         send(new MotionDetection(detected));
     }
 
-    void door(boolean open) throws IOException {
+    public void door(boolean open) throws IOException {
         send(new ReedSwitchStatus(open));
     }
 
-    void send(AmicaPayload payload) throws IOException {
+    public void send(AmicaPayload payload) throws IOException {
         raw(AmicaCodec.encode(new AmicaFrame(netgroup, address, 0, sequence++ & 0xFF, AmicaPayloads.encode(payload))));
     }
 
     /** Sends any bytes as one datagram, e.g. garbage. */
-    void raw(byte[] datagram) throws IOException {
+    public void raw(byte[] datagram) throws IOException {
         socket.send(new DatagramPacket(datagram, datagram.length, radio));
     }
 
     /** @return the payload of the next frame the platform sends to this node (5 s timeout) */
-    byte[] receivePayload() throws Exception {
+    public byte[] receivePayload() throws Exception {
         DatagramPacket p = new DatagramPacket(new byte[512], 512);
         socket.receive(p);
         return AmicaCodec.decode(Arrays.copyOf(p.getData(), p.getLength()), 0, p.getLength()).payload();
