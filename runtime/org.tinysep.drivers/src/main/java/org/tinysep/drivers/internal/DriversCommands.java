@@ -1,11 +1,11 @@
 package org.tinysep.drivers.internal;
 
 import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
-import java.util.TreeMap;
-import java.util.TreeSet;
+import java.util.Set;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
@@ -15,11 +15,12 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
+import org.tinysep.api.device.Parameter;
 
 /**
  * {@code tinysep:drivers [reload | enable <bsn> | disable <bsn>]}. Ranked above the device manager's older
- * {@code tinysep:drivers} (a plain list of Driver services), whose content it includes: each entry shows the Driver
- * services its bundle registers, and bundles with drivers that are not in the list follow at the end.
+ * {@code tinysep:drivers} (a table of Driver services), whose content it includes below the list: every driver with
+ * its application, device count and figures.
  */
 @Component(service = DriversCommands.class, property = {
     "osgi.command.scope=tinysep",
@@ -37,22 +38,35 @@ public final class DriversCommands {
         this.list = list;
     }
 
-    /** {@code drivers}: the list with each entry's status and drivers. */
+    /**
+     * {@code drivers}: the list (each application with its status), then every Driver service with its application,
+     * device count and figures (what the device manager's own {@code drivers} listing showed).
+     */
     public String drivers() {
-        Map<String, TreeSet<String>> drivers = driversByBundle();
-        List<String[]> rows = new ArrayList<>();
-        rows.add(new String[] {"application", "enabled", "status", "drivers", "file"});
-        for (DriverEntry e : list.entries()) {
-            TreeSet<String> names = drivers.remove(e.symbolicName());
-            rows.add(new String[] {e.key(), e.enabled() ? "yes" : "no", e.status(),
-                names == null ? "-" : String.join(", ", names), e.location()});
+        List<DriverEntry> entries = list.entries();
+        TextTable apps = new TextTable("APPLICATION", "ENABLED", "STATUS", "FILE");
+        entries.forEach(e -> apps.row(e.key(), e.enabled() ? "yes" : "no", e.status(), e.location()));
+        Set<String> listed = new HashSet<>();
+        entries.forEach(e -> listed.add(e.symbolicName()));
+        TextTable drivers = new TextTable("DRIVER", "APPLICATION", "DEVICES", "PARAMETERS");
+        for (ServiceReference<Driver> ref : driverReferences()) {
+            Driver d = context.getService(ref);
+            Bundle b = ref.getBundle();
+            if (d == null || b == null) {
+                continue;
+            }
+            try {
+                String bsn = String.valueOf(b.getSymbolicName());
+                drivers.row(d.name(), listed.contains(bsn) ? bsn : bsn + " (not in the list)",
+                        Integer.toString(d.devices().size()), parameters(d));
+            } catch (RuntimeException e) {
+                drivers.row(String.valueOf(ref.getProperty(DeviceProperties.DRIVER_NAME)), "-", "?", "error: " + e);
+            } finally {
+                context.ungetService(ref);
+            }
         }
-        StringBuilder out = new StringBuilder("Drivers list " + list.path() + "\n").append(table(rows));
-        if (!drivers.isEmpty()) {
-            out.append("\nNot in the list (hot-deployed or platform bundles):");
-            drivers.forEach((bsn, names) -> out.append("\n  ").append(bsn).append(": ").append(String.join(", ", names)));
-        }
-        return out.toString();
+        return "Drivers list " + list.path() + " (" + entries.size() + " applications)\n" + apps.render()
+                + "\n\n" + drivers.render();
     }
 
     /** {@code drivers reload} (or {@code list}). */
@@ -80,39 +94,18 @@ public final class DriversCommands {
         return String.join("\n", list.setEnabled(bsn, enable));
     }
 
-    /** @return bundle symbolic name → names of the Driver services it registers */
-    private Map<String, TreeSet<String>> driversByBundle() {
-        Map<String, TreeSet<String>> byBundle = new TreeMap<>();
+    private List<ServiceReference<Driver>> driverReferences() {
         try {
-            ServiceReference<?>[] refs = context.getAllServiceReferences(Driver.class.getName(), null);
-            for (ServiceReference<?> ref : refs == null ? new ServiceReference<?>[0] : refs) {
-                Bundle b = ref.getBundle();
-                if (b != null) {
-                    byBundle.computeIfAbsent(String.valueOf(b.getSymbolicName()), k -> new TreeSet<>())
-                            .add(String.valueOf(ref.getProperty(DeviceProperties.DRIVER_NAME)));
-                }
-            }
+            List<ServiceReference<Driver>> refs = new ArrayList<>(context.getServiceReferences(Driver.class, null));
+            refs.sort(Comparator.comparing(r -> String.valueOf(r.getProperty(DeviceProperties.DRIVER_NAME))));
+            return refs;
         } catch (InvalidSyntaxException e) {
             throw new IllegalStateException(e);
         }
-        return byBundle;
     }
 
-    private static String table(List<String[]> rows) {
-        int[] w = new int[rows.get(0).length];
-        rows.forEach(r -> {
-            for (int i = 0; i < r.length; i++) {
-                w[i] = Math.max(w[i], r[i].length());
-            }
-        });
-        StringBuilder sb = new StringBuilder();
-        for (String[] r : rows) {
-            StringBuilder line = new StringBuilder();
-            for (int i = 0; i < r.length; i++) {
-                line.append(i == r.length - 1 ? r[i] : String.format("%-" + w[i] + "s | ", r[i]));
-            }
-            sb.append(sb.length() == 0 ? "" : "\n").append(line.toString().stripTrailing());
-        }
-        return sb.toString();
+    private static String parameters(Driver d) {
+        List<Parameter> ps = d.parameters();
+        return ps.isEmpty() ? "-" : String.join(", ", ps.stream().map(p -> p.key() + "=" + p.value()).toList());
     }
 }
