@@ -65,10 +65,7 @@ class DriversListIT {
         dist = new TestDistribution(tmp.resolve("home"), tmp.resolve("state"));
         StartReport report = dist.start();
         assertEquals(report.installed(), report.activeCount(), () -> String.join("\n", report.lines()));
-        int apps;
-        try (Stream<Path> jars = Files.list(tmp.resolve("home/bundles/5-apps"))) {
-            apps = (int) jars.count();
-        }
+        int apps = appCount();
         assertEquals(apps, report.active().get("5-apps"), "the banner reports the applications the list started");
         assertTrue(Files.isDirectory(tmp.resolve("state/felix-cache")));
         assertFalse(Files.exists(tmp.resolve("home/var")), "nothing written into the distribution folder");
@@ -144,6 +141,23 @@ class DriversListIT {
         }
         assertEquals("ACTIVE", fileStatus(WINDOW), "the previous list is written back");
         assertTrue(dist.hasDriver("AmicaWindow"), "nothing was stopped");
+
+        // broken while the platform is down: moved aside at start-up, the list seeded again, every application up
+        dist.stop();
+        Files.writeString(list(), "not xml at all");
+        StartReport report = dist.start();
+        assertTrue(report.failures().isEmpty(), () -> String.join("\n", report.lines()));
+        assertEquals(appCount(), report.active().get("5-apps"), () -> String.join("\n", report.lines()));
+        try (Stream<Path> files = Files.list(tmp.resolve("state"))) {
+            assertEquals(2, files.filter(f -> f.getFileName().toString().startsWith("drivers.xml.broken-")).count());
+        }
+        await(WAIT, () -> "ACTIVE".equals(fileStatus(WINDOW)), "a fresh list on disk");
+    }
+
+    private int appCount() throws java.io.IOException {
+        try (Stream<Path> jars = Files.list(tmp.resolve("home/bundles/5-apps"))) {
+            return (int) jars.count();
+        }
     }
 
     private void restart() throws Exception {

@@ -6,10 +6,6 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.BundleEvent;
@@ -41,9 +37,7 @@ public final class DriversList implements BundleListener {
     private final OsgiBundles bundles;
     private final Reconciler reconciler;
     private final Path deployFolder;
-    private final ScheduledExecutorService saver = Executors.newSingleThreadScheduledExecutor(
-            r -> new Thread(r, "tinysep-drivers-save"));
-    private final AtomicBoolean savePending = new AtomicBoolean();
+    private final CoalescingSaver saver = new CoalescingSaver(this::saveNow, 100);
     private List<DriverEntry> entries = List.of();
 
     @Activate
@@ -60,7 +54,8 @@ public final class DriversList implements BundleListener {
         this.deployFolder = folder(config.deployFolder(), homePath, "deploy");
         context.addFrameworkListener(bundles);
         synchronized (this) {
-            List<DriverEntry> initial = initialList(folder(config.seedFolder(), homePath, "bundles/5-apps"));
+            List<DriverEntry> initial = Seed.startList(file, folder(config.seedFolder(), homePath, "bundles/5-apps"),
+                    locations);
             Reconciler.Result r = reconciler.apply(initial);
             entries = r.entries();
             LOG.info("Drivers list {}: {} entries; {}", file.path(), entries.size(),
@@ -74,29 +69,7 @@ public final class DriversList implements BundleListener {
     void deactivate() {
         context.removeBundleListener(this);
         context.removeFrameworkListener(bundles);
-        saver.shutdownNow();
-    }
-
-    private List<DriverEntry> initialList(Path seedFolder) {
-        if (file.exists()) {
-            try {
-                return file.read(Instant.now());
-            } catch (MalformedDriversException e) {
-                LOG.error("Drivers list unusable: {}; starting from the applications folder {}", e.getMessage(),
-                        seedFolder);
-            } catch (IOException e) {
-                LOG.error("Cannot read the drivers list {}: {}; starting from the applications folder {}",
-                        file.path(), e.getMessage(), seedFolder);
-            }
-        }
-        try {
-            List<DriverEntry> seeded = Seed.fromFolder(seedFolder, locations);
-            LOG.info("Drivers list {} created from {} ({} applications)", file.path(), seedFolder, seeded.size());
-            return seeded;
-        } catch (IOException e) {
-            LOG.error("Cannot list {}: {}; the drivers list starts empty", seedFolder, e.getMessage());
-            return List.of();
-        }
+        saver.close();
     }
 
     /** @return the entries with their live status */
@@ -164,7 +137,7 @@ public final class DriversList implements BundleListener {
             }
         }
         if (reconciler.manages(b.getBundleId()) || event.getType() == BundleEvent.UNINSTALLED) {
-            scheduleSave();
+            saver.request();
         }
     }
 
@@ -191,19 +164,8 @@ public final class DriversList implements BundleListener {
         }
     }
 
-    private void scheduleSave() {
-        if (savePending.compareAndSet(false, true)) {
-            try {
-                saver.schedule(() -> {
-                    savePending.set(false);
-                    synchronized (this) {
-                        save();
-                    }
-                }, 100, TimeUnit.MILLISECONDS);
-            } catch (RuntimeException e) {
-                savePending.set(false); // shut down
-            }
-        }
+    private synchronized void saveNow() {
+        save();
     }
 
     /** Writes the list with live statuses; a failure is logged, the list in memory stays. */

@@ -3,16 +3,44 @@ package org.tinysep.drivers.internal;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.jar.JarFile;
 import java.util.jar.Manifest;
 import java.util.stream.Stream;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
-/** The first drivers list: one enabled entry per bundle jar of the distribution's applications folder. */
+/**
+ * The list at start-up: the file, else (missing or unusable) one enabled entry per bundle jar of the distribution's
+ * applications folder.
+ */
 final class Seed {
 
+    private static final Logger LOG = LoggerFactory.getLogger(Seed.class);
+
     private Seed() {
+    }
+
+    /** @return the entries of {@code file}, or when it is missing or broken (moved aside), the seeded list */
+    static List<DriverEntry> startList(DriversFile file, Path seedFolder, Locations locations) {
+        if (file.exists()) {
+            try {
+                return file.read(Instant.now());
+            } catch (MalformedDriversException | IOException e) {
+                LOG.error("Drivers list {} unusable: {}; starting from the applications folder {}", file.path(),
+                        e.getMessage(), seedFolder);
+            }
+        }
+        try {
+            List<DriverEntry> seeded = fromFolder(seedFolder, locations);
+            LOG.info("Drivers list {} created from {} ({} applications)", file.path(), seedFolder, seeded.size());
+            return seeded;
+        } catch (IOException e) {
+            LOG.error("Cannot list {}: {}; the drivers list starts empty", seedFolder, e.getMessage());
+            return List.of();
+        }
     }
 
     /**
