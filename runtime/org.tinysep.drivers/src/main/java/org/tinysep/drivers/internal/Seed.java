@@ -23,11 +23,14 @@ final class Seed {
     private Seed() {
     }
 
-    /** @return the entries of {@code file}, or when it is missing or broken (moved aside), the seeded list */
+    /**
+     * @return the entries of {@code file} (re-pointed to a new build's jars, {@link #repoint}), or when it is missing
+     *         or broken (moved aside), the seeded list
+     */
     static List<DriverEntry> startList(DriversFile file, Path seedFolder, Locations locations) {
         if (file.exists()) {
             try {
-                return file.read(Instant.now());
+                return repoint(file.read(Instant.now()), seedFolder, locations);
             } catch (MalformedDriversException | IOException e) {
                 LOG.error("Drivers list {} unusable: {}; starting from the applications folder {}", file.path(),
                         e.getMessage(), seedFolder);
@@ -62,6 +65,37 @@ final class Seed {
             }
         }
         return entries;
+    }
+
+    /**
+     * Follows a new build of the distribution: an entry whose file is missing gets the jar of the same symbolic name
+     * in {@code appsDir}, if there is one (e.g. {@code x-0.1.0.jar} became {@code x-0.2.0.jar}).
+     *
+     * @return the entries, re-pointed where needed
+     */
+    static List<DriverEntry> repoint(List<DriverEntry> entries, Path appsDir, Locations locations) {
+        if (appsDir == null || !Files.isDirectory(appsDir)) {
+            return entries;
+        }
+        List<DriverEntry> current;
+        try {
+            current = fromFolder(appsDir, locations);
+        } catch (IOException e) {
+            return entries;
+        }
+        List<DriverEntry> out = new ArrayList<>();
+        for (DriverEntry e : entries) {
+            boolean missing = locations.file(e.location()).map(f -> !Files.isRegularFile(f)).orElse(false);
+            DriverEntry now = !missing || e.symbolicName().isEmpty() ? null : current.stream()
+                    .filter(c -> c.symbolicName().equals(e.symbolicName())).findFirst().orElse(null);
+            if (now != null) {
+                LOG.info("Drivers list: {} moved from {} to {}", e.key(), e.location(), now.location());
+                out.add(new DriverEntry(now.location(), e.symbolicName(), e.enabled(), e.status()));
+            } else {
+                out.add(e);
+            }
+        }
+        return out;
     }
 
     /** @return the jar's Bundle-SymbolicName without directives, or null when it is no bundle */

@@ -53,6 +53,18 @@ class LocationsTest {
         assertTrue(Seed.fromFolder(dir.resolve("none"), new Locations(dir)).isEmpty());
     }
 
+    @Test
+    void entriesFollowANewBuildOfTheDistribution() throws Exception {
+        Path apps = Files.createDirectories(dir.resolve("bundles/5-apps"));
+        jar(apps.resolve("door-0.2.0.jar"), "org.door");
+        Locations l = new Locations(dir);
+        List<DriverEntry> old = List.of(new DriverEntry("bundles/5-apps/door-0.1.0.jar", "org.door", false, "DISABLED"),
+                new DriverEntry("bundles/5-apps/gone-0.1.0.jar", "org.gone", true, ""),
+                new DriverEntry("/elsewhere/mine.jar", "", true, ""));
+        assertEquals(List.of(new DriverEntry("bundles/5-apps/door-0.2.0.jar", "org.door", false, "DISABLED"),
+                old.get(1), old.get(2)), Seed.repoint(old, apps, l), "only a missing file with a successor moves");
+    }
+
     private static void jar(Path path, String bsn) throws Exception {
         Manifest m = new Manifest();
         m.getMainAttributes().put(Attributes.Name.MANIFEST_VERSION, "1.0");
