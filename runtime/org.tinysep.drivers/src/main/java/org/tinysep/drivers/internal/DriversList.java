@@ -13,9 +13,11 @@ import org.osgi.framework.BundleListener;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.device.support.StateFolder;
 
 /**
@@ -35,15 +37,17 @@ public final class DriversList implements BundleListener {
     private final Locations locations;
     private final DriversFile file;
     private final OsgiBundles bundles;
+    private final Report report;
     private final Reconciler reconciler;
     private final Path deployFolder;
     private final CoalescingSaver saver = new CoalescingSaver(this::saveNow, 100);
     private List<DriverEntry> entries = List.of();
 
     @Activate
-    public DriversList(BundleContext context, DriversConfig config) {
+    public DriversList(BundleContext context, DriversConfig config, @Reference(name = "eventLog") EventLog events) {
         this.context = context;
         this.config = config;
+        this.report = new Report(events);
         String home = context.getProperty(StateFolder.HOME);
         Path homePath = home == null || home.isBlank() ? null : Path.of(home.strip());
         this.locations = new Locations(homePath);
@@ -55,11 +59,12 @@ public final class DriversList implements BundleListener {
         context.addFrameworkListener(bundles);
         synchronized (this) {
             List<DriverEntry> initial = Seed.startList(file, folder(config.seedFolder(), homePath, "bundles/5-apps"),
-                    locations);
+                    locations, report);
             Reconciler.Result r = reconciler.apply(initial);
             entries = r.entries();
             LOG.info("Drivers list {}: {} entries; {}", file.path(), entries.size(),
                     r.changes().isEmpty() ? "nothing to do" : String.join(", ", r.changes()));
+            r.changes().stream().filter(c -> c.startsWith("cannot ") || c.startsWith("missing ")).forEach(report::problem);
             save();
         }
         context.addBundleListener(this);
@@ -94,14 +99,14 @@ public final class DriversList implements BundleListener {
             wanted = file.exists() ? file.read(Instant.now()) : entries;
         } catch (MalformedDriversException | IOException e) {
             String problem = e.getMessage();
-            LOG.error("Drivers list not reloaded: {}; keeping the previous list ({} entries)", problem, entries.size());
+            report.problem("not reloaded: " + problem + "; keeping the previous list (" + entries.size() + " entries)");
             save();
             throw new IllegalStateException(problem + "; kept the previous list (" + entries.size() + " entries)");
         }
         Reconciler.Result r = reconciler.apply(wanted);
         entries = r.entries();
         save();
-        r.changes().forEach(c -> LOG.info("Drivers list reload: {}", c));
+        report.changes(r.changes());
         return r.changes();
     }
 
@@ -120,6 +125,7 @@ public final class DriversList implements BundleListener {
         Reconciler.Result r = reconciler.apply(wanted);
         entries = r.entries();
         save();
+        report.changes(r.changes());
         return r.changes().isEmpty() ? List.of(bsn + " is already " + (enabled ? "enabled" : "disabled"))
                 : r.changes();
     }
@@ -153,14 +159,14 @@ public final class DriversList implements BundleListener {
         next.add(added);
         entries = List.copyOf(next);
         reconciler.adopt(added.key(), b.getBundleId());
-        LOG.info("Drivers list: added {} ({}), installed from outside the deploy folder", added.key(), location);
+        report.change("added " + added.key() + " (" + location + "), installed from outside the deploy folder");
     }
 
     private synchronized void shellUninstalled(Bundle b) {
         Optional<String> key = reconciler.uninstalled(b.getBundleId());
         if (key.isPresent()) {
             entries = entries.stream().filter(e -> !e.key().equals(key.get())).toList();
-            LOG.info("Drivers list: removed {}, uninstalled from the shell", key.get());
+            report.change("removed " + key.get() + ", uninstalled from the shell");
         }
     }
 
@@ -173,7 +179,7 @@ public final class DriversList implements BundleListener {
         try {
             file.save(entries());
         } catch (IOException | RuntimeException e) {
-            LOG.error("Cannot write the drivers list {}: {}", file.path(), e.getMessage());
+            report.problem("cannot write " + file.path() + ": " + e.getMessage());
         }
     }
 

@@ -27,13 +27,13 @@ final class Seed {
      * @return the entries of {@code file} (re-pointed to a new build's jars, {@link #repoint}), or when it is missing
      *         or broken (moved aside), the seeded list
      */
-    static List<DriverEntry> startList(DriversFile file, Path seedFolder, Locations locations) {
+    static List<DriverEntry> startList(DriversFile file, Path seedFolder, Locations locations, Report report) {
         if (file.exists()) {
             try {
                 return repoint(file.read(Instant.now()), seedFolder, locations);
             } catch (MalformedDriversException | IOException e) {
-                LOG.error("Drivers list {} unusable: {}; starting from the applications folder {}", file.path(),
-                        e.getMessage(), seedFolder);
+                report.problem("unusable: " + e.getMessage() + "; starting from the applications folder "
+                        + seedFolder);
             }
         }
         try {
