@@ -5,6 +5,8 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicLong;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
@@ -38,10 +40,14 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         String describe(R route);
     }
 
+    private static final Logger LOG = LoggerFactory.getLogger(AmicaBusDevice.class);
+
     private final AmicaAddress address;
     private final Link<R> link;
     private final Listeners<BusRadioAmicaListener> listeners;
     private final AtomicLong packets = new AtomicLong();
+    /** Held payloads for replacement listeners; its monitor also orders live delivery against replays. */
+    private final Handover handover = new Handover(System::nanoTime);
     private volatile Set<String> nodeTypes;
     private volatile KeepAlive keepAlive;
     private volatile R route;
@@ -88,7 +94,10 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         }
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
-        listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
+        synchronized (handover) {
+            handover.record(bytes, at);
+            listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
+        }
     }
 
     /** Marks the device OFFLINE, e.g. because its link went down; the next packet brings it back ONLINE. */
@@ -101,9 +110,24 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         return uid();
     }
 
+    /**
+     * Connects a listener. One that replaces a listener which left in the last 10 s (its driver is being updated)
+     * first gets the payloads received since, in order ({@link Handover}); nothing is lost in the swap.
+     */
     @Override
     public Connection connect(BusRadioAmicaListener listener) {
-        return listeners.add(listener);
+        synchronized (handover) {
+            Connection connection = listeners.add(listener);
+            for (Handover.Held h : handover.claim()) {
+                try {
+                    listener.payloadReceived(this, h.payload().clone(), h.at());
+                } catch (RuntimeException e) {
+                    LOG.warn("Listener {} of {} failed on a replayed payload: {}", listener.getClass().getName(), uid(),
+                            e.toString());
+                }
+            }
+            return new HandoverConnection(connection, handover);
+        }
     }
 
     @Override
