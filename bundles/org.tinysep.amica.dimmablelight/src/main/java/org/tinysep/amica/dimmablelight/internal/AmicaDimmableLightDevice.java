@@ -96,6 +96,11 @@ final class AmicaDimmableLightDevice extends AbstractDevice implements DimmableL
     }
 
     @Override
+    protected boolean backedUp(String key) {
+        return false; // its writable parameter is a command to the node, not a setting (docs/backup.md)
+    }
+
+    @Override
     protected List<Parameter> moreParameters() {
         return List.of(
                 Parameter.writable("brightness", brightness.value().orElse(null),

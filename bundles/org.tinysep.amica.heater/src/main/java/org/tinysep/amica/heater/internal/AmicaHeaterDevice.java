@@ -96,6 +96,11 @@ final class AmicaHeaterDevice extends AbstractDevice implements HeaterProvider, 
     }
 
     @Override
+    protected boolean backedUp(String key) {
+        return false; // its writable parameter is a command to the node, not a setting (docs/backup.md)
+    }
+
+    @Override
     protected List<Parameter> moreParameters() {
         return List.of(
                 Parameter.writable("potency", potency.value().orElse(null),
