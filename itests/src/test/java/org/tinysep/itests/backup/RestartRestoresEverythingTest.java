@@ -1,0 +1,105 @@
+package org.tinysep.itests.backup;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.TreeMap;
+import java.util.function.Supplier;
+import org.junit.Rule;
+import org.junit.Test;
+import org.junit.rules.TemporaryFolder;
+import org.tinysep.simulator.cli.Run;
+
+/**
+ * DESIGN.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the
+ * real simulator over UDP in lock-step); the user places a device in another room, changes parameters and names
+ * one device; the framework stops (end of the shell's input: a clean stop) and starts again with the same home.
+ * Before any packet arrives (the simulator does not run again) {@code tinysep:devices} shows the same devices,
+ * rooms, settings, node data, last seen times and connections (live readings and the status excepted, see
+ * {@link DeviceListing}). Pax Exam cannot restart its own framework, so this test starts the distribution as a
+ * process, as a user does.
+ */
+public class RestartRestoresEverythingTest {
+
+    @Rule
+    public TemporaryFolder tmp = new TemporaryFolder();
+
+    @Test
+    public void restartBringsBackDevicesRoomsParametersAndConnectionsBeforeAnyPacket() throws Exception {
+        FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
+        TreeMap<String, List<String>> before;
+        try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+            await(p, () -> p.command("tinysep:drivers").toString(), s -> s.contains("TimeController")
+                    && s.contains("BusRadioAmicaUdp") && s.contains("BusRadioSunSpot"), "drivers up");
+            Run.simulate(flat.simulatorArgs("06:00", "06:50"));
+            TreeMap<String, List<String>> placed = stable(p);
+            String door = uidOf(placed, "AmicaDoor");
+            String movement = uidOf(placed, "AmicaMovement");
+            configure(p, "tinysep:set " + movement + " room Kitchen", "room=Kitchen");
+            configure(p, "tinysep:set " + door + " kind INNER", "kind=INNER");
+            configure(p, "tinysep:set " + door + " name \"Front door (tested)\"", "Front door (tested)");
+            before = stable(p);
+            System.out.println("before the restart:\n" + DeviceListing.render(before));
+            assertTrue(DeviceListing.render(before).contains("kind=INNER"));
+            assertTrue(before.size() > 40);
+            assertEquals("clean stop", 0, p.stop(Duration.ofSeconds(60)));
+        }
+        long backups;
+        try (var files = Files.walk(flat.home.resolve("var/backup"))) {
+            backups = files.filter(f -> f.toString().endsWith(".xml")).count();
+        }
+        System.out.println("backup files: " + backups + " in " + flat.home.resolve("var/backup"));
+        try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+            TreeMap<String, List<String>> after = stable(p);
+            System.out.println("after the restart:\n" + DeviceListing.render(after));
+            assertEquals(DeviceListing.render(before), DeviceListing.render(after));
+            String packets = String.join("\n", p.command("tinysep:packets 5"));
+            assertTrue("no packet arrived after the restart:\n" + packets, packets.contains("(no packets)"));
+            assertEquals(0, p.stop(Duration.ofSeconds(60)));
+        }
+    }
+
+    private static void configure(PlatformProcess p, String command, String expected) {
+        String out = String.join("\n", p.command(command));
+        assertTrue(command + " -> " + out, out.contains(expected));
+    }
+
+    private static String uidOf(TreeMap<String, List<String>> blocks, String type) {
+        return blocks.values().stream().filter(b -> b.get(0).split(" ")[1].equals(type))
+                .map(b -> b.get(0).split(" ")[0]).findFirst()
+                .orElseThrow(() -> new AssertionError("no " + type + " device in\n" + DeviceListing.render(blocks)));
+    }
+
+    /** Polls {@code tinysep:devices} until two listings 1 s apart are equal (at most 60 s). */
+    static TreeMap<String, List<String>> stable(PlatformProcess p) throws InterruptedException {
+        TreeMap<String, List<String>> last = null;
+        long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+        while (System.nanoTime() < deadline) {
+            TreeMap<String, List<String>> now = DeviceListing.of(p.command("tinysep:devices"));
+            if (now.equals(last) && !now.isEmpty()) {
+                return now;
+            }
+            last = now;
+            Thread.sleep(1000);
+        }
+        throw new AssertionError("tinysep:devices did not settle within 60 s:\n" + DeviceListing.render(last));
+    }
+
+    static void await(PlatformProcess p, Supplier<String> probe, java.util.function.Predicate<String> ok,
+            String what) throws InterruptedException {
+        long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+        String last = "";
+        while (System.nanoTime() < deadline) {
+            last = probe.get();
+            if (ok.test(last)) {
+                return;
+            }
+            Thread.sleep(200);
+        }
+        throw new AssertionError("timed out waiting for " + what + "; last: " + last);
+    }
+}
