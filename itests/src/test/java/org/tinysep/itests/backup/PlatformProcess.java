@@ -89,7 +89,8 @@ final class PlatformProcess implements AutoCloseable {
     static PlatformProcess start(Path home) throws IOException {
         Path log = home.resolve("platform-" + (++launches) + ".log");
         Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Dorg.slf4j.simpleLogger.defaultLogLevel=info", "-jar", "tinysep.jar")
+                "-XX:TieredStopAtLevel=1", "-Dorg.slf4j.simpleLogger.defaultLogLevel=info", "-jar",
+                "tinysep.jar")
                 .directory(home.toFile()).redirectError(ProcessBuilder.Redirect.appendTo(log.toFile())).start();
         PlatformProcess platform = new PlatformProcess(p);
         platform.command("echo ready", Duration.ofSeconds(60));
