@@ -32,12 +32,13 @@ public class RestartRestoresEverythingTest {
     public void restartBringsBackDevicesRoomsParametersAndConnectionsBeforeAnyPacket() throws Exception {
         FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
         TreeMap<String, List<String>> before;
+        String door;
         try (PlatformProcess p = PlatformProcess.start(flat.home)) {
             await(p, () -> p.command("tinysep:drivers").toString(), s -> s.contains("TimeController")
                     && s.contains("BusRadioAmicaUdp") && s.contains("BusRadioSunSpot"), "drivers up");
             Run.simulate(flat.simulatorArgs("06:00", "06:50"));
             TreeMap<String, List<String>> placed = stable(p);
-            String door = uidOf(placed, "AmicaDoor");
+            door = uidOf(placed, "AmicaDoor");
             String movement = uidOf(placed, "AmicaMovement");
             configure(p, "tinysep:set " + movement + " room Kitchen", "room=Kitchen");
             configure(p, "tinysep:set " + door + " kind INNER", "kind=INNER");
@@ -59,8 +60,31 @@ public class RestartRestoresEverythingTest {
             assertEquals(DeviceListing.render(before), DeviceListing.render(after));
             String packets = String.join("\n", p.command("tinysep:packets 5"));
             assertTrue("no packet arrived after the restart:\n" + packets, packets.contains("(no packets)"));
+            backupAndRestore(p, flat.home, door, before);
             assertEquals(0, p.stop(Duration.ofSeconds(60)));
         }
+    }
+
+    /**
+     * {@code tinysep:backup} writes an archive; a later change is undone by {@code tinysep:restore} of it; a damaged
+     * archive is rejected and changes nothing.
+     */
+    private static void backupAndRestore(PlatformProcess p, Path home, String door,
+            TreeMap<String, List<String>> expected) throws Exception {
+        Path zip = home.resolve("config.zip");
+        configure(p, "tinysep:backup " + zip, "wrote ");
+        configure(p, "tinysep:set " + door + " name Renamed", "name=Renamed");
+        Path bad = home.resolve("bad.zip");
+        try (var out = new java.util.zip.ZipOutputStream(Files.newOutputStream(bad))) {
+            out.putNextEntry(new java.util.zip.ZipEntry("backup/AmicaDoor/AmicaDoor-x.xml"));
+            out.write("<backup kind=\"DEVICE\"><uid>x</uid><name>torn".getBytes());
+            out.closeEntry();
+        }
+        configure(p, "tinysep:restore " + bad, "rejected, nothing changed");
+        configure(p, "tinysep:devices", "\"Renamed\"");
+        configure(p, "tinysep:restore " + zip, "restored ");
+        TreeMap<String, List<String>> restored = stable(p);
+        assertEquals(DeviceListing.render(expected), DeviceListing.render(restored));
     }
 
     private static void configure(PlatformProcess p, String command, String expected) {
