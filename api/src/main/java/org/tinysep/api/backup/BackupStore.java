@@ -1,5 +1,6 @@
 package org.tinysep.api.backup;
 
+import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletionStage;
@@ -20,6 +21,14 @@ public interface BackupStore {
      *         could not be written
      */
     CompletionStage<Void> save(ComponentBackup backup);
+
+    /**
+     * Waits until every backup saved before this call is on disk; what acknowledges a change to a user (the
+     * shell's {@code set}) calls it, so an acknowledged change survives a crash.
+     *
+     * @return whether it is all on disk within the timeout
+     */
+    boolean flush(Duration timeout);
 
     /** @return the newest backup of that component (saved or read from disk), if any */
     Optional<ComponentBackup> find(String uid);

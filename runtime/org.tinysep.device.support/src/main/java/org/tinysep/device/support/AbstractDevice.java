@@ -192,7 +192,7 @@ public abstract class AbstractDevice implements Device {
         } else {
             applyParameter(key, value);
         }
-        backup.saveDurably(); // acknowledged only once it survives a crash (docs/backup.md)
+        backup.save(); // no waiting here: the shell waits (BackupStore.flush) before it acknowledges
     }
 
     // ---- system backup (thesis 3.7, docs/backup.md)

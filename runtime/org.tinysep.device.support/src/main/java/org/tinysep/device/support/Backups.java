@@ -1,18 +1,20 @@
 package org.tinysep.device.support;
 
-import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
-import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
+import java.util.function.Predicate;
 import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
 import org.osgi.framework.BundleContext;
 import org.osgi.util.tracker.ServiceTracker;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.backup.BackupStore;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.log.EventKind;
 
 /**
  * A driver's way to the device manager's {@link BackupStore} (thesis 3.7), when one is installed; without it,
@@ -20,8 +22,6 @@ import org.tinysep.api.backup.ComponentBackup;
  */
 public final class Backups implements AutoCloseable {
 
-    /** How long a user's change waits for its backup to reach the disk. */
-    public static final Duration DURABLE_WAIT = Duration.ofSeconds(5);
     private static final Logger LOG = LoggerFactory.getLogger(Backups.class);
 
     private final Supplier<BackupStore> store;
@@ -68,23 +68,6 @@ public final class Backups implements AutoCloseable {
         }
     }
 
-    /**
-     * Saves and waits until the backup is on disk (at most {@link #DURABLE_WAIT}).
-     *
-     * @return null when it is on disk (or there is no store), else why not
-     */
-    public String saveDurably(ComponentBackup backup) {
-        try {
-            save(backup).toCompletableFuture().get(DURABLE_WAIT.toMillis(), TimeUnit.MILLISECONDS);
-            return null;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return "interrupted";
-        } catch (Exception e) {
-            return e.getCause() == null ? e.toString() : e.getCause().toString();
-        }
-    }
-
     /** @return the component's backup, if there is one */
     public Optional<ComponentBackup> find(String uid) {
         BackupStore s = store.get();
@@ -117,6 +100,31 @@ public final class Backups implements AutoCloseable {
                 LOG.warn("Backup store failed to delete {}: {}", uid, e.toString());
             }
         }
+    }
+
+    /**
+     * Re-creates devices from their backups (a bus radio's known nodes, before its hardware opens): each backup is
+     * turned into a device, claimed (e.g. put into the node table unless the node is already there) and
+     * registered; a backup that cannot be used is reported in the event log and skipped.
+     *
+     * @return how many devices were re-created
+     */
+    public static <D> int recreate(DriverContext context, List<ComponentBackup> saved,
+            Function<ComponentBackup, D> make, Predicate<D> claim, UnaryOperator<D> register) {
+        int n = 0;
+        for (ComponentBackup b : saved) {
+            try {
+                D device = make.apply(b);
+                if (claim.test(device)) {
+                    register.apply(device);
+                    n++;
+                }
+            } catch (RuntimeException e) {
+                context.event(EventKind.PROBLEM, "cannot re-create node " + b.nodeAddress() + " (" + b.uid()
+                        + ") from its backup: " + e.getMessage());
+            }
+        }
+        return n;
     }
 
     @Override

@@ -70,18 +70,6 @@ final class DeviceBackup {
         }
     }
 
-    /** Saves and waits for the disk: a user's change is acknowledged only once it is safe. */
-    void saveDurably() {
-        if (!active) {
-            return;
-        }
-        String failure = device.context.backups().saveDurably(device.backup());
-        if (failure != null) {
-            device.context.reporter().event(EventKind.PROBLEM, device.uid(),
-                    "change applied but not saved in the system backup: " + failure);
-        }
-    }
-
     /** Saves runtime state at most once per second per device; cheap to call on every packet. */
     void stateChanged() {
         long now = System.nanoTime();

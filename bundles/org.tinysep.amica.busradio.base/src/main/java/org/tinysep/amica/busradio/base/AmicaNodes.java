@@ -13,8 +13,8 @@ import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.log.Direction;
-import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
 
 /**
@@ -86,20 +86,8 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
      * @return how many were re-created
      */
     public int restore(List<ComponentBackup> saved) {
-        int n = 0;
-        for (ComponentBackup b : saved) {
-            try {
-                AmicaBusDevice<R> device = AmicaBusDevice.restored(context, deviceType, b, this);
-                if (nodes.putIfAbsent(device.address(), device) == null) {
-                    register.apply(device);
-                    n++;
-                }
-            } catch (RuntimeException e) {
-                context.event(EventKind.PROBLEM, "cannot re-create node " + b.nodeAddress() + " (" + b.uid()
-                        + ") from its backup: " + e.getMessage());
-            }
-        }
-        return n;
+        return Backups.recreate(context, saved, b -> AmicaBusDevice.restored(context, deviceType, b, this),
+                d -> nodes.putIfAbsent(d.address(), d) == null, register);
     }
 
     /** Forgets the node of a removed bus device, so its next keep-alive creates it anew. */

@@ -5,8 +5,8 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.UnaryOperator;
 import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
@@ -59,22 +59,11 @@ final class SunSpotNodes {
 
     /** Re-creates the bus devices of the nodes known before the restart; an unusable backup is reported. */
     int restore(List<ComponentBackup> saved) {
-        int n = 0;
-        for (ComponentBackup b : saved) {
-            try {
-                SunSpotBusDevice device = SunSpotBusDevice.restored(context, deviceType, b);
-                synchronized (creating) {
-                    if (nodes.putIfAbsent(device.address(), device) == null) {
-                        register.apply(device);
-                        n++;
-                    }
-                }
-            } catch (RuntimeException e) {
-                context.event(EventKind.PROBLEM, "cannot re-create node " + b.nodeAddress() + " (" + b.uid()
-                        + ") from its backup: " + e.getMessage());
+        return Backups.recreate(context, saved, b -> SunSpotBusDevice.restored(context, deviceType, b), d -> {
+            synchronized (creating) {
+                return nodes.putIfAbsent(d.address(), d) == null;
             }
-        }
-        return n;
+        }, register);
     }
 
     SunSpotBusDevice find(SunSpotAddress address) {

@@ -60,7 +60,7 @@ public final class BackupCommands {
     /** {@code backup <file>}: writes the archive to that file (replacing it atomically). */
     public String backup(String file) {
         Path target = Path.of(file).toAbsolutePath();
-        if (!store.flush(10_000)) {
+        if (!store.flush(java.time.Duration.ofSeconds(10))) {
             throw new IllegalStateException("the backup store did not finish writing within 10 s; try again");
         }
         try {
@@ -86,7 +86,7 @@ public final class BackupCommands {
         }
         String kept;
         try {
-            store.flush(10_000);
+            store.flush(java.time.Duration.ofSeconds(10));
             kept = replaceFolder(content);
             store.reload();
             for (Map.Entry<String, byte[]> e : content.entrySet()) {

@@ -11,7 +11,7 @@ public @interface BackupConfig {
             + "${tinysep.home}/var/backup, else the bundle's data area")
     String folder() default "";
 
-    @AttributeDefinition(description = "How long a save waits for more saves of other components before the "
-            + "writer runs, in milliseconds (coalescing); 0 writes at once")
-    long writeDelayMillis() default 50;
+    @AttributeDefinition(description = "How long the writer waits after a save for more saves before it runs, "
+            + "in milliseconds; 0: at once (saves arriving while it writes are still coalesced)")
+    long writeDelayMillis() default 0;
 }

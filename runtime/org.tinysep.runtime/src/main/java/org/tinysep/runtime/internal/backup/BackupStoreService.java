@@ -2,6 +2,7 @@ package org.tinysep.runtime.internal.backup;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.time.Instant;
 import java.util.Comparator;
 import java.util.List;
@@ -110,12 +111,15 @@ public final class BackupStoreService implements BackupStore {
         return writer.write(backup);
     }
 
-    /** Blocks until everything saved so far is on disk (at most {@code millis}); for the shell's backup command. */
-    public boolean flush(long millis) {
-        CompletableFuture<Void> marker = writer.delete("\u0000flush-marker");
+    @Override
+    public boolean flush(Duration timeout) {
+        CompletableFuture<Void> marker = writer.delete("\u0000flush-marker"); // queued after everything before it
         try {
-            marker.get(millis, TimeUnit.MILLISECONDS);
+            marker.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
             return true;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
         } catch (Exception e) {
             return false;
         }

@@ -106,9 +106,26 @@ class BackupStoreServiceTest {
         Instant t = Instant.parse("2026-11-22T10:00:00Z");
         store.save(device("u-1", "a", "r", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
         store.delete("u-1");
-        assertTrue(store.flush(5000));
+        assertTrue(store.flush(java.time.Duration.ofSeconds(5)));
         store.deactivate();
         assertFalse(new BackupStoreService(root, 0, events).find("u-1").isPresent());
         assertFalse(Files.exists(root.resolve("BusRadioAmicaUdp/BusRadioAmicaUdp-u-1.xml")));
+    }
+
+    /** Prints (never asserts) what an acknowledged change costs: one durable save waited for, one after another. */
+    @Test
+    void durableSavesOneAfterAnotherPrintTheirCost() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        int n = 100;
+        long start = System.nanoTime();
+        for (int i = 0; i < n; i++) {
+            store.save(device("u-" + (i % 40), "n" + i, "r", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
+        }
+        double ms = (System.nanoTime() - start) / 1e6 / n;
+        System.out.printf("BackupStore: %d durable saves one after another, %.2f ms each (write + fsync + rename "
+                + "+ folder fsync)%n", n, ms);
+        store.deactivate();
+        assertEquals(40, new BackupStoreService(root, 0, events).devicesOf("drv-1").size());
     }
 }
