@@ -21,7 +21,8 @@ import org.tinysep.simulator.cli.Run;
  * Before any packet arrives (the simulator does not run again) {@code tinysep:devices} shows the same devices,
  * rooms, settings, node data, last seen times and connections (live readings and the status excepted, see
  * {@link DeviceListing}). Pax Exam cannot restart its own framework, so this test starts the distribution as a
- * process, as a user does.
+ * process, as a user does. A torn file planted before the restart is reported and moved aside while every other
+ * file restores; then {@code tinysep:backup} and {@code tinysep:restore} are exercised.
  */
 public class RestartRestoresEverythingTest {
 
@@ -54,8 +55,15 @@ public class RestartRestoresEverythingTest {
             backups = files.filter(f -> f.toString().endsWith(".xml")).count();
         }
         System.out.println("backup files: " + backups + " in " + flat.home.resolve("var/backup"));
+        assertTrue(Files.isRegularFile(flat.home.resolve("var/backup/AmicaDoor/AmicaDoor-" + door + ".xml")));
+        Path torn = flat.home.resolve("var/backup/AmicaDoor/AmicaDoor-0000dead-torn.xml");
+        Files.writeString(torn, "<backup kind=\"DEVICE\"><uid>0000dead-torn</uid><name>half a fi");
         try (PlatformProcess p = PlatformProcess.start(flat.home)) {
             TreeMap<String, List<String>> after = stable(p);
+            String log = String.join("\n", p.command("tinysep:log 500"));
+            assertTrue(log, log.contains("PROBLEM") && log.contains("damaged backup file AmicaDoor-0000dead-torn.xml"));
+            assertTrue("moved aside", !Files.exists(torn) && Files.list(flat.home.resolve("var/backup/damaged"))
+                    .anyMatch(f -> f.getFileName().toString().startsWith("AmicaDoor_AmicaDoor-0000dead-torn.xml.")));
             System.out.println("after the restart:\n" + DeviceListing.render(after));
             assertEquals(DeviceListing.render(before), DeviceListing.render(after));
             String packets = String.join("\n", p.command("tinysep:packets 5"));

@@ -8,6 +8,7 @@ import java.util.Map;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceRegistration;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
@@ -48,6 +49,8 @@ public abstract class AbstractDriver implements Driver {
         props.put(DeviceProperties.DRIVER_UID, uid);
         props.put(DeviceProperties.DRIVER_NAME, name);
         registration = bundleContext.registerService(Driver.class, this, props);
+        context.backups().save(new ComponentBackup(uid, ComponentKind.DRIVER, uid, name, name, name, Map.of(), "",
+                List.of(), null, Map.of(), context.now())); // the driver's own file (docs/backup.md)
     }
 
     /**
