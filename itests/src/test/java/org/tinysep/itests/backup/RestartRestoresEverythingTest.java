@@ -16,8 +16,8 @@ import org.tinysep.simulator.cli.Run;
 
 /**
  * DESIGN.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the
- * real simulator over UDP in lock-step); the user places a device in another room, changes parameters and names
- * one device; the framework stops (end of the shell's input: a clean stop) and starts again with the same home.
+ * real simulator over UDP in lock-step); the user adds a room, places devices in other rooms, changes a parameter and
+ * names one device; the framework stops (end of the shell's input: a clean stop) and starts again with the same home.
  * Before any packet arrives (the simulator does not run again) {@code tinysep:devices} shows the same devices,
  * rooms, settings, node data, last seen times and connections (live readings and the status excepted, see
  * {@link DeviceListing}). Pax Exam cannot restart its own framework, so this test starts the distribution as a
@@ -34,6 +34,7 @@ public class RestartRestoresEverythingTest {
         FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
         TreeMap<String, List<String>> before;
         String door;
+        List<String> rooms;
         try (PlatformProcess p = PlatformProcess.start(flat.home)) {
             await(p, () -> p.command("tinysep:drivers").toString(), s -> s.contains("TimeController")
                     && s.contains("BusRadioAmicaUdp") && s.contains("BusRadioSunSpot"), "drivers up");
@@ -42,9 +43,12 @@ public class RestartRestoresEverythingTest {
             door = uidOf(placed, "AmicaDoor");
             String movement = uidOf(placed, "AmicaMovement");
             configure(p, "tinysep:set " + movement + " room Kitchen", "room=Kitchen");
+            configure(p, "tinysep:room-add Pantry storage", "added Pantry");
+            configure(p, "tinysep:set " + uidOf(placed, "AmicaWindow") + " room Pantry", "room=Pantry");
             configure(p, "tinysep:set " + door + " kind INNER", "kind=INNER");
             configure(p, "tinysep:set " + door + " name \"Front door (tested)\"", "Front door (tested)");
             before = stable(p);
+            rooms = p.command("tinysep:rooms");
             System.out.println("before the restart:\n" + DeviceListing.render(before));
             assertTrue(DeviceListing.render(before).contains("kind=INNER"));
             assertTrue(before.size() > 40);
@@ -66,6 +70,7 @@ public class RestartRestoresEverythingTest {
                     .anyMatch(f -> f.getFileName().toString().startsWith("AmicaDoor_AmicaDoor-0000dead-torn.xml.")));
             System.out.println("after the restart:\n" + DeviceListing.render(after));
             assertEquals(DeviceListing.render(before), DeviceListing.render(after));
+            assertEquals("rooms and their devices", byRoom(rooms), byRoom(p.command("tinysep:rooms")));
             String packets = String.join("\n", p.command("tinysep:packets 5"));
             assertTrue("no packet arrived after the restart:\n" + packets, packets.contains("(no packets)"));
             backupAndRestore(p, flat.home, door, before);
@@ -93,6 +98,13 @@ public class RestartRestoresEverythingTest {
         configure(p, "tinysep:restore " + zip, "restored ");
         TreeMap<String, List<String>> restored = stable(p);
         assertEquals(DeviceListing.render(expected), DeviceListing.render(restored));
+    }
+
+    /** {@code tinysep:rooms} with each room's devices sorted (the DEVICES column lists them in no set order). */
+    private static List<String> byRoom(List<String> table) {
+        int col = table.get(0).indexOf("DEVICES");
+        return table.stream().map(l -> l.length() <= col ? l : l.substring(0, col)
+                + String.join(", ", new java.util.TreeSet<>(List.of(l.substring(col).split(", "))))).toList();
     }
 
     private static void configure(PlatformProcess p, String command, String expected) {
