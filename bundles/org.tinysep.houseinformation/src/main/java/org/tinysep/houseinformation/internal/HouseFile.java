@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
-import org.tinysep.device.support.AtomicWrites;
+import org.tinysep.device.support.AtomicFiles;
 
 /**
  * The house file on disk. Writes are atomic (temp file in the same folder, fsync, atomic rename) and keep the
@@ -47,7 +47,7 @@ final class HouseFile {
             diskIsGood = true;
             return new Load(plan, null);
         } catch (MalformedHouseException broken) {
-            Path aside = AtomicWrites.moveAside(file, now);
+            Path aside = AtomicFiles.moveAside(file, now);
             String problem = broken.getMessage() + "; moved aside to " + aside.getFileName();
             if (!Files.exists(backup)) {
                 return new Load(HousePlan.EMPTY, problem + "; no " + backup.getFileName()
@@ -77,7 +77,7 @@ final class HouseFile {
             if (diskIsGood) {
                 replace(backup, Files.readAllBytes(file));
             } else {
-                AtomicWrites.moveAside(file, Instant.now());
+                AtomicFiles.moveAside(file, Instant.now());
             }
         }
         replace(file, bytes);
@@ -86,6 +86,6 @@ final class HouseFile {
 
     /** Writes {@code bytes} to a temp file next to {@code target}, syncs it, renames it over {@code target}. */
     private void replace(Path target, byte[] bytes) throws IOException {
-        AtomicWrites.write(target, bytes, beforeRename);
+        AtomicFiles.write(target, bytes, beforeRename);
     }
 }

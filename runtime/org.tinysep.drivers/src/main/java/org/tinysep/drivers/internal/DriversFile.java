@@ -6,10 +6,10 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.Arrays;
 import java.util.List;
-import org.tinysep.device.support.AtomicWrites;
+import org.tinysep.device.support.AtomicFiles;
 
 /**
- * {@code drivers.xml} on disk. Writes are atomic ({@link AtomicWrites}) and skipped when nothing changed; a malformed
+ * {@code drivers.xml} on disk. Writes are atomic ({@link AtomicFiles}) and skipped when nothing changed; a malformed
  * file is moved aside to {@code drivers.xml.broken-<timestamp>} and never read again.
  */
 final class DriversFile {
@@ -43,7 +43,7 @@ final class DriversFile {
             lastWritten = bytes;
             return entries;
         } catch (MalformedDriversException e) {
-            Path aside = AtomicWrites.moveAside(file, now);
+            Path aside = AtomicFiles.moveAside(file, now);
             throw new MalformedDriversException(e.getMessage() + "; moved aside to " + aside.getFileName(), e);
         }
     }
@@ -54,7 +54,7 @@ final class DriversFile {
         if (lastWritten != null && Arrays.equals(bytes, lastWritten) && exists()) {
             return false;
         }
-        AtomicWrites.write(file, bytes);
+        AtomicFiles.write(file, bytes);
         lastWritten = bytes;
         return true;
     }

@@ -119,6 +119,11 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
     }
 
     @Override
+    protected final boolean backedUp(String key) {
+        return false; // the value parameter is a command to the node, not a setting (docs/backup.md)
+    }
+
+    @Override
     protected final List<Parameter> moreParameters() {
         return List.of(
                 Parameter.writable(quantity, setting.value().orElse(null),

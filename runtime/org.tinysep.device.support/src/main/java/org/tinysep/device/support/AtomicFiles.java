@@ -12,33 +12,34 @@ import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
 
 /**
- * Crash-safe file replacement: temp file in the same folder, write, {@code FileChannel.force}, atomic rename over
- * the target, fsync of the folder. A reader sees the old content or the new one, never a mix.
+ * Crash-safe file replacement, shared by everything that keeps state on disk (House Information, the backup
+ * store, the drivers list): a temp file in the same folder is written and forced to disk, atomically renamed over the target, and
+ * the folder is synced, so after a crash the target holds either the old or the new content, never a mix.
  */
-public final class AtomicWrites {
+public final class AtomicFiles {
 
     private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")
             .withZone(ZoneOffset.UTC);
 
-    private AtomicWrites() {
+    private AtomicFiles() {
     }
 
-    /** Replaces {@code target} with {@code bytes} atomically (creates the folder when needed). */
+    /** Writes {@code bytes} to {@code target} atomically (creating its folder). */
     public static void write(Path target, byte[] bytes) throws IOException {
         write(target, bytes, () -> { });
     }
 
     /**
-     * Replaces {@code target} with {@code bytes} atomically.
-     *
-     * @param beforeRename test seam: runs after the temp file is written and synced, before the rename
+     * As {@link #write(Path, byte[])}; {@code beforeRename} runs after the temp file is synced and before it
+     * replaces the target (a test seam for crash simulations).
      */
     public static void write(Path target, byte[] bytes, Runnable beforeRename) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
         Files.createDirectories(dir);
         Path tmp = Files.createTempFile(dir, target.getFileName() + ".", ".tmp");
         try {
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
+            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
+                    StandardOpenOption.TRUNCATE_EXISTING)) {
                 ByteBuffer buf = ByteBuffer.wrap(bytes);
                 while (buf.hasRemaining()) {
                     ch.write(buf);
@@ -51,6 +52,14 @@ public final class AtomicWrites {
             Files.deleteIfExists(tmp);
         }
         syncDirectory(dir);
+    }
+
+    /** Moves {@code from} to {@code to} atomically (same file system) and syncs both folders. */
+    public static void move(Path from, Path to) throws IOException {
+        Files.createDirectories(to.toAbsolutePath().getParent());
+        Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        syncDirectory(to.toAbsolutePath().getParent());
+        syncDirectory(from.toAbsolutePath().getParent());
     }
 
     /**
@@ -70,7 +79,15 @@ public final class AtomicWrites {
         return aside;
     }
 
-    private static void syncDirectory(Path dir) {
+    /** Deletes {@code file} if present and syncs its folder. */
+    public static void delete(Path file) throws IOException {
+        if (Files.deleteIfExists(file)) {
+            syncDirectory(file.toAbsolutePath().getParent());
+        }
+    }
+
+    /** Forces a folder's entries (a rename or delete) to disk; a no-op where the platform cannot. */
+    public static void syncDirectory(Path dir) {
         try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
             ch.force(true);
         } catch (IOException | UnsupportedOperationException ignored) {
