@@ -17,6 +17,7 @@ import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.backup.BackupStore;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.device.support.StateFolder;
 
@@ -25,7 +26,10 @@ import org.tinysep.device.support.StateFolder;
  * first start), installs and starts its enabled entries, keeps every entry's STATUS up to date in the file, follows
  * shell installs and uninstalls, and reconciles on request. All list changes hold this object's lock.
  */
-@Component(service = DriversList.class, immediate = true, configurationPid = DriversList.PID)
+@Component(service = DriversList.class, immediate = true, configurationPid = DriversList.PID,
+        // not used here: an ordering guarantee. Applications restore their devices from the system backup when they
+        // activate (docs/backup.md), so they may start only once the device manager's store is registered.
+        reference = @Reference(name = "backupStore", service = BackupStore.class))
 @Designate(ocd = DriversConfig.class)
 public final class DriversList implements BundleListener {
 
