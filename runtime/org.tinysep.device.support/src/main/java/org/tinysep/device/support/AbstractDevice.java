@@ -83,12 +83,15 @@ public abstract class AbstractDevice implements Device {
         backup.save(); // the last state (e.g. last seen) before an orderly stop
         backup.deactivate();
         room.close();
-        services.unregister();
+        // inputs before services: once its inputs are closed, what arrives for this device waits for a replacement
+        // (a bus device's Handover); had the services gone first, a payload arriving in between would reach this
+        // device with no consumer left to tell (lost during a driver update)
         for (ConnectionInfo c : consumptions.infos()) {
             context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName() + " of "
                     + c.providerDeviceUid());
         }
         consumptions.closeAll();
+        services.unregister();
         onDispose();
     }
 
