@@ -22,6 +22,9 @@ if "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
   echo "No hardware configured: the demo flat (simulator/, flat A) plays a virtual day 06:30-23:00 in a few seconds"
   echo "once the platform is up; simulator output: $var/simulator.log. TINYSEP_DEMO=0 ./run.sh skips it."
   "$repo/scripts/demo-flat.sh" simulate "$PWD" > "$var/simulator.log" 2>&1 &
+  # a simulated day makes tens of thousands of events in seconds: keep them off the console (they are in the event
+  # log: tinysep:events ..., var/log/events-*.log); warnings, the mail text and the rest of the log still show
+  demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn"
 fi
-# shellcheck disable=SC2086 # JAVA_OPTS is a list of options
-exec java ${JAVA_OPTS:-} -jar tinysep.jar --var "$var" "$@"
+# shellcheck disable=SC2086 # JAVA_OPTS is a list of options; given later, it wins over demo_opts
+exec java ${demo_opts:-} ${JAVA_OPTS:-} -jar tinysep.jar --var "$var" "$@"
