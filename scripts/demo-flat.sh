@@ -2,7 +2,8 @@
 # The demo flat of ./run.sh: when no hardware is configured, the platform runs with the simulated flat A
 # (simulator/, 20 AmICA + 3 Sun SPOT nodes, a person and a dog, demo-day scenario) in lock-step virtual time.
 #   scripts/demo-flat.sh wanted <dist>    exit 0 if the demo should run (TINYSEP_DEMO != 0, no hardware configured)
-#   scripts/demo-flat.sh prepare <dist>   house plan, room placements, EXTERNAL clock (only files the user has not made)
+#   scripts/demo-flat.sh prepare <dist> [var]   house plan (into the state folder var, default <dist>/var), room
+#                                         placements, EXTERNAL clock (only files the user has not made)
 #   scripts/demo-flat.sh simulate <dist>  runs the simulated day against the platform (waits for it first)
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
@@ -28,8 +29,9 @@ case "$cmd" in
   wanted)
     [ "${TINYSEP_DEMO:-1}" != "0" ] && ! hardware_configured ;;
   prepare)
-    mkdir -p "$dist/var"
-    [ -f "$dist/var/house.xml" ] || cp "$flat/house.xml" "$dist/var/house.xml"
+    var="${3:-$dist/var}"
+    mkdir -p "$var"
+    [ -f "$var/house.xml" ] || cp "$flat/house.xml" "$var/house.xml"
     [ -f "$etc/org.tinysep.houseinformation.placement.cfg" ] || {
       echo "# demo flat A (scripts/demo-flat.sh): node address = room"
       echo "placements=$(placements)"

@@ -47,8 +47,9 @@ import org.tinysep.api.device.Driver;
  * launcher's distribution, plus helpers to drive it.
  *
  * <p>Start levels mirror the launcher: 1 ASM + SPI Fly, then the SLF4J bundles (also level 1, installed after
- * SPI Fly: Pax Exam's own bundles take level 2 and must find a bound SLF4J), 3 system services, 4 platform,
- * 5 applications (and Pax Exam's probe).
+ * SPI Fly: Pax Exam's own bundles take level 2 and must find a bound SLF4J), 3 system services, 4 platform
+ * (API, drivers list, device manager), 5 applications (and Pax Exam's probe). Without {@code tinysep.home} the
+ * drivers list starts empty in its bundle's data area: Pax Exam provisions the applications itself.
  *
  * <p>Like the distribution, FileInstall applies ConfigAdmin configurations from a folder before the platform
  * starts ({@link #initialConfigurations()}); {@link #configure(String, Map)} changes them while a test runs.
@@ -138,6 +139,7 @@ public abstract class TinySepTestSupport {
         o.add(mavenBundle("org.apache.felix", "org.apache.felix.gogo.command").versionAsInProject().startLevel(3));
         // level 4: platform
         o.add(reactorBundle("org.tinysep.api", 4));
+        o.add(reactorBundle("org.tinysep.drivers", 4));
         o.add(reactorBundle("org.tinysep.runtime", 4));
         // libraries some applications need
         o.add(mavenBundle("com.fazecast", "jSerialComm").versionAsInProject().startLevel(3));

@@ -18,6 +18,7 @@ import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
@@ -60,8 +61,8 @@ abstract class AalTestSupport extends TinySepTestSupport {
                 .plusSeconds(86_400);
     }
 
-    AalNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
-        return new AalNode(netgroup, address, udpPortOf(BUS), types);
+    AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
+        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
     }
 
     /**
@@ -76,7 +77,7 @@ abstract class AalTestSupport extends TinySepTestSupport {
     }
 
     /** Waits for the node's device of that type and places it in the room (by name) through the shell. */
-    Device place(AalNode node, String deviceType, String roomName) throws IOException {
+    Device place(AmicaNode node, String deviceType, String roomName) throws IOException {
         node.keepAlive();
         Device d = awaitService(Device.class, "(&(" + DeviceProperties.DEVICE_TYPE + "=" + deviceType + ")("
                 + DeviceProperties.NODE_ADDRESS + "=" + node.id() + "))", TIMEOUT);
@@ -115,7 +116,7 @@ abstract class AalTestSupport extends TinySepTestSupport {
     }
 
     /** Reads the next command the platform sends to the node and compares it byte by byte. */
-    static void expectCommand(AalNode node, int... payload) throws Exception {
+    static void expectCommand(AmicaNode node, int... payload) throws Exception {
         byte[] expected = new byte[payload.length];
         for (int i = 0; i < payload.length; i++) {
             expected[i] = (byte) payload[i];

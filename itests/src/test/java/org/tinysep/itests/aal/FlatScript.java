@@ -5,6 +5,7 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import org.tinysep.itests.AmicaNode;
 
 /** A script of sensor events for {@link VirtualFlat#play}, written as a readable table in the test. */
 final class FlatScript {
@@ -15,18 +16,18 @@ final class FlatScript {
     /** How a node sends one event's frame. */
     @FunctionalInterface
     interface SensorFrame {
-        void send(AalNode node) throws IOException;
+        void send(AmicaNode node) throws IOException;
     }
 
     /** One line of a script: at this virtual time, this node sends this frame. */
-    record Event(Instant at, AalNode node, SensorFrame frame, String text) {
+    record Event(Instant at, AmicaNode node, SensorFrame frame, String text) {
     }
 
     /**
      * Parses a script table, one event a line: {@code HH:mm:ss motion <Room>}, {@code HH:mm:ss pet},
      * {@code HH:mm:ss door open|closed}; anything after {@code --} is a comment.
      */
-    static List<Event> parse(VirtualFlat flat, String table, Map<String, AalNode> motionSensors, AalNode door, AalNode collar) {
+    static List<Event> parse(VirtualFlat flat, String table, Map<String, AmicaNode> motionSensors, AmicaNode door, AmicaNode collar) {
         List<Event> events = new ArrayList<>();
         for (String raw : table.split("\n")) {
             String line = raw.split("--")[0].trim();
@@ -36,8 +37,8 @@ final class FlatScript {
             String[] w = line.split("\\s+", 3);
             Instant at = flat.at(w[0]);
             switch (w[1]) {
-            case "motion" -> events.add(new Event(at, require(motionSensors.get(w[2]), line), AalNode::motion, line));
-            case "pet" -> events.add(new Event(at, require(collar, line), AalNode::motion, line));
+            case "motion" -> events.add(new Event(at, require(motionSensors.get(w[2]), line), n -> n.motion(true), line));
+            case "pet" -> events.add(new Event(at, require(collar, line), n -> n.motion(true), line));
             case "door" -> {
                 boolean open = switch (w[2]) {
                 case "open" -> true;
@@ -52,7 +53,7 @@ final class FlatScript {
         return events;
     }
 
-    private static AalNode require(AalNode node, String line) {
+    private static AmicaNode require(AmicaNode node, String line) {
         if (node == null) {
             throw new IllegalArgumentException("no such sensor: " + line);
         }

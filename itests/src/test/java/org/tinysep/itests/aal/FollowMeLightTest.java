@@ -17,6 +17,7 @@ import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * Follow Me Light end to end in virtual time: real AmICA movement and light nodes over UDP, placed in the bedroom
@@ -38,10 +39,10 @@ public class FollowMeLightTest extends AalTestSupport {
     @Test
     public void theLightsFollowAWalkFromTheBedroomToTheHall() throws Exception {
         try (AalSync sync = sync();
-                AalNode bedSensor = node(1, 41, MOVEMENT);
-                AalNode hallSensor = node(1, 42, MOVEMENT);
-                AalNode bedLight = node(1, 51, SIMPLE_LIGHT);
-                AalNode hallLight = node(1, 52, DIMMABLE_LIGHT)) {
+                AmicaNode bedSensor = node(1, 41, MOVEMENT);
+                AmicaNode hallSensor = node(1, 42, MOVEMENT);
+                AmicaNode bedLight = node(1, 51, SIMPLE_LIGHT);
+                AmicaNode hallLight = node(1, 52, DIMMABLE_LIGHT)) {
             Instant t = tomorrow();
             sync.tickDone(t);
             room("Bedroom", "Bedroom");
@@ -56,12 +57,12 @@ public class FollowMeLightTest extends AalTestSupport {
             await(TIMEOUT, () -> parameter(followMe, "lights").equals("2"), "both lights connected");
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
 
-            bedSensor.motion();
+            bedSensor.motion(true);
             expectCommand(bedLight, 5, 2, 0, 100);
             assertEquals(Occupancy.OCCUPIED, flat.occupancy());
 
             sync.tickDone(t.plusSeconds(30));
-            hallSensor.motion();
+            hallSensor.motion(true);
             expectCommand(hallLight, 5, 2, 0, 80);
 
             sync.tickDone(t.plusSeconds(59));
@@ -77,10 +78,10 @@ public class FollowMeLightTest extends AalTestSupport {
     @Test
     public void aPetMovesTheLightsOnlyWhileAPersonIsHome() throws Exception {
         try (AalSync sync = sync();
-                AalNode collar = node(2, 7, PET_COLLAR);
-                AalNode hallSensor = node(1, 42, MOVEMENT);
-                AalNode bedLight = node(1, 51, SIMPLE_LIGHT);
-                AalNode hallLight = node(1, 52, SIMPLE_LIGHT)) {
+                AmicaNode collar = node(2, 7, PET_COLLAR);
+                AmicaNode hallSensor = node(1, 42, MOVEMENT);
+                AmicaNode bedLight = node(1, 51, SIMPLE_LIGHT);
+                AmicaNode hallLight = node(1, 52, SIMPLE_LIGHT)) {
             Instant t = tomorrow();
             sync.tickDone(t);
             room("Bedroom", "Bedroom");
@@ -93,14 +94,14 @@ public class FollowMeLightTest extends AalTestSupport {
             await(TIMEOUT, () -> parameter(followMe, "lights").equals("2"), "both lights connected");
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
 
-            collar.motion(); // the pet alone: the flat is not occupied, nothing happens
+            collar.motion(true); // the pet alone: the flat is not occupied, nothing happens
             sync.tickDone(t.plusSeconds(10));
-            hallSensor.motion(); // a person: the same bus radio handles it after the pet's report
+            hallSensor.motion(true); // a person: the same bus radio handles it after the pet's report
             expectCommand(hallLight, 5, 2, 0, 100);
             assertEquals(Occupancy.OCCUPIED, flat.occupancy());
             assertEquals("the pet's earlier motion lit nothing", "Hall", parameter(followMe, "litRooms"));
 
-            collar.motion(); // the pet with a person home: its room is lit too
+            collar.motion(true); // the pet with a person home: its room is lit too
             expectCommand(bedLight, 5, 2, 0, 100);
             assertEquals("Bedroom, Hall", parameter(followMe, "litRooms"));
         }

@@ -21,6 +21,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.Occupancy;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.mail.SmtpSink;
 
 /**
@@ -43,7 +44,7 @@ public class InactivityRecognitionTest extends AalTestSupport {
 
     @Test
     public void aCollapseInTheBathroomMailsOnceAndTheNextMovementClearsTheAlert() throws Exception {
-        try (SmtpSink sink = new SmtpSink().start(); AalSync sync = sync(); AalNode bath = node(1, 40, MOVEMENT)) {
+        try (SmtpSink sink = new SmtpSink().start(); AalSync sync = sync(); AmicaNode bath = node(1, 40, MOVEMENT)) {
             configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
                     "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
                     "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
@@ -60,7 +61,7 @@ public class InactivityRecognitionTest extends AalTestSupport {
                     TIMEOUT);
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
 
-            bath.motion();
+            bath.motion(true);
             await(TIMEOUT, () -> flat.occupancy() == Occupancy.OCCUPIED, "the flat OCCUPIED");
             await(TIMEOUT, () -> inactivity.state() == InactivityState.WATCHING, "WATCHING");
             await(TIMEOUT, () -> parameter(device, "lastActivity").contains("in Bathroom"), "the bathroom activity");
@@ -77,7 +78,7 @@ public class InactivityRecognitionTest extends AalTestSupport {
 
             Instant later = t.plusSeconds(50 * 60);
             sync.tickDone(later); // further ticks resend nothing (checked below by the order of the mails)
-            bath.motion();
+            bath.motion(true);
             await(TIMEOUT, () -> inactivity.state() == InactivityState.WATCHING, "the alert cleared by movement");
             assertTrue(inactivity.alert().isEmpty());
 

@@ -20,6 +20,7 @@ import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.mail.SmtpSink;
 
 /**
@@ -142,17 +143,17 @@ public class ScriptedDayTest extends VirtualFlatTestSupport {
             closing.add(flat::close);
             ROOMS.forEach(r -> room(r, r));
             for (int i = 0; i < ROOMS.size(); i++) {
-                AalNode n = node(1, 60 + i, SIMPLE_LIGHT);
+                AmicaNode n = node(1, 60 + i, SIMPLE_LIGHT);
                 closing.add(light(flat, n, ROOMS.get(i)));
             }
-            Map<String, AalNode> sensors = new LinkedHashMap<>();
+            Map<String, AmicaNode> sensors = new LinkedHashMap<>();
             for (int i = 0; i < ROOMS.size(); i++) {
-                AalNode n = node(1, 70 + i, MOVEMENT);
+                AmicaNode n = node(1, 70 + i, MOVEMENT);
                 closing.add(n);
                 motionSensor(flat, n, ROOMS.get(i));
                 sensors.put(ROOMS.get(i), n);
             }
-            AalNode door = node(1, 80, DOOR);
+            AmicaNode door = node(1, 80, DOOR);
             closing.add(door);
             doorSensor(flat, door, "Hall");
             flat.watch(awaitService(FlatOccupancyProvider.class, null, TIMEOUT));

@@ -11,6 +11,7 @@ import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaProtocolException;
 import org.tinysep.amica.protocol.LightControl;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * A simulated AmICA simple-light node that behaves like the hardware: it answers every Light Control command with
@@ -20,13 +21,13 @@ import org.tinysep.amica.protocol.LightControl;
 final class SimulatedLight implements AutoCloseable {
 
     private final String label;
-    private final AalNode node;
+    private final AmicaNode node;
     private final Supplier<Instant> clock;
     private final List<String> log;
     private final ExecutorService executor = Executors.newSingleThreadExecutor(r -> new Thread(r, "light-node"));
     private volatile boolean running = true;
 
-    SimulatedLight(String label, AalNode node, Supplier<Instant> clock, List<String> log) {
+    SimulatedLight(String label, AmicaNode node, Supplier<Instant> clock, List<String> log) {
         this.label = label;
         this.node = node;
         this.clock = clock;
@@ -37,7 +38,7 @@ final class SimulatedLight implements AutoCloseable {
         return label;
     }
 
-    AalNode node() {
+    AmicaNode node() {
         return node;
     }
 

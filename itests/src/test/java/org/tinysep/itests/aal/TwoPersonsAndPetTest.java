@@ -16,6 +16,7 @@ import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.tinysep.api.service.FlatOccupancyProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * Two persons and a pet, in virtual time (Follow Me Light README: multi-person rule, pet rule). With two persons
@@ -86,17 +87,17 @@ public class TwoPersonsAndPetTest extends VirtualFlatTestSupport {
             for (int i = 0; i < ROOMS.size(); i++) {
                 closing.add(light(flat, node(1, 60 + i, SIMPLE_LIGHT), ROOMS.get(i)));
             }
-            Map<String, AalNode> sensors = new LinkedHashMap<>();
+            Map<String, AmicaNode> sensors = new LinkedHashMap<>();
             for (String room : List.of("Hall", "Living room", "Kitchen")) {
-                AalNode n = node(1, 70 + sensors.size(), MOVEMENT);
+                AmicaNode n = node(1, 70 + sensors.size(), MOVEMENT);
                 closing.add(n);
                 motionSensor(flat, n, room);
                 sensors.put(room, n);
             }
-            AalNode door = node(1, 80, DOOR);
+            AmicaNode door = node(1, 80, DOOR);
             closing.add(door);
             doorSensor(flat, door, "Hall");
-            AalNode collar = node(2, 7, PET_COLLAR);
+            AmicaNode collar = node(2, 7, PET_COLLAR);
             closing.add(collar);
             petCollar(flat, collar, "Bedroom");
             FlatOccupancyProvider occupancy = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);

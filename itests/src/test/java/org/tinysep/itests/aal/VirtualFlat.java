@@ -20,6 +20,7 @@ import org.tinysep.api.sensor.PetMovementProvider;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * Plays a script of sensor events in virtual time and records what the platform does, each entry stamped
@@ -111,14 +112,14 @@ final class VirtualFlat {
     }
 
     /** Sends one frame from a sensor node and waits until the platform's services have all handled it. */
-    void report(AalNode node, FlatScript.SensorFrame frame) throws IOException {
+    void report(AmicaNode node, FlatScript.SensorFrame frame) throws IOException {
         int before = reports.get();
         frame.send(node);
         await(() -> reports.get() > before, "the report of " + node.id() + " to be handled");
         settle();
     }
 
-    static void door(AalNode node, boolean open) throws IOException {
+    static void door(AmicaNode node, boolean open) throws IOException {
         node.send(new ReedSwitchStatus(open));
     }
 

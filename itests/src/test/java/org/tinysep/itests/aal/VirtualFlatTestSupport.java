@@ -9,6 +9,7 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.PetMovementProvider;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * Builds a {@link VirtualFlat}: places simulated AmICA nodes in rooms and connects the flat's probes to each device
@@ -27,7 +28,7 @@ abstract class VirtualFlatTestSupport extends AalTestSupport {
     }
 
     /** Place lights first: the Follow Me Light device only exists once there is a light. */
-    SimulatedLight light(VirtualFlat flat, AalNode node, String room) throws IOException {
+    SimulatedLight light(VirtualFlat flat, AmicaNode node, String room) throws IOException {
         SimulatedLight light = new SimulatedLight(room + " light", node, flat::now, flat.commands);
         Device d = place(node, "AmicaSimpleLight", room);
         SimpleLightProvider p = awaitService(SimpleLightProvider.class, uid(d), TIMEOUT);
@@ -38,19 +39,19 @@ abstract class VirtualFlatTestSupport extends AalTestSupport {
         return light;
     }
 
-    void motionSensor(VirtualFlat flat, AalNode node, String room) throws IOException {
+    void motionSensor(VirtualFlat flat, AmicaNode node, String room) throws IOException {
         Device d = place(node, "AmicaMovement", room);
         awaitConsumers(d, FLAT_OCCUPANCY, FOLLOW_ME, INACTIVITY);
         flat.watch(awaitService(MovementProvider.class, uid(d), TIMEOUT));
     }
 
-    void doorSensor(VirtualFlat flat, AalNode node, String room) throws IOException {
+    void doorSensor(VirtualFlat flat, AmicaNode node, String room) throws IOException {
         Device d = place(node, "AmicaDoor", room);
         awaitConsumers(d, FLAT_OCCUPANCY, INACTIVITY);
         flat.watch(awaitService(DoorProvider.class, uid(d), TIMEOUT));
     }
 
-    void petCollar(VirtualFlat flat, AalNode node, String room) throws IOException {
+    void petCollar(VirtualFlat flat, AmicaNode node, String room) throws IOException {
         Device d = place(node, "AmicaPetMovement", room);
         awaitConsumers(d, FOLLOW_ME);
         flat.watch(awaitService(PetMovementProvider.class, uid(d), TIMEOUT));

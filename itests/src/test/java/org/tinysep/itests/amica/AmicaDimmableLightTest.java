@@ -15,6 +15,7 @@ import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.sensor.Percent;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * AmICA Dimmable Light in a real framework over real UDP: Light Control status in, brightness out; setBrightness puts
@@ -26,7 +27,7 @@ public class AmicaDimmableLightTest extends AmicaTestSupport {
 
     @Test
     public void aDimmableLightNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
-        try (SimulatedNode node = node(1, 20, DIMMABLE_LIGHT)) {
+        try (AmicaNode node = node(1, 20, DIMMABLE_LIGHT)) {
             node.keepAlive();
             Device device = device("AmicaDimmableLight", node.id());
             DimmableLightProvider provider = provider(DimmableLightProvider.class, node.id());

@@ -15,6 +15,7 @@ import org.tinysep.amica.protocol.HeaterControl;
 import org.tinysep.api.actuator.HeaterProvider;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.sensor.Percent;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * AmICA Heater in a real framework over real UDP: Heater Control status in, potency out; setPotency puts
@@ -26,7 +27,7 @@ public class AmicaHeaterTest extends AmicaTestSupport {
 
     @Test
     public void aHeaterNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
-        try (SimulatedNode node = node(1, 21, HEATER)) {
+        try (AmicaNode node = node(1, 21, HEATER)) {
             node.keepAlive();
             Device device = device("AmicaHeater", node.id());
             HeaterProvider provider = provider(HeaterProvider.class, node.id());

@@ -13,6 +13,7 @@ import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.api.sensor.PetMovementProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * AmICA Pet Movement in a real framework over real UDP: a pet collar's motion reports reach PetMovement
@@ -24,7 +25,7 @@ public class AmicaPetMovementTest extends AmicaTestSupport {
 
     @Test
     public void aPetCollarBecomesAPetMovementSensor() throws Exception {
-        try (SimulatedNode node = node(2, 7, PET_COLLAR)) {
+        try (AmicaNode node = node(2, 7, PET_COLLAR)) {
             node.keepAlive();
             device("AmicaPetMovement", node.id());
             PetMovementProvider pet = provider(PetMovementProvider.class, node.id());

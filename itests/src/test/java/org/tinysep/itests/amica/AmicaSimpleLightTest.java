@@ -14,6 +14,7 @@ import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.actuator.SimpleLightProvider;
 import org.tinysep.api.device.Device;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * AmICA Simple Light in a real framework over real UDP: status in, on/off out; switching through the provider and
@@ -26,7 +27,7 @@ public class AmicaSimpleLightTest extends AmicaTestSupport {
 
     @Test
     public void aLightNodeIsSwitchedAndConfirmsByItsNextStatus() throws Exception {
-        try (SimulatedNode node = node(1, 30, SIMPLE_LIGHT)) {
+        try (AmicaNode node = node(1, 30, SIMPLE_LIGHT)) {
             node.keepAlive();
             Device device = device("AmicaSimpleLight", node.id());
             SimpleLightProvider light = provider(SimpleLightProvider.class, node.id());

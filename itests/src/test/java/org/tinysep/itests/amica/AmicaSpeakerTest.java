@@ -15,6 +15,7 @@ import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.actuator.SpeakerProvider;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.sensor.Percent;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * AmICA Speaker in a real framework over real UDP: Speaker Control status in, volume out; setVolume puts
@@ -26,7 +27,7 @@ public class AmicaSpeakerTest extends AmicaTestSupport {
 
     @Test
     public void aSpeakerNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
-        try (SimulatedNode node = node(1, 22, SPEAKER)) {
+        try (AmicaNode node = node(1, 22, SPEAKER)) {
             node.keepAlive();
             Device device = device("AmicaSpeaker", node.id());
             SpeakerProvider provider = provider(SpeakerProvider.class, node.id());

@@ -13,6 +13,7 @@ import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
@@ -24,8 +25,8 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
     static final String BUS = "BusRadioAmicaUdp";
 
     /** @return a simulated node that talks to the running UDP bus radio */
-    protected SimulatedNode node(int netgroup, int address, AmicaNodeType... types) throws Exception {
-        return new SimulatedNode(netgroup, address, udpPortOf(BUS), types);
+    protected AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws Exception {
+        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
     }
 
     /** Waits for the provider service of that interface at that node address. */
@@ -72,7 +73,7 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
     }
 
     /** Reads the next command the platform sends to the node and compares it byte by byte. */
-    protected static void expectCommand(SimulatedNode node, int... payload) throws Exception {
+    protected static void expectCommand(AmicaNode node, int... payload) throws Exception {
         byte[] expected = new byte[payload.length];
         for (int i = 0; i < payload.length; i++) {
             expected[i] = (byte) payload[i];

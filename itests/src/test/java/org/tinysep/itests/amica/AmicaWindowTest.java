@@ -17,6 +17,7 @@ import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.itests.AmicaNode;
 
 /** AmICA Window in a real framework over real UDP: keep-alive, reed-switch changes, the position parameter. */
 @RunWith(PaxExam.class)
@@ -25,7 +26,7 @@ public class AmicaWindowTest extends AmicaTestSupport {
 
     @Test
     public void aWindowNodeBecomesAWindowWhoseChangesReachItsListeners() throws Exception {
-        try (SimulatedNode node = node(1, 21, WINDOW)) {
+        try (AmicaNode node = node(1, 21, WINDOW)) {
             node.keepAlive();
             Device device = device("AmicaWindow", node.id());
             WindowProvider window = provider(WindowProvider.class, node.id());

@@ -16,6 +16,7 @@ import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.api.actuator.SimpleLightProvider;
 import org.tinysep.api.sensor.MovementProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * Thesis 3.9.1: "one AmICA sensor node can be of several types". A motion-activated lamp announces movement +
@@ -28,7 +29,7 @@ public class MultiTypeNodeTest extends AmicaTestSupport {
 
     @Test
     public void aMovementAndLightNodeYieldsOneDevicePerType() throws Exception {
-        try (SimulatedNode node = node(1, 40, MOVEMENT, SIMPLE_LIGHT)) {
+        try (AmicaNode node = node(1, 40, MOVEMENT, SIMPLE_LIGHT)) {
             node.keepAlive();
             device("AmicaMovement", node.id());
             device("AmicaSimpleLight", node.id());

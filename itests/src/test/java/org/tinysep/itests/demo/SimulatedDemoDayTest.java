@@ -19,16 +19,14 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.Test;
 import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
-import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.Driver;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.itests.mail.SmtpSink;
 import org.tinysep.simulator.cli.Run;
 
@@ -44,7 +42,7 @@ import org.tinysep.simulator.cli.Run;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
-public class SimulatedDemoDayTest extends TinySepTestSupport {
+public class SimulatedDemoDayTest extends LockStepTestSupport {
 
     private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
 
@@ -84,19 +82,9 @@ public class SimulatedDemoDayTest extends TinySepTestSupport {
             "15:29:42 WATCHING"); // 15:30 Ben arrives (-18 s jitter): the door opening is activity
 
     @Override
-    protected List<Option> options() {
-        List<Option> o = super.options();
-        o.addAll(sunSpotBundles(5));
-        o.add(reactorBundle("org.tinysep.simulator", 5));
-        return o;
-    }
-
-    @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.timecontroller",
-                Map.of("mode", "EXTERNAL", "syncPort", "0", "syncBindAddress", "127.0.0.1"));
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000")); // the whole day's event log
         try {
             Path house = Files.createTempDirectory("tinysep-demo-house-").resolve("house.xml");
             Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
@@ -151,7 +139,8 @@ public class SimulatedDemoDayTest extends TinySepTestSupport {
             sink.await(1, Duration.ofSeconds(10));
 
             assertEquals("Flat Occupancy's changes", OCCUPANCY, record.occupancy);
-            assertEquals("rooms lit by Follow Me Light, in order", ROOMS_LIT, record.roomsLit());
+            assertEquals("rooms whose lights Follow Me Light switched on, in order", ROOMS_LIT,
+                    record.roomsRequested(awaitService(EventLog.class, null, TIMEOUT), house));
             assertEquals("Inactivity Recognition's states", INACTIVITY,
                     record.inactivity.stream().map(e -> e.endsWith(" ALERT") ? e.substring(0, 5) + " ALERT" : e).toList());
             assertEquals("exactly one ALERT", 1, record.inactivity.stream().filter(s -> s.endsWith(" ALERT")).count());
@@ -168,14 +157,4 @@ public class SimulatedDemoDayTest extends TinySepTestSupport {
         }
     }
 
-    private int syncPort() {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
-        try {
-            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
-                    .getProperty("tinysep.sync.port")).intValue();
-        } catch (Exception e) {
-            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
-        }
-    }
 }

@@ -8,7 +8,8 @@ import org.osgi.framework.Constants;
 /**
  * The framework launch properties of a TinySEP distribution rooted at {@code home}.
  *
- * <p>The cache {@code var/felix-cache} is cleaned on every launch ({@code onFirstInit}): the distribution's
+ * <p>The state folder ({@code tinysep.var}, default {@code <home>/var}) holds TinySEP's own state; the framework cache
+ * {@code <var>/felix-cache} is cleaned on every launch ({@code onFirstInit}): the distribution's
  * folders, not the cache, are the source of truth (bundles/, etc/*.cfg, deploy/). FileInstall watches
  * {@code etc/} for ConfigAdmin {@code *.cfg} files; the shipped {@code etc/org.apache.felix.fileinstall-deploy.cfg}
  * adds a second watcher on {@code deploy/} for hot-deployed jars.
@@ -17,6 +18,8 @@ public final class FrameworkConfig {
 
     /** Framework property holding the distribution directory (usable as {@code ${tinysep.home}} in cfg files). */
     public static final String HOME = "tinysep.home";
+    /** Framework property holding the state folder (usable as {@code ${tinysep.var}} in cfg files). */
+    public static final String VAR = "tinysep.var";
     /** Felix's hook for its own log output: an {@code org.apache.felix.framework.Logger} instance ({@link FelixLog}). */
     static final String FELIX_LOGGER = "felix.log.logger";
 
@@ -30,9 +33,21 @@ public final class FrameworkConfig {
      * @return launch properties; all values are strings
      */
     public static Map<String, String> properties(Path home, boolean daemon, int startLevel) {
+        return properties(home, home.resolve("var"), daemon, startLevel);
+    }
+
+    /**
+     * @param home       the distribution directory
+     * @param var        the state folder
+     * @param daemon     whether the Gogo shell must stay non-interactive
+     * @param startLevel the framework's beginning start level (the highest group level)
+     * @return launch properties; all values are strings
+     */
+    public static Map<String, String> properties(Path home, Path var, boolean daemon, int startLevel) {
         Map<String, String> p = new HashMap<>();
         p.put(HOME, home.toString());
-        p.put(Constants.FRAMEWORK_STORAGE, home.resolve("var").resolve("felix-cache").toString());
+        p.put(VAR, var.toString());
+        p.put(Constants.FRAMEWORK_STORAGE, var.resolve("felix-cache").toString());
         p.put(Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT);
         p.put(Constants.FRAMEWORK_BEGINNING_STARTLEVEL, Integer.toString(startLevel));
         p.put("felix.startlevel.bundle", Integer.toString(startLevel)); // bundles installed later: deploy/, shell

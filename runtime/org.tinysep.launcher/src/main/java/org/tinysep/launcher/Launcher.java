@@ -35,6 +35,10 @@ public final class Launcher {
 
     /** Symbolic name of the interactive Gogo shell. */
     public static final String SHELL_BSN = "org.apache.felix.gogo.shell";
+    /** Symbolic name of the drivers list bundle, which installs the {@value #APPS_GROUP} group when present. */
+    public static final String DRIVERS_BSN = "org.tinysep.drivers";
+    /** Name of the group the drivers list installs (folder {@code 5-apps}). */
+    public static final String APPS_GROUP = "apps";
 
     private static final Logger LOG = LoggerFactory.getLogger(Launcher.class);
     private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
@@ -43,6 +47,8 @@ public final class Launcher {
     private final Map<Long, String> errors = new ConcurrentHashMap<>();
     private final Map<Bundle, String> groupOf = new LinkedHashMap<>();
     private final List<StartReport.Failure> installFailures = new ArrayList<>();
+    /** Groups left to the drivers list: their bundles are reported, not installed, by the launcher. */
+    private final List<BundleGroup> delegated = new ArrayList<>();
     private volatile Framework framework;
     private Bundle shell;
 
@@ -64,10 +70,11 @@ public final class Launcher {
         int level = BundleLayout.maxStartLevel(groups);
         Files.createDirectories(home.resolve("deploy"));
         Files.createDirectories(home.resolve("etc"));
-        LOG.info("Starting TinySEP from {} ({} bundle groups, {})", home, groups.size(),
+        Files.createDirectories(options.var());
+        LOG.info("Starting TinySEP from {}, state in {} ({} bundle groups, {})", home, options.var(), groups.size(),
                 options.daemon() ? "daemon" : "interactive");
 
-        Map<String, Object> config = new HashMap<>(FrameworkConfig.properties(home, options.daemon(), level));
+        Map<String, Object> config = new HashMap<>(FrameworkConfig.properties(home, options.var(), options.daemon(), level));
         config.put(FrameworkConfig.FELIX_LOGGER, new FelixLog()); // Felix takes a Logger instance here
         @SuppressWarnings({"unchecked", "rawtypes"})
         Map<String, String> launchProperties = (Map) config;
@@ -85,8 +92,17 @@ public final class Launcher {
                 started.countDown();
             }
         });
+        boolean driversList = groups.stream().flatMap(g -> g.jars().stream())
+                .anyMatch(jar -> DRIVERS_BSN.equals(symbolicName(jar)));
         for (BundleGroup group : groups) {
-            install(fw.getBundleContext(), group);
+            if (driversList && APPS_GROUP.equals(group.name())) {
+                delegated.add(group); // the drivers list (var/drivers.xml) installs and starts these
+            } else {
+                install(fw.getBundleContext(), group);
+            }
+        }
+        if (!driversList) {
+            LOG.warn("No {} bundle: the launcher installs bundles/*-{} itself", DRIVERS_BSN, APPS_GROUP);
         }
         fw.start();
         if (!started.await(START_TIMEOUT.toSeconds(), TimeUnit.SECONDS)) {
@@ -159,7 +175,21 @@ public final class Launcher {
         }
     }
 
+    /** Adds the bundles the drivers list installed from a delegated group's folder to {@code groupOf}. */
+    private void collectDelegated() {
+        for (BundleGroup group : delegated) {
+            String folder = options.home().resolve("bundles").resolve(group.label()).toUri().toString();
+            for (Bundle b : framework.getBundleContext().getBundles()) {
+                String location = b.getLocation().replace("file:///", "file:/");
+                if (!groupOf.containsKey(b) && location.startsWith(folder.replace("file:///", "file:/"))) {
+                    groupOf.put(b, group.label());
+                }
+            }
+        }
+    }
+
     private StartReport report(Duration took, int level) {
+        collectDelegated();
         Map<String, Integer> active = new LinkedHashMap<>();
         List<StartReport.Failure> failures = new ArrayList<>(installFailures);
         groupOf.forEach((bundle, group) -> {
@@ -174,6 +204,7 @@ public final class Launcher {
                 failures.add(new StartReport.Failure(bundle.getSymbolicName() + " " + bundle.getVersion(), group, reason));
             }
         });
+        delegated.forEach(g -> active.putIfAbsent(g.label(), 0));
         int installed = groupOf.size() - (shell == null ? 0 : 1) + installFailures.size();
         String version = Main.class.getPackage().getImplementationVersion();
         return new StartReport(version == null ? "(dev)" : version, took, level, options.daemon(),

@@ -10,22 +10,33 @@ import java.util.Map;
  * Command-line options of the launcher.
  *
  * @param daemon run without the interactive Gogo shell until SIGTERM ({@code --daemon} or {@code TINYSEP_DAEMON=1})
- * @param home   the distribution directory holding {@code bundles/}, {@code etc/}, {@code deploy/} and {@code var/}
+ * @param home   the distribution directory holding {@code bundles/}, {@code etc/} and {@code deploy/}
+ * @param var    the state folder (framework property {@code tinysep.var}): the drivers list, the house, the mail
+ *               spool, the framework cache; default {@code <home>/var}
  * @param help   print the usage and exit
  */
-public record Options(boolean daemon, Path home, boolean help) {
+public record Options(boolean daemon, Path home, Path var, boolean help) {
+
+    /** Options whose state folder is {@code <home>/var}. */
+    public Options(boolean daemon, Path home, boolean help) {
+        this(daemon, home, home.resolve("var"), help);
+    }
 
     /** Environment variable that switches daemon mode on ({@code 1}, {@code true} or {@code yes}). */
     public static final String DAEMON_ENV = "TINYSEP_DAEMON";
     /** System property naming the distribution directory. */
     public static final String HOME_PROPERTY = "tinysep.home";
+    /** System property naming the state folder. */
+    public static final String VAR_PROPERTY = "tinysep.var";
 
     /** The usage text printed by {@code --help} and on a bad argument. */
     public static final String USAGE = String.join(System.lineSeparator(),
-            "Usage: java -jar tinysep.jar [--daemon] [--home DIR] [--help]",
+            "Usage: java -jar tinysep.jar [--daemon] [--home DIR] [--var DIR] [--help]",
             "  --daemon, -d   no interactive shell; run until SIGTERM (also: TINYSEP_DAEMON=1)",
             "  --home DIR     distribution directory (default: -Dtinysep.home, else the folder of tinysep.jar,",
             "                 else the current directory)",
+            "  --var DIR      state folder: drivers list, house, mail spool, framework cache (default:",
+            "                 -Dtinysep.var, else <home>/var)",
             "  --help, -h     print this text");
 
     /**
@@ -40,6 +51,8 @@ public record Options(boolean daemon, Path home, boolean help) {
         boolean daemon = isTrue(env.get(DAEMON_ENV));
         boolean help = false;
         Path home = defaultHome;
+        String varProperty = System.getProperty(VAR_PROPERTY);
+        Path var = varProperty == null || varProperty.isBlank() ? null : Path.of(varProperty);
         for (int i = 0; i < args.size(); i++) {
             String arg = args.get(i);
             switch (arg) {
@@ -51,16 +64,26 @@ public record Options(boolean daemon, Path home, boolean help) {
                     }
                     home = Path.of(args.get(++i));
                 }
+                case "--var" -> {
+                    if (i + 1 >= args.size()) {
+                        throw new IllegalArgumentException("--var needs a directory");
+                    }
+                    var = Path.of(args.get(++i));
+                }
                 default -> {
                     if (arg.startsWith("--home=") && arg.length() > "--home=".length()) {
                         home = Path.of(arg.substring("--home=".length()));
+                    } else if (arg.startsWith("--var=") && arg.length() > "--var=".length()) {
+                        var = Path.of(arg.substring("--var=".length()));
                     } else {
                         throw new IllegalArgumentException("unknown argument: " + arg);
                     }
                 }
             }
         }
-        return new Options(daemon, home.toAbsolutePath().normalize(), help);
+        Path absoluteHome = home.toAbsolutePath().normalize();
+        Path absoluteVar = (var == null ? absoluteHome.resolve("var") : var.toAbsolutePath()).normalize();
+        return new Options(daemon, absoluteHome, absoluteVar, help);
     }
 
     /**

@@ -2,16 +2,8 @@ package org.tinysep.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
-import java.io.ByteArrayInputStream;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.lang.reflect.InvocationTargetException;
-import java.lang.reflect.Method;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -21,7 +13,6 @@ import java.util.function.BooleanSupplier;
 import java.util.jar.Attributes;
 import java.util.jar.JarOutputStream;
 import java.util.jar.Manifest;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -41,18 +32,15 @@ class DistributionIT {
 
     @TempDir
     static Path home;
+    private static TestDistribution dist;
     private static Launcher launcher;
     private static StartReport report;
 
     @BeforeAll
     static void boot() throws Exception {
-        LoggingDefaults.apply();
-        copyDistribution(Path.of(System.getProperty("tinysep.dist", "target/tinysep")), home);
-        Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=0\nbindAddress=127.0.0.1\n");
-        Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
-        launcher = new Launcher(new Options(true, home, false));
-        report = launcher.start();
-        report.lines().forEach(System.out::println);
+        dist = new TestDistribution(home, null);
+        report = dist.start();
+        launcher = dist.launcher();
     }
 
     @AfterAll
@@ -119,19 +107,11 @@ class DistributionIT {
     }
 
     private static Bundle bundle(String bsn) {
-        return Arrays.stream(context().getBundles()).filter(b -> bsn.equals(b.getSymbolicName())).findFirst().orElse(null);
+        return dist.bundle(bsn);
     }
 
     private static boolean isActive(Bundle b) {
         return b != null && b.getState() == Bundle.ACTIVE;
-    }
-
-    private static boolean hasService(String type) {
-        try {
-            return context().getAllServiceReferences(type, null) != null;
-        } catch (Exception e) {
-            return false;
-        }
     }
 
     private static int udpPort() {
@@ -144,46 +124,12 @@ class DistributionIT {
         }
     }
 
-    /** Executes a Gogo command through the CommandProcessor service (reflectively: its classes live in a bundle). */
     private static String shell(String commandLine) throws Exception {
-        await(Duration.ofSeconds(10), () -> hasService("org.apache.felix.service.command.CommandProcessor"),
-                "Gogo CommandProcessor service");
-        // getAll…: this JVM's class path holds Gogo too, so the assignability check of getServiceReference would hide it
-        ServiceReference<?> ref = context().getAllServiceReferences("org.apache.felix.service.command.CommandProcessor", null)[0];
-        Object processor = context().getService(ref);
-        Class<?> processorType = ref.getBundle().loadClass("org.apache.felix.service.command.CommandProcessor");
-        Class<?> sessionType = ref.getBundle().loadClass("org.apache.felix.service.command.CommandSession");
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        Object session = processorType.getMethod("createSession", InputStream.class, OutputStream.class, OutputStream.class)
-                .invoke(processor, new ByteArrayInputStream(new byte[0]), out, out);
-        try {
-            Object result = sessionType.getMethod("execute", CharSequence.class).invoke(session, commandLine);
-            if (result != null) {
-                Method format = sessionType.getMethod("format", Object.class, int.class);
-                out.write(String.valueOf(format.invoke(session, result, 0)).getBytes(StandardCharsets.UTF_8));
-            }
-        } catch (InvocationTargetException e) {
-            fail("'" + commandLine + "' failed: " + e.getCause() + "\n" + out.toString(StandardCharsets.UTF_8));
-        } finally {
-            sessionType.getMethod("close").invoke(session);
-            context().ungetService(ref);
-        }
-        return out.toString(StandardCharsets.UTF_8);
+        return dist.shell(commandLine);
     }
 
     private static void await(Duration timeout, BooleanSupplier condition, String what) {
-        long deadline = System.nanoTime() + timeout.toNanos();
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("Timed out after " + timeout.toSeconds() + " s waiting for " + what);
-            }
-            try {
-                Thread.sleep(50);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                fail("interrupted waiting for " + what);
-            }
-        }
+        TestDistribution.await(timeout, condition, what);
     }
 
     private static void writeEmptyBundle(Path jar, String bsn) throws IOException {
@@ -197,19 +143,5 @@ class DistributionIT {
             out.flush();
         }
         Files.move(tmp, jar, StandardCopyOption.ATOMIC_MOVE);
-    }
-
-    private static void copyDistribution(Path from, Path to) throws IOException {
-        assertTrue(Files.isDirectory(from.resolve("bundles")), "no distribution at " + from.toAbsolutePath());
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : files.filter(p -> !from.relativize(p).startsWith("var")).toList()) {
-                Path target = to.resolve(from.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        }
     }
 }

@@ -21,6 +21,16 @@ class FrameworkConfigTest {
         assertEquals("/opt/tinysep", p.get("tinysep.home"));
         assertEquals("false", p.get("felix.bootdelegation.implicit"));
         assertFalse(p.containsKey("gosh.args"));
+        assertEquals("/opt/tinysep/var", p.get("tinysep.var"));
+    }
+
+    @Test
+    void stateFolderHoldsTheCacheWhenMovedOutOfHome() {
+        Map<String, String> p = FrameworkConfig.properties(HOME, Path.of("/data/tinysep"), false, 5);
+        assertEquals("/data/tinysep", p.get("tinysep.var"));
+        assertEquals("/data/tinysep/felix-cache", p.get("org.osgi.framework.storage"));
+        assertEquals("onFirstInit", p.get("org.osgi.framework.storage.clean"));
+        assertEquals("/opt/tinysep", p.get("tinysep.home"));
     }
 
     @Test

@@ -66,6 +66,29 @@ class LauncherTest {
     }
 
     @Test
+    void appsAreLeftToTheDriversListWhenItIsPartOfTheDistribution() throws Exception {
+        bundle("4-platform/drivers.jar", Map.of("Bundle-SymbolicName", Launcher.DRIVERS_BSN));
+        bundle("5-apps/app.jar", Map.of("Bundle-SymbolicName", "test.app"));
+        Path var = home.resolve("elsewhere/state");
+        launcher = new Launcher(new Options(true, home, var, false));
+        StartReport report = launcher.start();
+        assertEquals(null, find("test.app"), "the launcher no longer installs 5-apps");
+        assertEquals(0, report.active().get("5-apps"), "the group is still reported");
+        assertEquals(5, report.startLevel());
+        assertTrue(Files.isDirectory(var.resolve("felix-cache")), "framework cache in the state folder");
+        assertEquals(var.toString(), launcher.framework().getBundleContext().getProperty("tinysep.var"));
+    }
+
+    @Test
+    void withoutTheDriversListTheLauncherInstallsAppsItself() throws Exception {
+        bundle("5-apps/app.jar", Map.of("Bundle-SymbolicName", "test.app"));
+        launcher = new Launcher(new Options(true, home, false));
+        StartReport report = launcher.start();
+        assertEquals(Bundle.ACTIVE, find("test.app").getState());
+        assertEquals(1, report.active().get("5-apps"));
+    }
+
+    @Test
     void interactiveStartsTheShellOnlyWhenAsked() throws Exception {
         launcher = new Launcher(new Options(false, home, false));
         launcher.start();

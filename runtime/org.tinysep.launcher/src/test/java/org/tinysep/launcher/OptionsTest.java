@@ -39,6 +39,16 @@ class OptionsTest {
     }
 
     @Test
+    void stateFolderDefaultsToHomeVarAndFollowsVar() {
+        assertEquals(Path.of("/srv/t/var"), Options.parse(List.of("--home", "/srv/t"), Map.of(), HOME).var());
+        assertEquals(Path.of("/data/state"), Options.parse(List.of("--var", "/data/state"), Map.of(), HOME).var());
+        assertEquals(Path.of("/data/s2"), Options.parse(List.of("--var=/data/x/../s2"), Map.of(), HOME).var());
+        assertTrue(Options.parse(List.of("--var", "rel"), Map.of(), HOME).var().isAbsolute());
+        assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("--var"), Map.of(), HOME));
+        assertEquals(Path.of("/srv/t/var"), new Options(false, Path.of("/srv/t"), false).var());
+    }
+
+    @Test
     void help() {
         assertTrue(Options.parse(List.of("-h"), Map.of(), HOME).help());
         assertTrue(Options.parse(List.of("--daemon", "--help"), Map.of(), HOME).help());

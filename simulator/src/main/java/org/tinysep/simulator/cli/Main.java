@@ -39,6 +39,10 @@ public final class Main {
     }
 
     static void run(Options o) throws Exception {
+        if (o.replay() != null) {
+            ReplayRunner.run(o);
+            return;
+        }
         Flat flat = FlatLoader.load(o.flat());
         Scenario scenario = Simulation.scenario(o.scenario(), flat);
         InetAddress host = InetAddress.getByName(o.target());

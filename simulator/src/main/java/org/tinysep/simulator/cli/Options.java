@@ -9,7 +9,8 @@ import java.util.TreeMap;
 /** The command line, parsed: {@code --name value} pairs and the {@code --lockstep} flag. */
 record Options(String flat, String scenario, String target, int amicaPort, int sunSpotPort, int syncPort,
         double speed, boolean lockstep, long seed, int fromSecond, int untilSecond, LocalDate date,
-        int progressMinutes, int paceMillis, int jitter, double wander) {
+        int progressMinutes, int paceMillis, int jitter, double wander, String replay, String mapping,
+        boolean fullRate) {
 
     static final String USAGE = """
             usage: java -jar org.tinysep.simulator-<version>.jar [options]
@@ -28,6 +29,14 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
               --pace-ms <n>                lock-step pause after a second with changed values (default 5)
               --jitter <seconds>           scenario times move by up to +- this (default 90)
               --wander <p>                 chance per idle second of a short walk (default 0.002; pets x4)
+            replay of a recorded home instead of a flat and scenario (simulator/README-replay.md):
+              --replay <file>              Ordonez *_Sensors.txt or events.csv
+              --mapping <file|ordonez-a|ordonez-b>  sensor -> node mapping (default: built-in defaults)
+              --rate full|changes          full: every node repeats its state at the thesis rates (default);
+                                           changes: state changes and keep-alives only (lock-step skips quiet
+                                           seconds, ticking at least every 10 s)
+              --date <yyyy-mm-dd>          the virtual day of the recording's first day (default: the platform's
+                                           day, or the next one whose start is still ahead)
             """;
 
     static Options parse(String[] args) {
@@ -48,7 +57,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                 number(m, "speed", "1"), lockstep, (long) number(m, "seed", "1"), second(m, "from", "00:00"),
                 second(m, "until", "24:00"), m.containsKey("date") ? date(take(m, "date", null)) : null,
                 (int) number(m, "progress", "60"), (int) number(m, "pace-ms", "5"), (int) number(m, "jitter", "90"),
-                number(m, "wander", "0.002"));
+                number(m, "wander", "0.002"), take(m, "replay", null), take(m, "mapping", null),
+                rate(take(m, "rate", "full")));
         if (!m.isEmpty()) {
             throw new IllegalArgumentException("unknown option(s) " + m.keySet());
         }
@@ -59,6 +69,14 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
             throw new IllegalArgumentException("--until must be after --from");
         }
         return o;
+    }
+
+    private static boolean rate(String v) {
+        return switch (v) {
+        case "full" -> true;
+        case "changes" -> false;
+        default -> throw new IllegalArgumentException("--rate needs full or changes, not '" + v + "'");
+        };
     }
 
     private static String take(Map<String, String> m, String key, String fallback) {

@@ -17,4 +17,18 @@ public final class Run {
     public static void simulate(String... args) throws Exception {
         Main.run(Options.parse(args));
     }
+
+    /**
+     * Replays a recorded home ({@code --replay <file>}, see the README) and returns what was played, so that a test
+     * can map the platform's virtual times back onto the recording.
+     *
+     * @throws IllegalArgumentException on bad options or when {@code --replay} is missing
+     */
+    public static ReplayResult replay(String... args) throws Exception {
+        Options o = Options.parse(args);
+        if (o.replay() == null) {
+            throw new IllegalArgumentException("--replay <file> is needed");
+        }
+        return ReplayRunner.run(o);
+    }
 }

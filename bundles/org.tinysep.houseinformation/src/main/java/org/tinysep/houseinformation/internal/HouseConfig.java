@@ -7,7 +7,8 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 @ObjectClassDefinition(name = "House Information", description = "The house plan: rooms, types and neighbours.")
 public @interface HouseConfig {
 
-    @AttributeDefinition(description = "The house XML file (thesis Fig 3.7). Empty: ${tinysep.home}/var/house.xml "
-            + "when the property tinysep.home is set, else house.xml in the working directory")
+    @AttributeDefinition(description = "The house XML file (thesis Fig 3.7). Empty: ${tinysep.var}/house.xml "
+            + "when the property tinysep.var is set, else ${tinysep.home}/var/house.xml, else house.xml in the working "
+            + "directory")
     String file() default "";
 }

@@ -1,15 +1,10 @@
 package org.tinysep.houseinformation.internal;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.channels.FileChannel;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
-import java.nio.file.StandardOpenOption;
 import java.time.Instant;
-import java.time.ZoneOffset;
-import java.time.format.DateTimeFormatter;
+import org.tinysep.device.support.AtomicFiles;
 
 /**
  * The house file on disk. Writes are atomic (temp file in the same folder, fsync, atomic rename) and keep the
@@ -21,9 +16,6 @@ final class HouseFile {
     /** What loading found: the plan to use and, when the file was malformed, what went wrong. */
     record Load(HousePlan plan, String problem) {
     }
-
-    private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")
-            .withZone(ZoneOffset.UTC);
 
     private final Path file;
     private final Path backup;
@@ -55,8 +47,7 @@ final class HouseFile {
             diskIsGood = true;
             return new Load(plan, null);
         } catch (MalformedHouseException broken) {
-            Path aside = asideName(now);
-            Files.move(file, aside, StandardCopyOption.ATOMIC_MOVE);
+            Path aside = AtomicFiles.moveAside(file, now);
             String problem = broken.getMessage() + "; moved aside to " + aside.getFileName();
             if (!Files.exists(backup)) {
                 return new Load(HousePlan.EMPTY, problem + "; no " + backup.getFileName()
@@ -86,7 +77,7 @@ final class HouseFile {
             if (diskIsGood) {
                 replace(backup, Files.readAllBytes(file));
             } else {
-                Files.move(file, asideName(Instant.now()), StandardCopyOption.ATOMIC_MOVE);
+                AtomicFiles.moveAside(file, Instant.now());
             }
         }
         replace(file, bytes);
@@ -95,37 +86,6 @@ final class HouseFile {
 
     /** Writes {@code bytes} to a temp file next to {@code target}, syncs it, renames it over {@code target}. */
     private void replace(Path target, byte[] bytes) throws IOException {
-        Path tmp = Files.createTempFile(target.getParent(), target.getFileName() + ".", ".tmp");
-        try {
-            try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
-                ByteBuffer buf = ByteBuffer.wrap(bytes);
-                while (buf.hasRemaining()) {
-                    ch.write(buf);
-                }
-                ch.force(true);
-            }
-            beforeRename.run();
-            Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-        } finally {
-            Files.deleteIfExists(tmp);
-        }
-        syncDirectory(target.getParent());
-    }
-
-    private static void syncDirectory(Path dir) {
-        try (FileChannel ch = FileChannel.open(dir, StandardOpenOption.READ)) {
-            ch.force(true);
-        } catch (IOException | UnsupportedOperationException ignored) {
-            // not every platform can sync a directory; the rename itself is atomic
-        }
-    }
-
-    private Path asideName(Instant now) {
-        String base = file.getFileName() + ".broken-" + STAMP.format(now);
-        Path p = file.resolveSibling(base);
-        for (int i = 2; Files.exists(p); i++) {
-            p = file.resolveSibling(base + "-" + i);
-        }
-        return p;
+        AtomicFiles.write(target, bytes, beforeRename);
     }
 }

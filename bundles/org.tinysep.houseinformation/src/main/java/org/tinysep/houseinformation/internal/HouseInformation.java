@@ -9,6 +9,7 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * House Information driver: creates its single device at once on activation, since it needs nothing else (thesis
@@ -30,7 +31,7 @@ public final class HouseInformation extends AbstractDriver {
     @Activate
     void activate(BundleContext bundleContext, HouseConfig config) {
         start(bundleContext);
-        Path file = houseFile(config.file(), bundleContext.getProperty(HOME));
+        Path file = houseFile(config.file(), bundleContext.getProperty(StateFolder.VAR), bundleContext.getProperty(HOME));
         LOG.info("House Information uses {}", file);
         addDevice(new HouseDevice(context(), new HouseFile(file, new HouseCodec())));
     }
@@ -40,14 +41,12 @@ public final class HouseInformation extends AbstractDriver {
         stop();
     }
 
-    /** @return the configured file, else {@code <home>/var/house.xml}, else {@code house.xml} */
-    static Path houseFile(String configured, String home) {
-        if (configured != null && !configured.isBlank()) {
-            return Path.of(configured.strip()).toAbsolutePath();
-        }
-        if (home != null && !home.isBlank()) {
-            return Path.of(home.strip(), "var", "house.xml").toAbsolutePath();
-        }
-        return Path.of("house.xml").toAbsolutePath();
+    /**
+     * @return the configured file, else {@code <tinysep.var>/house.xml}, else {@code <home>/var/house.xml}, else
+     *         {@code house.xml} in the working directory
+     */
+    static Path houseFile(String configured, String var, String home) {
+        return StateFolder.resolve(configured, var, home, "house.xml")
+                .orElseGet(() -> Path.of("house.xml").toAbsolutePath());
     }
 }

@@ -48,8 +48,9 @@ class HouseCommandsTest {
 
     @Test
     void defaultFileFollowsTinysepHome() {
-        assertEquals(Path.of("/opt/t/var/house.xml"), HouseInformation.houseFile("", "/opt/t"));
-        assertEquals(Path.of("/etc/h.xml"), HouseInformation.houseFile(" /etc/h.xml ", "/opt/t"));
-        assertEquals(Path.of("house.xml").toAbsolutePath(), HouseInformation.houseFile(null, null));
+        assertEquals(Path.of("/opt/t/var/house.xml"), HouseInformation.houseFile("", null, "/opt/t"));
+        assertEquals(Path.of("/srv/state/house.xml"), HouseInformation.houseFile("", "/srv/state", "/opt/t"));
+        assertEquals(Path.of("/etc/h.xml"), HouseInformation.houseFile(" /etc/h.xml ", "/srv/state", "/opt/t"));
+        assertEquals(Path.of("house.xml").toAbsolutePath(), HouseInformation.houseFile(null, null, null));
     }
 }

@@ -3,7 +3,9 @@ package org.tinysep.inactivity.internal;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
@@ -37,6 +39,7 @@ final class InactivityDevice extends AbstractDevice
     private final ActivityFactory activities;
     private final HelpCall help;
     private volatile String occupancySource;
+    private final RoomActivity rooms = new RoomActivity();
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
         super(context, Uids.of(context.driverName(), "inactivity"), context.driverName(), "Inactivity recognition");
@@ -92,6 +95,8 @@ final class InactivityDevice extends AbstractDevice
         synchronized (logic) {
             change = logic.activity(a);
         }
+        rooms.seen(a);
+        stateChanged(); // last activity per room, saved at most once a second (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());
     }
 
@@ -187,7 +192,25 @@ final class InactivityDevice extends AbstractDevice
                             .map(a -> a.description() + " in " + a.roomName() + " at " + a.at()).orElse(""),
                             "the last activity seen"),
                     Parameter.readOnly("alert", logic.alert().map(help::subject).orElse(""), "the raised alert"),
+                    Parameter.readOnly("lastActivityPerRoom", rooms.describe(), "room uid = last activity there"),
                     Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"));
+        }
+    }
+
+    @Override
+    protected Map<String, String> backupState() {
+        synchronized (logic) {
+            return rooms.state(logic.lastActivity().orElse(null));
+        }
+    }
+
+    @Override
+    protected void onRestore(ComponentBackup saved) {
+        Activity last = rooms.restore(saved.state());
+        if (last != null) {
+            synchronized (logic) {
+                logic.activity(last);
+            }
         }
     }
 

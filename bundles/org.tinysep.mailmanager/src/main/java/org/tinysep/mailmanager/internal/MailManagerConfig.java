@@ -41,7 +41,7 @@ public @interface MailManagerConfig {
     @AttributeDefinition(description = "Longest retry delay in seconds")
     int retryMaxSeconds() default MailSettings.DEFAULT_RETRY_MAX;
 
-    @AttributeDefinition(description = "Spool folder for queued mail; empty = ${tinysep.home}/var/mail-spool, or "
-            + "mail-spool when tinysep.home is not set")
+    @AttributeDefinition(description = "Spool folder for queued mail; empty = ${tinysep.var}/mail-spool, else "
+            + "${tinysep.home}/var/mail-spool, else mail-spool in the working directory")
     String spoolDir() default "";
 }

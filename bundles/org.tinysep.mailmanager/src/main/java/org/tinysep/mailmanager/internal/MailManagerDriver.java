@@ -12,6 +12,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * Mail Manager driver (thesis 4.4.3.3): like House Information it creates its one device at once, with no
@@ -26,6 +27,7 @@ public final class MailManagerDriver extends AbstractDriver {
 
     private static final Logger LOG = LoggerFactory.getLogger(MailManagerDriver.class);
 
+    private String tinysepVar;
     private String tinysepHome;
     private MailManagerDevice device;
 
@@ -35,7 +37,8 @@ public final class MailManagerDriver extends AbstractDriver {
 
     @Activate
     void activate(BundleContext bundleContext, Map<String, Object> properties) {
-        tinysepHome = bundleContext.getProperty("tinysep.home");
+        tinysepVar = bundleContext.getProperty(StateFolder.VAR);
+        tinysepHome = bundleContext.getProperty(StateFolder.HOME);
         start(bundleContext);
         Parsed p = parse(properties);
         device = addDevice(new MailManagerDevice(context(), p.settings, p.problem, new SmtpTransport()));
@@ -57,14 +60,14 @@ public final class MailManagerDriver extends AbstractDriver {
 
     private Parsed parse(Map<String, Object> properties) {
         try {
-            MailSettings s = MailSettings.parse(properties, tinysepHome);
+            MailSettings s = MailSettings.parse(properties, tinysepVar, tinysepHome);
             LOG.info("{} configured: {}", NAME, s.redacted());
             return new Parsed(s, null);
         } catch (IllegalArgumentException e) {
             String problem = "configuration " + PID + " refused: " + e.getMessage();
             LOG.warn("{}; mail is written to the log until it is fixed", problem);
             context().event(EventKind.PROBLEM, problem);
-            MailSettings fallback = MailSettings.parse(Map.of("spoolDir", spoolDirOf(properties)), tinysepHome);
+            MailSettings fallback = MailSettings.parse(Map.of("spoolDir", spoolDirOf(properties)), tinysepVar, tinysepHome);
             return new Parsed(fallback, e.getMessage());
         }
     }

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Pattern;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * The validated Mail Manager configuration. {@link #toString()} and {@link #redacted()} never show the password.
@@ -37,6 +38,17 @@ record MailSettings(String host, int port, Security security, String user, Strin
      * @throws IllegalArgumentException naming the key, the bad value (never the password) and what is expected
      */
     static MailSettings parse(Map<String, ?> props, String tinysepHome) {
+        return parse(props, null, tinysepHome);
+    }
+
+    /**
+     * Reads and validates a ConfigAdmin dictionary; absent keys take their defaults.
+     *
+     * @param tinysepVar  the {@code tinysep.var} property (state folder), or null
+     * @param tinysepHome the {@code tinysep.home} property, or null
+     * @throws IllegalArgumentException naming the key, the bad value (never the password) and what is expected
+     */
+    static MailSettings parse(Map<String, ?> props, String tinysepVar, String tinysepHome) {
         String host = text(props, "host");
         int port = number(props, "port", DEFAULT_PORT, 1, 65535);
         Security security = security(text(props, "security"));
@@ -66,7 +78,7 @@ record MailSettings(String host, int port, Security security, String user, Strin
             }
         }
         return new MailSettings(host, port, security, user, password, from, recipients, timeout, initial, max,
-                spoolDir(text(props, "spoolDir"), tinysepHome));
+                spoolDir(text(props, "spoolDir"), tinysepVar, tinysepHome));
     }
 
     private static String text(Map<String, ?> props, String key) {
@@ -117,12 +129,10 @@ record MailSettings(String host, int port, Security security, String user, Strin
         return List.copyOf(all);
     }
 
-    private static Path spoolDir(String v, String tinysepHome) {
-        if (!v.isEmpty()) {
-            return Path.of(v).toAbsolutePath();
-        }
-        boolean home = tinysepHome != null && !tinysepHome.isBlank();
-        return (home ? Path.of(tinysepHome, "var", "mail-spool") : Path.of("mail-spool")).toAbsolutePath();
+    /** @return the configured folder, else {@code <var>/mail-spool}, {@code <home>/var/mail-spool}, {@code mail-spool} */
+    private static Path spoolDir(String v, String tinysepVar, String tinysepHome) {
+        return StateFolder.resolve(v, tinysepVar, tinysepHome, "mail-spool")
+                .orElseGet(() -> Path.of("mail-spool").toAbsolutePath());
     }
 
     /** @return a one-line description without the password */

@@ -39,6 +39,14 @@ class MailSettingsTest {
     }
 
     @Test
+    void spoolLivesInTheStateFolderFirst() {
+        assertEquals(Path.of("/srv/tinysep-var/mail-spool"),
+                MailSettings.parse(Map.of(), "/srv/tinysep-var", "/opt/tinysep").spoolDir());
+        assertEquals(Path.of("/opt/tinysep/var/mail-spool"), MailSettings.parse(Map.of(), null, "/opt/tinysep").spoolDir());
+        assertEquals(Path.of("/q"), MailSettings.parse(Map.of("spoolDir", "/q"), "/srv/tinysep-var", "/opt/tinysep").spoolDir());
+    }
+
+    @Test
     void badValuesGetClearMessages() {
         assertEquals("port must be a whole number, was 'abc'", problem("port", "abc"));
         assertEquals("port must be between 1 and 65535, was 70000", problem("port", 70000));

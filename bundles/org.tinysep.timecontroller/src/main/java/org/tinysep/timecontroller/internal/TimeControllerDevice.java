@@ -60,6 +60,12 @@ final class TimeControllerDevice extends AbstractDevice {
         link = state;
     }
 
+    /** {@code mode} is kept in ConfigAdmin (etc/*.cfg), the source of truth; not in the system backup. */
+    @Override
+    protected boolean backedUp(String key) {
+        return !"mode".equals(key);
+    }
+
     @Override
     protected List<Parameter> moreParameters() {
         return List.of(

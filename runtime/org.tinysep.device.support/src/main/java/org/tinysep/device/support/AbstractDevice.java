@@ -3,7 +3,9 @@ package org.tinysep.device.support;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.ConnectionInfo;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceFunction;
@@ -25,6 +27,7 @@ public abstract class AbstractDevice implements Device {
     private final DeviceServices services = new DeviceServices();
     private final Consumptions consumptions = new Consumptions();
     private final RoomPlacement room;
+    private final DeviceBackup backup = new DeviceBackup(this);
     private volatile String name;
     private volatile DeviceStatus status;
 
@@ -38,7 +41,7 @@ public abstract class AbstractDevice implements Device {
         services.property(DeviceProperties.DEVICE_TYPE, type);
         services.property(DeviceProperties.DRIVER_UID, context.driverUid());
         services.property(DeviceProperties.DRIVER_NAME, context.driverName());
-        this.room = new RoomPlacement(uid, context, services::property);
+        this.room = new RoomPlacement(uid, context, services::property, backup::save);
     }
 
     /**
@@ -67,6 +70,7 @@ public abstract class AbstractDevice implements Device {
     /** Registers the device's services. Called by its driver once constructed. */
     final void register() {
         services.register(context.bundleContext(), this);
+        backup.activate();
         onRegistered();
     }
 
@@ -76,6 +80,8 @@ public abstract class AbstractDevice implements Device {
 
     /** Unregisters the services and closes every connection, both ways. Called by its driver. */
     final void dispose() {
+        backup.save(); // the last state (e.g. last seen) before an orderly stop
+        backup.deactivate();
         room.close();
         services.unregister();
         for (ConnectionInfo c : consumptions.infos()) {
@@ -181,13 +187,59 @@ public abstract class AbstractDevice implements Device {
             }
             name = value.strip();
             context.reporter().event(EventKind.DEVICE_EVENT, uid, "renamed to \"" + name + "\"");
-            return;
-        }
-        if (RoomPlacement.KEY.equals(key) && placeable()) {
+        } else if (RoomPlacement.KEY.equals(key) && placeable()) {
             room.set(value);
-            return;
+        } else {
+            applyParameter(key, value);
         }
-        applyParameter(key, value);
+        backup.save(); // no waiting here: the shell waits (BackupStore.flush) before it acknowledges
+    }
+
+    // ---- system backup (thesis 3.7, docs/backup.md)
+
+    /** @return this device's backup as of now: name, room, kept writable parameters, node, state */
+    public final ComponentBackup backup() {
+        return backup.snapshot(placeable() ? room.roomUid() : null, parameters(),
+                services.property(DeviceProperties.NODE_ADDRESS), services.property(DeviceProperties.NODE_TYPE),
+                lastSeen(), backupState());
+    }
+
+    /** Applies a saved backup before the device registers; called by its driver. */
+    final void restore(ComponentBackup saved) {
+        if (!saved.name().isBlank()) {
+            name = saved.name();
+        }
+        DeviceBackup.restore(this, saved, room, placeable());
+        onRestore(saved);
+    }
+
+    /** @return whether a writable parameter is a setting kept in the backup (default all; commands are not) */
+    protected boolean backedUp(String key) {
+        return true;
+    }
+
+    /** @return when the device's node was last heard from, for the backup; null when not applicable */
+    protected Instant lastSeen() {
+        return null;
+    }
+
+    /** @return runtime state to keep across restarts (e.g. last activity per room); default none */
+    protected Map<String, String> backupState() {
+        return Map.of();
+    }
+
+    /** Takes runtime state back from a saved backup, before the device registers; default nothing. */
+    protected void onRestore(ComponentBackup saved) {
+    }
+
+    /** Saves the backup soon (no disk I/O on the caller's thread), e.g. after the device changed a setting. */
+    protected final void saveBackup() {
+        backup.save();
+    }
+
+    /** Runtime state changed (e.g. a packet arrived): saved at most once per second; cheap on the packet path. */
+    protected final void stateChanged() {
+        backup.stateChanged();
     }
 
     /** Applies a parameter other than {@code name} and {@code room}; the default knows none. */

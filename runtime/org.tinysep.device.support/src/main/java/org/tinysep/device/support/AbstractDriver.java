@@ -7,6 +7,8 @@ import java.util.List;
 import java.util.Map;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceRegistration;
+import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
@@ -47,6 +49,8 @@ public abstract class AbstractDriver implements Driver {
         props.put(DeviceProperties.DRIVER_UID, uid);
         props.put(DeviceProperties.DRIVER_NAME, name);
         registration = bundleContext.registerService(Driver.class, this, props);
+        context.backups().save(new ComponentBackup(uid, ComponentKind.DRIVER, uid, name, name, name, Map.of(), "",
+                List.of(), null, Map.of(), context.now())); // the driver's own file (docs/backup.md)
     }
 
     /**
@@ -55,7 +59,7 @@ public abstract class AbstractDriver implements Driver {
      */
     protected final void stop() {
         for (AbstractDevice d : snapshot()) {
-            removeDevice(d.uid());
+            remove(d.uid()); // their backups stay: they come back on the next start
         }
         ServiceRegistration<Driver> r = registration;
         registration = null;
@@ -80,7 +84,10 @@ public abstract class AbstractDriver implements Driver {
         return c;
     }
 
-    /** Registers a newly constructed device and adds it to this driver's list. */
+    /**
+     * Registers a newly constructed device and adds it to this driver's list. When the backup store holds a backup
+     * of the device (same UID), its saved settings are applied first, so it registers as it was (thesis 3.7).
+     */
     protected final <D extends AbstractDevice> D addDevice(D device) {
         synchronized (devices) {
             if (devices.containsKey(device.uid())) {
@@ -88,8 +95,17 @@ public abstract class AbstractDriver implements Driver {
             }
             devices.put(device.uid(), device);
         }
+        context().backups().find(device.uid()).ifPresent(device::restore);
         device.register();
         return device;
+    }
+
+    /**
+     * @return the backups of this driver's devices from before the restart: a bus radio re-creates its known
+     *         nodes from them before it opens its hardware (docs/backup.md)
+     */
+    protected final List<ComponentBackup> savedDevices() {
+        return context().backups().devicesOf(uid);
     }
 
     /**
@@ -107,13 +123,26 @@ public abstract class AbstractDriver implements Driver {
             boolean hadIt = d.connections().stream().anyMatch(c -> c.providerDeviceUid().equals(providerUid));
             if (hadIt && !d.providerGone(providerUid)) {
                 context().event(EventKind.DEVICE_EVENT, d.uid() + " lost its vital connections and is removed");
-                removeDevice(d.uid());
+                remove(d.uid()); // its backup stays: the settings come back with the provider
             }
         }
     }
 
+    /**
+     * Removes a device at the user's request (the device manager's {@code remove}): its backup is deleted too, so
+     * it is not re-created on the next start.
+     */
     @Override
     public final boolean removeDevice(String deviceUid) {
+        boolean removed = remove(deviceUid);
+        if (removed) {
+            context().backups().delete(deviceUid);
+        }
+        return removed;
+    }
+
+    /** Removes a device, keeping its backup. */
+    protected final boolean remove(String deviceUid) {
         AbstractDevice d;
         synchronized (devices) {
             d = devices.remove(deviceUid);

@@ -7,7 +7,7 @@ import org.tinysep.api.log.EventKind;
 
 /**
  * What a driver shares with its devices: the bundle context to register services with, the driver's identity,
- * the log reporter and the platform clock.
+ * the log reporter, the platform clock, the rooms and the backup store.
  */
 public final class DriverContext implements AutoCloseable {
 
@@ -17,11 +17,13 @@ public final class DriverContext implements AutoCloseable {
     private final Reporter reporter;
     private final PlatformClock clock;
     private final RoomDirectory rooms;
+    private final Backups backups;
 
     /** The context of a driver running in a framework: logs and clock follow the services. */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
         this(bundleContext, driverUid, driverName, Reporter.tracking(bundleContext),
-                PlatformClock.tracking(bundleContext), RoomDirectory.tracking(bundleContext));
+                PlatformClock.tracking(bundleContext), RoomDirectory.tracking(bundleContext),
+                Backups.tracking(bundleContext));
     }
 
     /**
@@ -36,7 +38,14 @@ public final class DriverContext implements AutoCloseable {
     /** A context with explicit parts including the rooms (e.g. {@link RoomDirectory#of} a fake house). */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName, Reporter reporter,
             PlatformClock clock, RoomDirectory rooms) {
+        this(bundleContext, driverUid, driverName, reporter, clock, rooms, Backups.none());
+    }
+
+    /** A context with explicit parts including the backup store (e.g. {@link Backups#of} an in-memory one). */
+    public DriverContext(BundleContext bundleContext, String driverUid, String driverName, Reporter reporter,
+            PlatformClock clock, RoomDirectory rooms, Backups backups) {
         this.rooms = rooms;
+        this.backups = backups;
         this.bundleContext = bundleContext;
         this.driverUid = driverUid;
         this.driverName = driverName;
@@ -88,6 +97,11 @@ public final class DriverContext implements AutoCloseable {
         return rooms;
     }
 
+    /** @return the device manager's backup store, when installed (thesis 3.7) */
+    public Backups backups() {
+        return backups;
+    }
+
     public Instant now() {
         return clock.now();
     }
@@ -100,6 +114,7 @@ public final class DriverContext implements AutoCloseable {
     @Override
     public void close() {
         rooms.close();
+        backups.close();
         clock.close();
         reporter.close();
     }

@@ -19,13 +19,20 @@ final class RoomPlacement {
     private final String deviceUid;
     private final DriverContext context;
     private final BiConsumer<String, Object> property;
+    private final Runnable changed;
     private volatile String roomUid;
     private Connection watch;
 
     RoomPlacement(String deviceUid, DriverContext context, BiConsumer<String, Object> property) {
+        this(deviceUid, context, property, () -> { });
+    }
+
+    /** @param changed told when the room changed by itself (the room was removed from the house) */
+    RoomPlacement(String deviceUid, DriverContext context, BiConsumer<String, Object> property, Runnable changed) {
         this.deviceUid = deviceUid;
         this.context = context;
         this.property = property;
+        this.changed = changed;
     }
 
     Parameter parameter() {
@@ -46,13 +53,28 @@ final class RoomPlacement {
             return;
         }
         Room room = context.rooms().resolve(value);
-        synchronized (this) {
-            if (watch == null) { // from the first placement on, a removed room is cleared
-                watch = context.rooms().watch(this::houseChanged);
-            }
-        }
+        watchHouse();
         place(room.uid());
         context.reporter().event(EventKind.DEVICE_EVENT, deviceUid, "placed in room " + Rooms.label(room));
+    }
+
+    /**
+     * Places the device in a room saved in its backup, before it registers: House Information may not be running
+     * yet, so the UID is taken as it is; when the house is there and lacks the room, the device is unplaced.
+     */
+    void restore(String uid) {
+        if (uid == null || uid.isBlank()) {
+            return;
+        }
+        watchHouse();
+        place(uid.strip());
+        context.rooms().house().ifPresent(h -> houseChanged(h.rooms()));
+    }
+
+    private synchronized void watchHouse() {
+        if (watch == null) { // from the first placement on, a removed room is cleared
+            watch = context.rooms().watch(this::houseChanged);
+        }
     }
 
     private void place(String uid) {
@@ -74,6 +96,7 @@ final class RoomPlacement {
             place(null);
             context.reporter().event(EventKind.DEVICE_EVENT, deviceUid, "room " + uid
                     + " was removed from the house; the device is no longer placed");
+            changed.run();
         }
     }
 }

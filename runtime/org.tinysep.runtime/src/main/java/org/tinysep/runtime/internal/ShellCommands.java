@@ -1,13 +1,17 @@
 package org.tinysep.runtime.internal;
 
+import java.time.Duration;
 import java.util.function.Supplier;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.backup.BackupStore;
 
 /**
  * The {@code tinysep} Gogo commands. Each returns its output as one String (no trailing newline), so it prints in
@@ -29,6 +33,9 @@ public final class ShellCommands {
     private static final Logger LOG = LoggerFactory.getLogger(ShellCommands.class);
 
     private final Operations operations;
+    /** The system backup (docs/backup.md): {@code set} is acknowledged once the change is on disk. */
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC)
+    volatile BackupStore backupStore;
 
     @Activate
     public ShellCommands(BundleContext context, @Reference(name = "inventory") Inventory inventory) {
@@ -56,12 +63,19 @@ public final class ShellCommands {
 
     /** {@code set <uid> <key> <value>}: changes one device parameter. */
     public String set(String uid, String key, String value) {
-        return run("set", () -> operations.setParameter(uid, key, value));
+        return run("set", () -> operations.setParameter(uid, key, value) + durable());
     }
 
     /** {@code invoke <uid> <function>}: runs one device function. */
     public String invoke(String uid, String function) {
         return run("invoke", () -> operations.invoke(uid, function));
+    }
+
+    /** Waits until the change is in the system backup; @return "" when it is, else a note for the user. */
+    private String durable() {
+        BackupStore store = backupStore;
+        return store == null || store.flush(Duration.ofSeconds(10)) ? ""
+                : " (not yet saved in the system backup: the disk did not answer within 10 s)";
     }
 
     static String run(String command, Supplier<String> body) {

@@ -1,15 +1,20 @@
 package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicLong;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
@@ -38,10 +43,14 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         String describe(R route);
     }
 
+    private static final Logger LOG = LoggerFactory.getLogger(AmicaBusDevice.class);
+
     private final AmicaAddress address;
     private final Link<R> link;
     private final Listeners<BusRadioAmicaListener> listeners;
     private final AtomicLong packets = new AtomicLong();
+    /** Held payloads for replacement listeners; its monitor also orders live delivery against replays. */
+    private final Handover handover = new Handover(System::nanoTime);
     private volatile Set<String> nodeTypes;
     private volatile KeepAlive keepAlive;
     private volatile R route;
@@ -66,6 +75,45 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         publish(this, BusRadioAmicaProvider.class);
     }
 
+    /**
+     * Re-creates the bus device of a node known before the restart (docs/backup.md): its last keep-alive and last
+     * seen time come from the backup, it has no route until the node is heard again, and its status says so.
+     *
+     * @throws IllegalArgumentException when the backup lacks the node address or keep-alive
+     */
+    public static <R> AmicaBusDevice<R> restored(DriverContext context, String type, ComponentBackup saved,
+            Link<R> link) {
+        Map<String, String> s = saved.state();
+        KeepAlive ka = new KeepAlive(Long.parseLong(s.getOrDefault("uptimeSeconds", "0")),
+                Integer.parseInt(s.getOrDefault("batteryMillivolts", "0")), Integer.parseInt(s.get("vendorId")),
+                Integer.parseInt(s.get("productId")), Long.parseLong(s.getOrDefault("serialNumber", "0")));
+        AmicaBusDevice<R> d = new AmicaBusDevice<>(context, type, AmicaAddress.parse(saved.nodeAddress()), ka,
+                null, link);
+        d.lastSeen = saved.lastSeen();
+        d.offline(NOT_HEARD + (saved.lastSeen() == null ? "" : " (last seen " + saved.lastSeen() + ")"));
+        return d;
+    }
+
+    /** The status detail of a node re-created from the backup and not heard since. */
+    public static final String NOT_HEARD = "not heard since restart";
+
+    @Override
+    protected Instant lastSeen() {
+        return lastSeen;
+    }
+
+    @Override
+    protected Map<String, String> backupState() {
+        KeepAlive ka = keepAlive;
+        Map<String, String> m = new LinkedHashMap<>();
+        m.put("vendorId", Integer.toString(ka.vendorId()));
+        m.put("productId", Integer.toString(ka.productId()));
+        m.put("serialNumber", Long.toString(ka.serialNumber()));
+        m.put("batteryMillivolts", Integer.toString(ka.batteryMillivolts()));
+        m.put("uptimeSeconds", Long.toString(ka.uptimeSeconds()));
+        return m;
+    }
+
     private static Set<String> typeNames(KeepAlive keepAlive) {
         Set<String> names = new TreeSet<>();
         keepAlive.nodeTypes().forEach(t -> names.add(t.typeName()));
@@ -88,7 +136,11 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         }
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
-        listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
+        synchronized (handover) {
+            handover.record(bytes, at);
+            listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
+        }
+        stateChanged(); // last seen, saved at most once a second, never on this thread
     }
 
     /** Marks the device OFFLINE, e.g. because its link went down; the next packet brings it back ONLINE. */
@@ -101,9 +153,24 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         return uid();
     }
 
+    /**
+     * Connects a listener. One that replaces a listener which left in the last 10 s (its driver is being updated)
+     * first gets the payloads received since, in order ({@link Handover}); nothing is lost in the swap.
+     */
     @Override
     public Connection connect(BusRadioAmicaListener listener) {
-        return listeners.add(listener);
+        synchronized (handover) {
+            Connection connection = listeners.add(listener);
+            for (Handover.Held h : handover.claim()) {
+                try {
+                    listener.payloadReceived(this, h.payload().clone(), h.at());
+                } catch (RuntimeException e) {
+                    LOG.warn("Listener {} of {} failed on a replayed payload: {}", listener.getClass().getName(), uid(),
+                            e.toString());
+                }
+            }
+            return new HandoverConnection(connection, handover);
+        }
     }
 
     @Override
@@ -140,7 +207,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         return List.of(
                 Parameter.readOnly("node", address, "netgroup.address of the node"),
                 Parameter.readOnly("nodeTypes", String.join(",", nodeTypes), "from the keep-alive product id"),
-                Parameter.readOnly("remote", link.describe(route),
+                Parameter.readOnly("remote", route == null ? NOT_HEARD : link.describe(route),
                         "where the node was last heard from; commands go there"),
                 Parameter.readOnly("lastSeen", lastSeen, "time of the last valid packet"),
                 Parameter.readOnly("packets", packets.get(), "valid packets received"),

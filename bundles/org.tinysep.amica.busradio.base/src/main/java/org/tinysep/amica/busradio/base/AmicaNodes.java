@@ -11,8 +11,10 @@ import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
 
 /**
@@ -77,6 +79,17 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         return register.apply(device);
     }
 
+    /**
+     * Re-creates the bus devices of the nodes known before the restart (their backups), before the transport
+     * opens; a backup that cannot be used is reported and skipped.
+     *
+     * @return how many were re-created
+     */
+    public int restore(List<ComponentBackup> saved) {
+        return Backups.recreate(context, saved, b -> AmicaBusDevice.restored(context, deviceType, b, this),
+                d -> nodes.putIfAbsent(d.address(), d) == null, register);
+    }
+
     /** Forgets the node of a removed bus device, so its next keep-alive creates it anew. */
     public void forget(AbstractDevice device) {
         if (device instanceof AmicaBusDevice<?> bus) {
@@ -111,6 +124,12 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     @Override
     public void send(AmicaBusDevice<R> device, byte[] payload, R route) {
         AmicaAddress node = device.address();
+        if (route == null) {
+            failed.incrementAndGet();
+            context.reporter().packet(Direction.SENT, "node " + node, payload, "not sent: node "
+                    + AmicaBusDevice.NOT_HEARD);
+            return;
+        }
         byte[] frame = AmicaCodec.encode(AmicaFrame.fromPlatform(node, sequence.getAndIncrement() & 0xFF, payload));
         String where = "node " + node + " via " + transport.describe(route);
         transport.transmit(frame, route, failure -> {
@@ -126,6 +145,6 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
 
     @Override
     public String describe(R route) {
-        return transport.describe(route);
+        return route == null ? AmicaBusDevice.NOT_HEARD : transport.describe(route);
     }
 }

@@ -91,6 +91,11 @@ final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLight
     }
 
     @Override
+    protected boolean backedUp(String key) {
+        return false; // its writable parameter is a command to the node, not a setting (docs/backup.md)
+    }
+
+    @Override
     protected List<Parameter> moreParameters() {
         return List.of(
                 Parameter.writable("on", on.value().orElse(null),

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import org.tinysep.amica.actuator.base.testing.FakeBus;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.HeaterControl;

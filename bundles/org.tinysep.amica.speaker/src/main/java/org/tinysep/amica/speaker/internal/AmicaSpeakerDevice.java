@@ -1,118 +1,46 @@
 package org.tinysep.amica.speaker.internal;
 
 import java.time.Instant;
-import java.util.List;
 import java.util.Optional;
-import org.tinysep.amica.protocol.AmicaPayloads;
-import org.tinysep.amica.protocol.AmicaProtocolException;
+import org.tinysep.amica.actuator.base.PercentActuatorDevice;
 import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.actuator.SpeakerListener;
 import org.tinysep.api.actuator.SpeakerProvider;
-import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
-import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.ConfirmedSetting;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.ParameterValues;
-import org.tinysep.device.support.Uids;
 
 /**
- * Abstracts one AmICA speaker node. Speaker Control status payloads (5 4 0 A) report the volume;
- * {@link #setVolume(Percent)} sends Speaker Control A and returns at once. Thesis actuator model:
- * the volume, its listeners and the event log change only when the node's next status report confirms it;
- * until then the request is shown as the read-only parameter {@code pending}.
+ * Abstracts one AmICA speaker node: Speaker Control status payloads report the volume,
+ * {@link #setVolume(Percent)} sends Speaker Control A. The shared actuator model (a request waits for
+ * the node's next report to confirm it) is {@link PercentActuatorDevice}.
  */
-final class AmicaSpeakerDevice extends AbstractDevice implements SpeakerProvider, BusRadioAmicaListener {
-
-    /** Status reports that may disagree with a request before it is given up (the first may cross it). */
-    static final int PATIENCE = 2;
-
-    private final BusRadioAmicaProvider bus;
-    private final Listeners<SpeakerListener> listeners;
-    private final ConfirmedSetting<Percent> volume = new ConfirmedSetting<>(v -> "volume " + v, PATIENCE,
-            this::event);
+final class AmicaSpeakerDevice extends PercentActuatorDevice<SpeakerControl, SpeakerListener> implements SpeakerProvider {
 
     AmicaSpeakerDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, Uids.of(context.driverName(), bus.deviceUid()), context.driverName(),
-                "Speaker " + bus.nodeId());
-        this.bus = bus;
-        this.listeners = new Listeners<>(uid());
-        serviceProperty(DeviceProperties.NODE_ADDRESS, bus.nodeId());
-        serviceProperty(DeviceProperties.NODE_TYPE, new String[] {NodeType.SPEAKER});
+        super(context, bus, "Speaker", NodeType.SPEAKER, "volume", SpeakerControl.class, SpeakerControl::percent, SpeakerControl::new);
         publish(this, SpeakerProvider.class);
     }
 
     @Override
-    protected void onRegistered() {
-        connect(bus, BusRadioAmicaProvider.class, this, true);
-    }
-
-    @Override
-    public void payloadReceived(BusRadioAmicaProvider source, byte[] payload, Instant at) {
-        Percent reported;
-        try {
-            if (!(AmicaPayloads.decode(payload) instanceof SpeakerControl control)) {
-                return; // keep-alives and other types of a multi-type node are not ours
-            }
-            reported = Percent.of(control.percent());
-        } catch (AmicaProtocolException e) {
-            return; // the bus radio already rejected and counted it
-        }
-        status(DeviceStatus.State.ONLINE, "");
-        volume.report(reported).ifPresent(v -> listeners.fire(l -> l.volumeChanged(this, v, at)));
+    protected void fire(SpeakerListener listener, Percent value, Instant at) {
+        listener.volumeChanged(this, value, at);
     }
 
     @Override
     public void setVolume(Percent value) {
-        if (value == null) {
-            throw new IllegalArgumentException("volume must not be null");
-        }
-        byte[] command = AmicaPayloads.encode(new SpeakerControl(value.value()));
-        if (!volume.request(value, () -> bus.send(command))) {
-            status(DeviceStatus.State.ERROR, "last command not sent, see the event log");
-        }
+        request(value);
     }
 
     @Override
     public Optional<Percent> volume() {
-        return volume.value();
-    }
-
-    @Override
-    public String deviceUid() {
-        return uid();
+        return value();
     }
 
     @Override
     public Connection connect(SpeakerListener listener) {
-        return listeners.add(listener);
-    }
-
-    @Override
-    protected List<Parameter> moreParameters() {
-        return List.of(
-                Parameter.writable("volume", volume.value().orElse(null),
-                        "0..100 %; shows the node's report, a change waits for the node to confirm it"),
-                volume.pendingParameter());
-    }
-
-    @Override
-    protected void applyParameter(String key, String value) {
-        if (!"volume".equals(key)) {
-            throw unknownParameter(key);
-        }
-        setVolume(ParameterValues.percent("volume", value));
-    }
-
-    @Override
-    protected void onDispose() {
-        listeners.closeAll();
+        return addListener(listener);
     }
 }

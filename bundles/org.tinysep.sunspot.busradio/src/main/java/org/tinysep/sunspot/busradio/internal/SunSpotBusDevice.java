@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.concurrent.atomic.AtomicLong;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.bus.BusRadioSunSpotListener;
 import org.tinysep.api.bus.BusRadioSunSpotProvider;
 import org.tinysep.api.device.Connection;
@@ -52,6 +53,37 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         publish(this, BusRadioSunSpotProvider.class);
     }
 
+    /** The status detail and link of a node re-created from the backup and not heard since. */
+    static final String NOT_HEARD = "not heard since restart";
+
+    /**
+     * Re-creates the bus device of a node known before the restart (docs/backup.md), with its node types and last
+     * seen time; it is OFFLINE until the node is heard again.
+     *
+     * @throws IllegalArgumentException when the backup lacks the address or a known node type
+     */
+    static SunSpotBusDevice restored(DriverContext context, String type, ComponentBackup saved) {
+        List<SunSpotSensorType> types = saved.nodeTypes().stream()
+                .map(t -> SunSpotSensorType.fromTypeName(t).orElseThrow(
+                        () -> new IllegalArgumentException("unknown node type " + t)))
+                .toList();
+        if (types.isEmpty()) {
+            throw new IllegalArgumentException("no node types saved");
+        }
+        SunSpotBusDevice d = new SunSpotBusDevice(context, type, SunSpotAddress.parse(saved.nodeAddress()),
+                types.get(0), NOT_HEARD);
+        types.forEach(d::addType);
+        d.lastSeen = saved.lastSeen();
+        d.status(DeviceStatus.State.OFFLINE, NOT_HEARD + (saved.lastSeen() == null ? ""
+                : " (last seen " + saved.lastSeen() + ")"));
+        return d;
+    }
+
+    @Override
+    protected Instant lastSeen() {
+        return lastSeen;
+    }
+
     /** Handles one valid packet from this node, on the link's receive thread: the device is ONLINE again. */
     void received(SunSpotFrame frame, SunSpotSensorType type, String from, Instant at) {
         link = from;
@@ -62,6 +94,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         int sensorType = frame.sensorType();
         listeners.fire(l -> l.payloadReceived(this, sensorType, bytes.clone(), at));
         packets.incrementAndGet(); // counted once delivered
+        stateChanged(); // last seen, saved at most once a second, never on this thread
     }
 
     private synchronized void addType(SunSpotSensorType type) {

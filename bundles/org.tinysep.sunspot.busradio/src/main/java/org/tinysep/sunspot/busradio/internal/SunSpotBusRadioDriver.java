@@ -49,6 +49,7 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
         rejects = new RejectCounter(context());
         nodes = new SunSpotNodes(context(), NAME, this::addDevice);
         handler = new PacketHandler(context(), nodes, rejects);
+        nodes.restore(savedDevices()); // known nodes as they were, before the links open (docs/backup.md)
         links.start(handler, nodes, context());
     }
 

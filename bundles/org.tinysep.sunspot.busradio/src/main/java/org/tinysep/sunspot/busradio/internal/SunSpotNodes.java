@@ -4,7 +4,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.UnaryOperator;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
@@ -53,6 +55,15 @@ final class SunSpotNodes {
                 throw e;
             }
         }
+    }
+
+    /** Re-creates the bus devices of the nodes known before the restart; an unusable backup is reported. */
+    int restore(List<ComponentBackup> saved) {
+        return Backups.recreate(context, saved, b -> SunSpotBusDevice.restored(context, deviceType, b), d -> {
+            synchronized (creating) {
+                return nodes.putIfAbsent(d.address(), d) == null;
+            }
+        }, register);
     }
 
     SunSpotBusDevice find(SunSpotAddress address) {

@@ -56,6 +56,7 @@ public final class AmicaSerialDriver extends AbstractDriver {
         if (settings.port() != null) {
             SerialRadio r = new SerialRadio(context(), settings, this::addDevice);
             radio = r;
+            r.restore(savedDevices()); // known nodes as they were, before the port opens (docs/backup.md)
             r.start();
         }
     }

@@ -52,6 +52,11 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         this.frames = new StreamFrames<>(handler, link);
     }
 
+    /** Re-creates the bus devices of the nodes known before the restart; call before {@link #start()}. */
+    void restore(java.util.List<org.tinysep.api.backup.ComponentBackup> saved) {
+        nodes.restore(saved);
+    }
+
     /** Opens the port on the link's thread; returns at once. */
     void start() {
         link.start();

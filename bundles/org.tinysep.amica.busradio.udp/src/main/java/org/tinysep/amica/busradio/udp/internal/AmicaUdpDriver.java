@@ -65,6 +65,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         rejects = new RejectCounter(context(), "datagram", "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
         handler = new FrameHandler<>(context(), nodes, rejects);
+        nodes.restore(savedDevices()); // known nodes as they were, before the first datagram (docs/backup.md)
         if (transport != null) {
             transport.start(handler::datagram);
         } else {

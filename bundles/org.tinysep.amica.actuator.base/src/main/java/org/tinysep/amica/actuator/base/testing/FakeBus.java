@@ -1,4 +1,4 @@
-package org.tinysep.amica.simplelight.internal;
+package org.tinysep.amica.actuator.base.testing;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -7,15 +7,20 @@ import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
 
-/** A hand-written AmICA bus device: one node, records every payload sent to it, or fails on demand. */
-final class FakeBus implements BusRadioAmicaProvider {
+/**
+ * For unit tests of AmICA actuator devices: a hand-written bus device of one node that records every payload sent
+ * to it, or fails on demand. Never referenced by main code, so bnd never copies it into a bundle.
+ */
+public final class FakeBus implements BusRadioAmicaProvider {
 
-    final List<byte[]> sent = new ArrayList<>();
-    RuntimeException failure;
+    /** Payloads sent, in order. */
+    public final List<byte[]> sent = new ArrayList<>();
+    /** Thrown by {@link #send} when set. */
+    public RuntimeException failure;
     private final String nodeId;
     private final Set<String> types;
 
-    FakeBus(String nodeId, String... types) {
+    public FakeBus(String nodeId, String... types) {
         this.nodeId = nodeId;
         this.types = Set.of(types);
     }

@@ -1,0 +1,146 @@
+package org.tinysep.amica.actuator.base;
+
+import java.time.Instant;
+import java.util.List;
+import java.util.Optional;
+import java.util.function.IntFunction;
+import java.util.function.ToIntFunction;
+import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.AmicaProtocolException;
+import org.tinysep.api.bus.BusRadioAmicaListener;
+import org.tinysep.api.bus.BusRadioAmicaProvider;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.sensor.Percent;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.ConfirmedSetting;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.ParameterValues;
+import org.tinysep.device.support.Uids;
+
+/**
+ * Abstracts one AmICA percent-actuator node. Its status payload of type {@code P} reports the value (a
+ * percentage); {@link #request(Percent)} sends the same payload with the new value and returns at once. Thesis
+ * actuator model: the value, its listeners and the event log change only when the node's next status report
+ * confirms it; until then the request is shown as the read-only parameter {@code pending}. A request contradicted
+ * by {@link #PATIENCE} reports is given up.
+ *
+ * @param <P> the status / command payload, e.g. {@code HeaterControl}
+ * @param <L> the listener type of the provider interface
+ */
+public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends AbstractDevice
+        implements BusRadioAmicaListener {
+
+    /** Status reports that may disagree with a request before it is given up (the first may cross it). */
+    public static final int PATIENCE = 2;
+
+    private final BusRadioAmicaProvider bus;
+    private final Listeners<L> listeners;
+    private final String quantity;
+    private final Class<P> payloadType;
+    private final ToIntFunction<P> percentOf;
+    private final IntFunction<P> command;
+    private final ConfirmedSetting<Percent> setting;
+
+    /**
+     * @param label       name prefix, e.g. {@code Heater}; the device is named {@code <label> <node>}
+     * @param nodeType    the {@code NodeType} the device abstracts, published as {@code tinysep.node.type}
+     * @param quantity    what the percentage means, e.g. {@code potency}: the parameter's key and the event text
+     * @param payloadType status payload class; other payloads of a multi-type node are ignored
+     * @param percentOf   the percentage a status payload reports
+     * @param command     the payload that requests a percentage
+     */
+    protected PercentActuatorDevice(DriverContext context, BusRadioAmicaProvider bus, String label, String nodeType,
+            String quantity, Class<P> payloadType, ToIntFunction<P> percentOf, IntFunction<P> command) {
+        super(context, Uids.of(context.driverName(), bus.deviceUid()), context.driverName(), label + " " + bus.nodeId());
+        this.bus = bus;
+        this.listeners = new Listeners<>(uid());
+        this.quantity = quantity;
+        this.payloadType = payloadType;
+        this.percentOf = percentOf;
+        this.command = command;
+        this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::event);
+        serviceProperty(DeviceProperties.NODE_ADDRESS, bus.nodeId());
+        serviceProperty(DeviceProperties.NODE_TYPE, new String[] {nodeType});
+    }
+
+    /** Tells one listener that the confirmed value changed. */
+    protected abstract void fire(L listener, Percent value, Instant at);
+
+    @Override
+    protected void onRegistered() {
+        connect(bus, BusRadioAmicaProvider.class, this, true);
+    }
+
+    @Override
+    public final void payloadReceived(BusRadioAmicaProvider source, byte[] payload, Instant at) {
+        Percent reported;
+        try {
+            AmicaPayload decoded = AmicaPayloads.decode(payload);
+            if (!payloadType.isInstance(decoded)) {
+                return; // keep-alives and other types of a multi-type node are not ours
+            }
+            reported = Percent.of(percentOf.applyAsInt(payloadType.cast(decoded)));
+        } catch (AmicaProtocolException e) {
+            return; // the bus radio already rejected and counted it
+        }
+        status(DeviceStatus.State.ONLINE, "");
+        setting.report(reported).ifPresent(v -> listeners.fire(l -> fire(l, v, at)));
+    }
+
+    /** Sends the command for {@code value}; the value changes when the node confirms it. */
+    protected final void request(Percent value) {
+        if (value == null) {
+            throw new IllegalArgumentException(quantity + " must not be null");
+        }
+        byte[] bytes = AmicaPayloads.encode(command.apply(value.value()));
+        if (!setting.request(value, () -> bus.send(bytes))) {
+            status(DeviceStatus.State.ERROR, "last command not sent, see the event log");
+        }
+    }
+
+    /** @return the value the node last reported, empty before its first report */
+    protected final Optional<Percent> value() {
+        return setting.value();
+    }
+
+    /** Adds a listener (the provider interface's {@code connect}). */
+    protected final Connection addListener(L listener) {
+        return listeners.add(listener);
+    }
+
+    /** The provider interfaces' {@code deviceUid()}. */
+    public final String deviceUid() {
+        return uid();
+    }
+
+    @Override
+    protected final boolean backedUp(String key) {
+        return false; // the value parameter is a command to the node, not a setting (docs/backup.md)
+    }
+
+    @Override
+    protected final List<Parameter> moreParameters() {
+        return List.of(
+                Parameter.writable(quantity, setting.value().orElse(null),
+                        "0..100 %; shows the node's report, a change waits for the node to confirm it"),
+                setting.pendingParameter());
+    }
+
+    @Override
+    protected final void applyParameter(String key, String value) {
+        if (!quantity.equals(key)) {
+            throw unknownParameter(key);
+        }
+        request(ParameterValues.percent(quantity, value));
+    }
+
+    @Override
+    protected void onDispose() {
+        listeners.closeAll();
+    }
+}

@@ -1,0 +1,33 @@
+package org.tinysep.amica.busradio.base;
+
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.tinysep.api.device.Connection;
+
+/** A bus device listener's connection; closing it tells the {@link Handover} that a replacement may follow. */
+final class HandoverConnection implements Connection {
+
+    private final Connection connection;
+    private final Handover handover;
+    private final AtomicBoolean closed = new AtomicBoolean();
+
+    /** @param handover also the lock the bus device holds around it */
+    HandoverConnection(Connection connection, Handover handover) {
+        this.connection = connection;
+        this.handover = handover;
+    }
+
+    @Override
+    public void close() {
+        if (closed.compareAndSet(false, true) && connection.isOpen()) {
+            connection.close();
+            synchronized (handover) {
+                handover.listenerLeft();
+            }
+        }
+    }
+
+    @Override
+    public boolean isOpen() {
+        return connection.isOpen();
+    }
+}

@@ -1,0 +1,101 @@
+package org.tinysep.device.support;
+
+import java.time.Instant;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+
+/**
+ * A device's side of the system backup (thesis 3.7): builds its {@link ComponentBackup} (name, room, the writable
+ * parameters it keeps, node address and types, last seen time, free state), saves it, and throttles saves of
+ * runtime state (e.g. last seen) to one per {@link #STATE_INTERVAL_NANOS}.
+ */
+final class DeviceBackup {
+
+    /** Runtime state (e.g. a node's last seen time) is saved at most this often per device: 1 s. */
+    static final long STATE_INTERVAL_NANOS = 1_000_000_000L;
+
+    private final AbstractDevice device;
+    private volatile long lastStateSave = System.nanoTime() - STATE_INTERVAL_NANOS;
+    private volatile boolean active;
+
+    DeviceBackup(AbstractDevice device) {
+        this.device = device;
+    }
+
+    ComponentBackup snapshot(String roomUid, List<Parameter> settings, Object nodeAddress, Object nodeTypes,
+            Instant lastSeen, Map<String, String> state) {
+        DriverContext c = device.context;
+        Map<String, String> parameters = new LinkedHashMap<>();
+        if (roomUid != null) {
+            parameters.put(RoomPlacement.KEY, roomUid);
+        }
+        for (Parameter p : settings) {
+            if (p.writable() && !p.key().equals("name") && !p.key().equals(RoomPlacement.KEY)
+                    && device.backedUp(p.key()) && p.value() != null && !p.value().isBlank()) {
+                parameters.put(p.key(), p.value());
+            }
+        }
+        List<String> types = nodeTypes instanceof String[] a ? Arrays.asList(a)
+                : nodeTypes == null ? List.of() : List.of(String.valueOf(nodeTypes));
+        return new ComponentBackup(device.uid(), ComponentKind.DEVICE, c.driverUid(), c.driverName(), device.type(),
+                device.name(), parameters, nodeAddress == null ? "" : String.valueOf(nodeAddress), types, lastSeen,
+                state, c.now());
+    }
+
+    /** From now on changes are saved (after the device registered, with its restored settings). */
+    void activate() {
+        active = true;
+        device.context.backups().save(device.backup());
+    }
+
+    void deactivate() {
+        active = false;
+    }
+
+    boolean active() {
+        return active;
+    }
+
+    /** Saves now, without waiting for the disk. */
+    void save() {
+        if (active) {
+            device.context.backups().save(device.backup());
+        }
+    }
+
+    /** Saves runtime state at most once per second per device; cheap to call on every packet. */
+    void stateChanged() {
+        long now = System.nanoTime();
+        if (active && now - lastStateSave >= STATE_INTERVAL_NANOS) {
+            lastStateSave = now;
+            save();
+        }
+    }
+
+    /** Applies the saved settings to a device that is not registered yet. */
+    static void restore(AbstractDevice device, ComponentBackup b, RoomPlacement room, boolean placeable) {
+        DriverContext c = device.context;
+        for (Map.Entry<String, String> e : b.parameters().entrySet()) {
+            String key = e.getKey();
+            try {
+                if (RoomPlacement.KEY.equals(key)) {
+                    if (placeable) {
+                        room.restore(e.getValue());
+                    }
+                } else if (!DeviceProperties.ROOM.equals(key)) {
+                    device.applyParameter(key, e.getValue());
+                }
+            } catch (RuntimeException ex) {
+                c.reporter().event(EventKind.PROBLEM, device.uid(), "saved setting " + key + "=" + e.getValue()
+                        + " not restored: " + ex.getMessage());
+            }
+        }
+    }
+}

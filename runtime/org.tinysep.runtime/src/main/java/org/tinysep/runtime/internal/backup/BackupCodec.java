@@ -1,0 +1,131 @@
+package org.tinysep.runtime.internal.backup;
+
+import jakarta.xml.bind.JAXBContext;
+import jakarta.xml.bind.JAXBException;
+import jakarta.xml.bind.Marshaller;
+import jakarta.xml.bind.Unmarshaller;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.time.Instant;
+import java.time.format.DateTimeParseException;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import javax.xml.stream.XMLInputFactory;
+import javax.xml.stream.XMLStreamReader;
+import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
+
+/**
+ * Converts backups to and from XML with JAXB. Inside OSGi the JAXB implementation is found through this bundle's
+ * class loader (thread context class loader around the JAXB calls). DTDs and external entities are refused; a
+ * file that is not a complete, valid backup is rejected with a {@link BadBackupException}.
+ */
+final class BackupCodec {
+
+    private final JAXBContext jaxb;
+
+    BackupCodec() {
+        try {
+            jaxb = withBundleLoader(() -> JAXBContext.newInstance(BackupXml.class));
+        } catch (Exception | LinkageError e) {
+            throw new IllegalStateException("JAXB is not available: " + e, e);
+        }
+    }
+
+    byte[] write(ComponentBackup b) {
+        BackupXml x = new BackupXml();
+        x.kind = b.kind().name();
+        x.uid = b.uid();
+        x.driverUid = b.driverUid();
+        x.driverName = b.driverName();
+        x.type = b.type();
+        x.name = b.name();
+        x.savedAt = b.savedAt().toString();
+        x.nodeAddress = b.nodeAddress();
+        x.nodeTypes.addAll(b.nodeTypes());
+        x.lastSeen = b.lastSeen() == null ? null : b.lastSeen().toString();
+        b.parameters().forEach((k, v) -> x.parameters.add(new BackupXml.Entry(k, v)));
+        b.state().forEach((k, v) -> x.state.add(new BackupXml.Entry(k, v)));
+        try {
+            return withBundleLoader(() -> {
+                Marshaller m = jaxb.createMarshaller();
+                m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, true);
+                m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
+                ByteArrayOutputStream out = new ByteArrayOutputStream();
+                m.marshal(x, out);
+                return out.toByteArray();
+            });
+        } catch (Exception e) {
+            throw new IllegalStateException("cannot write the backup of " + b.uid() + ": " + e, e);
+        }
+    }
+
+    ComponentBackup read(byte[] xml) throws BadBackupException {
+        BackupXml x;
+        try {
+            XMLInputFactory f = XMLInputFactory.newFactory();
+            f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
+            f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
+            XMLStreamReader reader = f.createXMLStreamReader(new ByteArrayInputStream(xml));
+            x = withBundleLoader(() -> {
+                Unmarshaller u = jaxb.createUnmarshaller();
+                u.setEventHandler(event -> false); // any error ends the read
+                return u.unmarshal(reader, BackupXml.class).getValue();
+            });
+        } catch (Exception e) {
+            throw new BadBackupException("not a readable backup: " + rootCause(e));
+        }
+        return toBackup(x);
+    }
+
+    private static ComponentBackup toBackup(BackupXml x) throws BadBackupException {
+        if (x == null || blank(x.uid) || blank(x.kind) || blank(x.savedAt)) {
+            throw new BadBackupException("incomplete backup: uid, kind and savedAt are required");
+        }
+        try {
+            return new ComponentBackup(x.uid.strip(), ComponentKind.valueOf(x.kind.strip()), x.driverUid,
+                    x.driverName, x.type, x.name, map(x.parameters), x.nodeAddress,
+                    x.nodeTypes == null ? List.of() : x.nodeTypes,
+                    blank(x.lastSeen) ? null : Instant.parse(x.lastSeen.strip()), map(x.state),
+                    Instant.parse(x.savedAt.strip()));
+        } catch (IllegalArgumentException | DateTimeParseException | NullPointerException e) {
+            throw new BadBackupException("invalid backup: " + e.getMessage());
+        }
+    }
+
+    private static Map<String, String> map(List<BackupXml.Entry> entries) {
+        Map<String, String> m = new LinkedHashMap<>();
+        if (entries != null) {
+            for (BackupXml.Entry e : entries) {
+                m.put(e.key, e.value == null ? "" : e.value);
+            }
+        }
+        return m;
+    }
+
+    private static boolean blank(String s) {
+        return s == null || s.isBlank();
+    }
+
+    private static String rootCause(Throwable e) {
+        Throwable t = e;
+        while (t.getCause() != null && t.getCause() != t) {
+            t = t.getCause();
+        }
+        String m = t.getMessage();
+        return (m == null ? t.getClass().getSimpleName() : m).replaceAll("\\s+", " ");
+    }
+
+    private static <T> T withBundleLoader(Callable<T> work) throws Exception {
+        Thread thread = Thread.currentThread();
+        ClassLoader previous = thread.getContextClassLoader();
+        thread.setContextClassLoader(BackupCodec.class.getClassLoader());
+        try {
+            return work.call();
+        } finally {
+            thread.setContextClassLoader(previous);
+        }
+    }
+}

@@ -1,0 +1,17 @@
+package org.tinysep.runtime.internal.backup;
+
+import org.osgi.service.metatype.annotations.AttributeDefinition;
+import org.osgi.service.metatype.annotations.ObjectClassDefinition;
+
+/** Configuration of the backup store (pid {@value BackupStoreService#PID}). */
+@ObjectClassDefinition(name = "TinySEP backup store", description = "One XML file per driver and device (thesis 3.7).")
+public @interface BackupConfig {
+
+    @AttributeDefinition(description = "The backup folder. Empty: ${tinysep.var}/backup, else "
+            + "${tinysep.home}/var/backup, else the bundle's data area")
+    String folder() default "";
+
+    @AttributeDefinition(description = "How long the writer waits after a save for more saves before it runs, "
+            + "in milliseconds; 0: at once (saves arriving while it writes are still coalesced)")
+    long writeDelayMillis() default 0;
+}

@@ -1,0 +1,161 @@
+package org.tinysep.runtime.internal.backup;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import org.osgi.framework.BundleContext;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.metatype.annotations.Designate;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.api.backup.BackupStore;
+import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+
+/**
+ * The device manager's backup store (thesis 3.7): on activation reads every backup file (damaged ones are moved
+ * aside and reported in the event log, the rest load), maps each to its component by UID, and gives drivers their
+ * devices' backups. Saves are written by its own thread ({@link BackupWriter}).
+ */
+@Component(service = {BackupStore.class, BackupStoreService.class}, immediate = true,
+        configurationPid = BackupStoreService.PID)
+@Designate(ocd = BackupConfig.class)
+public final class BackupStoreService implements BackupStore {
+
+    public static final String PID = "org.tinysep.runtime.backup";
+    static final String ORIGIN = "BackupStore";
+    private static final Logger LOG = LoggerFactory.getLogger(BackupStoreService.class);
+
+    private final Map<String, ComponentBackup> backups = new ConcurrentHashMap<>();
+    private final Map<String, Path> written = new ConcurrentHashMap<>();
+    private final EventLog events;
+    private final BackupFiles files;
+    private final ScheduledExecutorService executor;
+    private final BackupWriter writer;
+
+    @Activate
+    public BackupStoreService(BundleContext context, BackupConfig config,
+            @Reference(name = "eventLog") EventLog events) {
+        this(StateFolder.resolve(config.folder(), context, "backup"), Math.max(0, config.writeDelayMillis()), events);
+    }
+
+    BackupStoreService(Path root, long writeDelayMillis, EventLog events) {
+        this.events = events;
+        this.files = new BackupFiles(new BackupLayout(root), new BackupCodec());
+        this.executor = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "tinysep-backup-writer");
+            t.setDaemon(true);
+            return t;
+        });
+        this.writer = new BackupWriter(files, written, executor, writeDelayMillis, this::writeFailed);
+        load();
+    }
+
+    /** Reads the folder again (after {@code tinysep:restore} replaced it); unsaved changes are written first. */
+    public synchronized void reload() {
+        writer.drain();
+        backups.clear();
+        written.clear();
+        load();
+    }
+
+    private void load() {
+        try {
+            List<BackupFiles.Loaded> loaded = files.loadAll(Instant.now(), this::damaged);
+            for (BackupFiles.Loaded l : loaded) {
+                ComponentBackup old = backups.get(l.backup().uid());
+                if (old == null || l.backup().savedAt().isAfter(old.savedAt())) {
+                    backups.put(l.backup().uid(), l.backup());
+                    written.put(l.backup().uid(), l.file());
+                }
+            }
+            LOG.info("Backup store {}: {} component backup(s)", files.layout().root(), backups.size());
+        } catch (IOException | RuntimeException e) {
+            LOG.error("Cannot read the backup folder {}: {}", files.layout().root(), e.toString());
+            events.record(EventKind.PROBLEM, ORIGIN, "cannot read the backup folder " + files.layout().root()
+                    + ": " + e.getMessage() + "; starting without backups");
+        }
+    }
+
+    @Deactivate
+    void deactivate() throws InterruptedException {
+        executor.shutdown();
+        executor.awaitTermination(10, TimeUnit.SECONDS);
+        writer.drain(); // whatever was queued after the last run
+    }
+
+    /** @return the backup folder */
+    public Path root() {
+        return files.layout().root();
+    }
+
+    @Override
+    public CompletionStage<Void> save(ComponentBackup backup) {
+        backups.put(backup.uid(), backup);
+        return writer.write(backup);
+    }
+
+    @Override
+    public boolean flush(Duration timeout) {
+        CompletableFuture<Void> marker = writer.delete("\u0000flush-marker"); // queued after everything before it
+        try {
+            marker.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
+            return true;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
+        } catch (Exception e) {
+            return false;
+        }
+    }
+
+    @Override
+    public Optional<ComponentBackup> find(String uid) {
+        return Optional.ofNullable(backups.get(uid));
+    }
+
+    @Override
+    public List<ComponentBackup> devicesOf(String driverUid) {
+        return backups.values().stream()
+                .filter(b -> b.kind() == ComponentKind.DEVICE && b.driverUid().equals(driverUid))
+                .sorted(Comparator.comparing(ComponentBackup::uid)).toList();
+    }
+
+    /** @return every backup, by UID */
+    public List<ComponentBackup> all() {
+        return backups.values().stream().sorted(Comparator.comparing(ComponentBackup::uid)).toList();
+    }
+
+    @Override
+    public void delete(String uid) {
+        if (backups.remove(uid) != null) {
+            writer.delete(uid);
+        }
+    }
+
+    private void damaged(Path file, String problem) {
+        LOG.warn("Damaged backup file {}: {}", file, problem);
+        events.record(EventKind.PROBLEM, ORIGIN, "damaged backup file " + file.getFileName() + ": " + problem);
+    }
+
+    private void writeFailed(String uid, String problem) {
+        LOG.error("Cannot write the backup of {}: {}", uid, problem);
+        events.record(EventKind.PROBLEM, ORIGIN, "cannot write the backup of " + uid + ": " + problem);
+    }
+}

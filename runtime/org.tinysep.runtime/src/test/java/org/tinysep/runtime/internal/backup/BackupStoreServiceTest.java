@@ -1,0 +1,131 @@
+package org.tinysep.runtime.internal.backup;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.backup.ComponentKind;
+import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+
+class BackupStoreServiceTest {
+
+    @TempDir
+    Path root;
+    final List<String> problems = new ArrayList<>();
+    final EventLog events = new EventLog() {
+        @Override
+        public void record(EventKind kind, String origin, String message) {
+            if (kind == EventKind.PROBLEM) {
+                problems.add(message);
+            }
+        }
+
+        @Override
+        public List<EventEntry> recent(int max) {
+            return List.of();
+        }
+    };
+
+    static ComponentBackup device(String uid, String name, String room, Instant at) {
+        return new ComponentBackup(uid, ComponentKind.DEVICE, "drv-1", "BusRadioAmicaUdp", "BusRadioAmicaUdp", name,
+                Map.of("room", room), "1.10", List.of("movement", "door"), at,
+                Map.of("productId", "3", "vendorId", "1"), at);
+    }
+
+    @Test
+    void aSavedBackupIsOnDiskWhenItsFutureCompletesAndComesBackAfterARestart() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        store.save(device("u-1", "Hall <sensor> & co", "room-7", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
+        Path file = root.resolve("BusRadioAmicaUdp/BusRadioAmicaUdp-u-1.xml");
+        assertTrue(Files.exists(file), "layout: <driver>/<type>-<uid>.xml");
+        store.deactivate();
+
+        BackupStoreService again = new BackupStoreService(root, 0, events);
+        assertEquals(device("u-1", "Hall <sensor> & co", "room-7", t), again.find("u-1").orElseThrow());
+        assertEquals(List.of("u-1"), again.devicesOf("drv-1").stream().map(ComponentBackup::uid).toList());
+        assertTrue(again.devicesOf("other").isEmpty());
+        again.deactivate();
+    }
+
+    @Test
+    void savesOfOneComponentAreCoalescedAndTheNewestWins() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 200, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        var futures = new ArrayList<java.util.concurrent.CompletableFuture<Void>>();
+        for (int i = 0; i < 100; i++) {
+            futures.add(store.save(device("u-1", "name " + i, "r", t.plusSeconds(i))).toCompletableFuture());
+        }
+        futures.get(99).get(5, TimeUnit.SECONDS);
+        assertTrue(futures.stream().allMatch(f -> f.isDone() && !f.isCompletedExceptionally()));
+        store.deactivate();
+        assertEquals("name 99", new BackupStoreService(root, 0, events).find("u-1").orElseThrow().name());
+    }
+
+    @Test
+    void aDamagedFileIsReportedAndMovedAsideAndTheOthersStillLoad() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        store.save(device("good", "g", "r", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
+        store.deactivate();
+        Path bad = root.resolve("BusRadioAmicaUdp/BusRadioAmicaUdp-bad.xml");
+        Files.writeString(bad, "<backup kind=\"DEVICE\"><uid>bad</uid><name>trunc");
+        Path leftover = root.resolve("BusRadioAmicaUdp/BusRadioAmicaUdp-good.xml.123.tmp");
+        Files.writeString(leftover, "<half");
+
+        BackupStoreService again = new BackupStoreService(root, 0, events);
+        assertTrue(again.find("good").isPresent());
+        assertFalse(again.find("bad").isPresent());
+        assertFalse(Files.exists(bad));
+        assertFalse(Files.exists(leftover), "temp files of interrupted writes are removed");
+        try (Stream<Path> aside = Files.list(root.resolve("damaged"))) {
+            assertEquals(1, aside.filter(p -> p.getFileName().toString()
+                    .startsWith("BusRadioAmicaUdp_BusRadioAmicaUdp-bad.xml.")).count());
+        }
+        assertEquals(1, problems.size(), problems::toString);
+        assertTrue(problems.get(0).contains("BusRadioAmicaUdp-bad.xml"), problems::toString);
+        again.deactivate();
+    }
+
+    @Test
+    void aDeletedComponentIsGoneAfterARestart() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        store.save(device("u-1", "a", "r", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
+        store.delete("u-1");
+        assertTrue(store.flush(java.time.Duration.ofSeconds(5)));
+        store.deactivate();
+        assertFalse(new BackupStoreService(root, 0, events).find("u-1").isPresent());
+        assertFalse(Files.exists(root.resolve("BusRadioAmicaUdp/BusRadioAmicaUdp-u-1.xml")));
+    }
+
+    /** Prints (never asserts) what an acknowledged change costs: one durable save waited for, one after another. */
+    @Test
+    void durableSavesOneAfterAnotherPrintTheirCost() throws Exception {
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        int n = 100;
+        long start = System.nanoTime();
+        for (int i = 0; i < n; i++) {
+            store.save(device("u-" + (i % 40), "n" + i, "r", t)).toCompletableFuture().get(5, TimeUnit.SECONDS);
+        }
+        double ms = (System.nanoTime() - start) / 1e6 / n;
+        System.out.printf("BackupStore: %d durable saves one after another, %.2f ms each (write + fsync + rename "
+                + "+ folder fsync)%n", n, ms);
+        store.deactivate();
+        assertEquals(40, new BackupStoreService(root, 0, events).devicesOf("drv-1").size());
+    }
+}
