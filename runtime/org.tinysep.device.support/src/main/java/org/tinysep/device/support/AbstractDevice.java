@@ -78,17 +78,23 @@ public abstract class AbstractDevice implements Device {
     protected void onRegistered() {
     }
 
-    /** Unregisters the services and closes every connection, both ways. Called by its driver. */
+    /**
+     * Closes every connection the device consumes, then unregisters its services (its consumers are told). Called by
+     * its driver.
+     */
     final void dispose() {
         backup.save(); // the last state (e.g. last seen) before an orderly stop
         backup.deactivate();
-        room.close();
-        services.unregister();
+        // inputs first: no event reaches a device whose services are already gone (it would be lost, and a
+        // provider that holds events for a replacement consumer, like an AmICA bus device during an update,
+        // starts holding only when the connection closes)
         for (ConnectionInfo c : consumptions.infos()) {
             context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName() + " of "
                     + c.providerDeviceUid());
         }
         consumptions.closeAll();
+        room.close();
+        services.unregister();
         onDispose();
     }
 
