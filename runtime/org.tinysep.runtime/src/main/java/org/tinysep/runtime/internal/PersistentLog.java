@@ -14,7 +14,8 @@ import org.tinysep.api.log.LogHistory;
 
 /**
  * The on-disk history of one log ring. Appending stays on the caller's thread and O(1) (the ring); one writer
- * thread drains the ring in batches into the log files, flushing each batch to the operating system, forces the
+ * thread drains the ring in batches into the log files {@value #WRITE_DELAY_MILLIS} ms after the first new entry,
+ * flushing each batch to the operating system, forces the
  * file to the disk every {@link LogSettings#syncInterval()} and prunes old files at each new file and hourly.
  * Queries read the files (and the ring for what is not written yet) on the caller's thread.
  *
@@ -23,6 +24,11 @@ import org.tinysep.api.log.LogHistory;
 final class PersistentLog<E> implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(PersistentLog.class);
+    /**
+     * How long the writer waits after the first new entry before it writes: entries arriving meanwhile go out in
+     * the same batch, so a steady trickle of packets costs one wake-up and one write per interval, not per packet.
+     */
+    static final long WRITE_DELAY_MILLIS = 50;
 
     private final RingBuffer<E> ring;
     private final LineCodec<E> codec;
@@ -42,8 +48,9 @@ final class PersistentLog<E> implements AutoCloseable {
         this.writer = new LogFileWriter<>(folder, codec, settings, clock);
         this.thread = Executors.newSingleThreadScheduledExecutor(Threads.named("tinysep-" + folder.prefix()
                 + "-writer"));
-        this.drain = new RingDrain<>(ring, codec::sequence, thread, this::write, "written to " + folder.prefix()
-                + " files");
+        this.drain = new RingDrain<>(ring, codec::sequence,
+                task -> thread.schedule(task, WRITE_DELAY_MILLIS, TimeUnit.MILLISECONDS), this::write,
+                "written to " + folder.prefix() + " files");
         long sync = settings.syncInterval().toMillis();
         thread.scheduleWithFixedDelay(this::sync, sync, sync, TimeUnit.MILLISECONDS);
         thread.scheduleWithFixedDelay(writer::prune, 0, 1, TimeUnit.HOURS);
