@@ -22,6 +22,7 @@ import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.ServiceReference;
 import org.osgi.util.tracker.ServiceTracker;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
@@ -29,6 +30,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
@@ -158,7 +160,7 @@ public class HouseInformationTest extends TinySepTestSupport {
         shell("tinysep:room-add Bathroom Bathroom");
         String bath = provider.rooms().get(0).uid();
         int port = udpPortOf("BusRadioAmicaUdp");
-        try (HouseNode node = new HouseNode(1, 17, port)) {
+        try (AmicaNode node = new AmicaNode(1, 17, port, AmicaNodeType.MOVEMENT)) {
             node.keepAlive();
             Device movement = awaitService(Device.class, "(&(" + DeviceProperties.DEVICE_TYPE + "=AmicaMovement)("
                     + DeviceProperties.NODE_ADDRESS + "=1.17))", TIMEOUT);

@@ -18,6 +18,7 @@ import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.osgi.framework.ServiceReference;
 import org.osgi.util.tracker.ServiceTracker;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.log.EventEntry;
@@ -25,6 +26,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
@@ -98,7 +100,8 @@ public class RoomPlacementTest extends TinySepTestSupport {
         int port = udpPortOf("BusRadioAmicaUdp");
         ServiceTracker<Device, Device> garageNode = devicesOf("1.19", "");
         ServiceTracker<Device, Device> inHall = devicesOf("1.17", "(" + DeviceProperties.ROOM + "=" + hall + ")");
-        try (HouseNode n19 = new HouseNode(1, 19, port); HouseNode n17 = new HouseNode(1, 17, port)) {
+        try (AmicaNode n19 = new AmicaNode(1, 19, port, AmicaNodeType.MOVEMENT);
+                AmicaNode n17 = new AmicaNode(1, 17, port, AmicaNodeType.MOVEMENT)) {
             n19.keepAlive();
             await(TIMEOUT, () -> garageNode.size() == 2, "the bus and movement devices of 1.19");
             n17.keepAlive(); // placed after the 1.19 attempts: one thread, in order
@@ -124,7 +127,7 @@ public class RoomPlacementTest extends TinySepTestSupport {
         String kitchen = addRoom("Kitchen");
         int port = udpPortOf("BusRadioAmicaUdp");
         ServiceTracker<Device, Device> inHall = devicesOf("1.18", "(" + DeviceProperties.ROOM + "=" + hall + ")");
-        try (HouseNode node = new HouseNode(1, 18, port)) {
+        try (AmicaNode node = new AmicaNode(1, 18, port, AmicaNodeType.MOVEMENT)) {
             node.keepAlive();
             Device movement = awaitService(Device.class, "(&(" + DeviceProperties.DEVICE_TYPE + "=AmicaMovement)("
                     + DeviceProperties.NODE_ADDRESS + "=1.18))", TIMEOUT);

@@ -12,6 +12,7 @@ import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.MovementProvider;
@@ -19,6 +20,7 @@ import org.tinysep.api.sensor.MovementWithCoordinatesListener;
 import org.tinysep.api.sensor.MovementWithCoordinatesProvider;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.Position;
 import org.tinysep.itests.Topology;
@@ -35,7 +37,7 @@ public class SunSpotInterfaceExtensionTest extends SunSpotTestSupport {
 
     @Test
     public void flatOccupancyUsesTheSunSpotMovementWhileANewConsumerGetsCoordinates() throws Exception {
-        try (AmicaMovementNode amica = new AmicaMovementNode(1, 17, udpPortOf("BusRadioAmicaUdp"));
+        try (AmicaNode amica = new AmicaNode(1, 17, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT);
                 SunSpotNode spot = new SunSpotNode("0014.4F01.0000.1234", udpPortOf(SUN_SPOT_BUS))) {
             amica.keepAlive(); // announces itself; never reports motion in this test
             spot.send(new MovementDetection(false)); // the first packet creates the Sun SPOT bus device

@@ -9,12 +9,14 @@ import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * A component ticking in virtual time through the support library's PlatformTicker: Flat Occupancy's 600 s leave
@@ -35,7 +37,7 @@ public class FlatOccupancyVirtualTimeTest extends TimeTestSupport {
         TimeControllerProvider clock = clock();
         assertEquals(ClockMode.EXTERNAL, clock.mode());
         try (SyncPeer sync = new SyncPeer(syncPort());
-                DoorNode door = new DoorNode(1, 20, udpPortOf("BusRadioAmicaUdp"))) {
+                AmicaNode door = new AmicaNode(1, 20, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
             Instant t = clock.now().truncatedTo(ChronoUnit.SECONDS).plusSeconds(86_400); // tomorrow, virtually
             sync.tickDone(t);
 
@@ -64,7 +66,7 @@ public class FlatOccupancyVirtualTimeTest extends TimeTestSupport {
     public void aJumpPastTheDeadlineEndsTheLeaveCheckStampedWithTheDeadline() throws Exception {
         TimeControllerProvider clock = clock();
         try (SyncPeer sync = new SyncPeer(syncPort());
-                DoorNode door = new DoorNode(1, 21, udpPortOf("BusRadioAmicaUdp"))) {
+                AmicaNode door = new AmicaNode(1, 21, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
             Instant t = clock.now().truncatedTo(ChronoUnit.SECONDS).plusSeconds(3600);
             sync.tickDone(t);
             door.keepAlive();

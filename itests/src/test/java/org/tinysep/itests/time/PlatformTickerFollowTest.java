@@ -12,12 +12,14 @@ import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.osgi.framework.Bundle;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.AmicaNode;
 
 /**
  * The support library's PlatformTicker (inside Flat Occupancy) follows the Time Controller as it comes and goes:
@@ -51,7 +53,7 @@ public class PlatformTickerFollowTest extends TimeTestSupport {
 
     @Test
     public void tickerFallsBackToRealSecondsWithoutTheControllerAndFollowsItAgainWhenBack() throws Exception {
-        try (DoorNode door = new DoorNode(1, 20, udpPortOf("BusRadioAmicaUdp"))) {
+        try (AmicaNode door = new AmicaNode(1, 20, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
             door.keepAlive();
             DoorProvider doorProvider = awaitService(DoorProvider.class, null, TIMEOUT);
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
@@ -78,7 +80,7 @@ public class PlatformTickerFollowTest extends TimeTestSupport {
         }
     }
 
-    private void leaveCheckEndsOnTick(DoorNode door, DoorProvider doorProvider, FlatOccupancyProvider flat)
+    private void leaveCheckEndsOnTick(AmicaNode door, DoorProvider doorProvider, FlatOccupancyProvider flat)
             throws Exception {
         TimeControllerProvider clock = clock();
         assertEquals(ClockMode.EXTERNAL, clock.mode());
