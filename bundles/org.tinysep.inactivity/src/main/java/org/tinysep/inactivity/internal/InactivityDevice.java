@@ -96,7 +96,7 @@ final class InactivityDevice extends AbstractDevice
             change = logic.activity(a);
         }
         rooms.seen(a);
-        stateChanged(); // last activity per room, saved at most once a second (docs/backup.md)
+        stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());
     }
 

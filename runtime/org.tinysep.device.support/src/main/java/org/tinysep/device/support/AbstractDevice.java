@@ -70,8 +70,8 @@ public abstract class AbstractDevice implements Device {
     /** Registers the device's services. Called by its driver once constructed. */
     final void register() {
         services.register(context.bundleContext(), this);
-        backup.activate();
         onRegistered();
+        backup.activate(); // after its connections: nothing delays them
     }
 
     /** Called once the device's services are registered: the place to connect to the providers it needs. */
@@ -240,7 +240,7 @@ public abstract class AbstractDevice implements Device {
         backup.save();
     }
 
-    /** Runtime state changed (e.g. a packet arrived): saved at most once per second; cheap on the packet path. */
+    /** Runtime state changed (e.g. a packet arrived): saved at most once per 10 s; cheap on the packet path. */
     protected final void stateChanged() {
         backup.stateChanged();
     }

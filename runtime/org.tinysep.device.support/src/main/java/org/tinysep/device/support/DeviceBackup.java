@@ -18,8 +18,8 @@ import org.tinysep.api.log.EventKind;
  */
 final class DeviceBackup {
 
-    /** Runtime state (e.g. a node's last seen time) is saved at most this often per device: 1 s. */
-    static final long STATE_INTERVAL_NANOS = 1_000_000_000L;
+    /** Runtime state (e.g. a node's last seen time) is saved at most this often per device: 10 s. */
+    static final long STATE_INTERVAL_NANOS = 10_000_000_000L;
 
     private final AbstractDevice device;
     private volatile long lastStateSave = System.nanoTime() - STATE_INTERVAL_NANOS;
@@ -70,7 +70,7 @@ final class DeviceBackup {
         }
     }
 
-    /** Saves runtime state at most once per second per device; cheap to call on every packet. */
+    /** Saves runtime state at most once per 10 s per device; cheap to call on every packet. */
     void stateChanged() {
         long now = System.nanoTime();
         if (active && now - lastStateSave >= STATE_INTERVAL_NANOS) {

@@ -140,7 +140,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             handover.record(bytes, at);
             listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
         }
-        stateChanged(); // last seen, saved at most once a second, never on this thread
+        stateChanged(); // last seen, saved at most every 10 s, never on this thread
     }
 
     /** Marks the device OFFLINE, e.g. because its link went down; the next packet brings it back ONLINE. */

@@ -94,7 +94,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         int sensorType = frame.sensorType();
         listeners.fire(l -> l.payloadReceived(this, sensorType, bytes.clone(), at));
         packets.incrementAndGet(); // counted once delivered
-        stateChanged(); // last seen, saved at most once a second, never on this thread
+        stateChanged(); // last seen, saved at most every 10 s, never on this thread
     }
 
     private synchronized void addType(SunSpotSensorType type) {

@@ -12,6 +12,7 @@ public @interface BackupConfig {
     String folder() default "";
 
     @AttributeDefinition(description = "How long the writer waits after a save for more saves before it runs, "
-            + "in milliseconds; 0: at once (saves arriving while it writes are still coalesced)")
-    long writeDelayMillis() default 0;
+            + "in milliseconds (saves of one component in that time become one write); BackupStore.flush, "
+            + "which the shell's set waits for, writes at once")
+    long writeDelayMillis() default 500;
 }

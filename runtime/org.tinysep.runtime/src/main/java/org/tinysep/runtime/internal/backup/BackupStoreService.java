@@ -113,7 +113,7 @@ public final class BackupStoreService implements BackupStore {
 
     @Override
     public boolean flush(Duration timeout) {
-        CompletableFuture<Void> marker = writer.delete("\u0000flush-marker"); // queued after everything before it
+        CompletableFuture<Void> marker = writer.flush();
         try {
             marker.get(timeout.toMillis(), TimeUnit.MILLISECONDS);
             return true;

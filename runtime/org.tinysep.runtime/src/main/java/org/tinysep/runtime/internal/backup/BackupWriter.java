@@ -30,6 +30,8 @@ final class BackupWriter {
     /** Where each component's file is, as last written or loaded; used only on the writer thread. */
     private final Map<String, Path> written;
     private boolean scheduled;
+    /** Serialises drains (the executor's, and the caller's on stop or reload), so writes of one UID keep order. */
+    private final Object writing = new Object();
 
     BackupWriter(BackupFiles files, Map<String, Path> written, ScheduledExecutorService executor, long delayMillis,
             BiConsumer<String, String> problem) {
@@ -46,6 +48,17 @@ final class BackupWriter {
 
     CompletableFuture<Void> delete(String uid) {
         return enqueue(uid, null);
+    }
+
+    /** @return completes once everything queued before is on disk; writes at once, without the delay */
+    CompletableFuture<Void> flush() {
+        CompletableFuture<Void> done = enqueue("\u0000flush-marker", null); // a delete of nothing, queued last
+        try {
+            executor.execute(this::drain);
+        } catch (RuntimeException stopping) {
+            drain(); // the store is stopping: write on the caller
+        }
+        return done;
     }
 
     private synchronized CompletableFuture<Void> enqueue(String uid, ComponentBackup b) {
@@ -68,12 +81,18 @@ final class BackupWriter {
 
     /** Writes everything queued; runs on the executor, or on the caller when the store stops. */
     void drain() {
-        List<Op> ops;
-        synchronized (this) {
-            ops = new ArrayList<>(pending.values());
-            pending.clear();
-            scheduled = false;
+        synchronized (writing) {
+            List<Op> ops;
+            synchronized (this) {
+                ops = new ArrayList<>(pending.values());
+                pending.clear();
+                scheduled = false;
+            }
+            write(ops);
         }
+    }
+
+    private void write(List<Op> ops) {
         for (Op op : ops) {
             try {
                 Path old = written.get(op.uid());
