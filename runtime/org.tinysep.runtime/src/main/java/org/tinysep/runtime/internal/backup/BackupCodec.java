@@ -32,6 +32,21 @@ final class BackupCodec {
         } catch (Exception | LinkageError e) {
             throw new IllegalStateException("JAXB is not available: " + e, e);
         }
+        warmUp();
+    }
+
+    /**
+     * One write and read now, on activation: JAXB's first use costs hundreds of milliseconds of CPU, which must not
+     * fall into the first minutes of traffic (when devices are created and saved).
+     */
+    private void warmUp() {
+        ComponentBackup sample = new ComponentBackup("warm-up", ComponentKind.DEVICE, "", "", "", "",
+                Map.of("k", "v"), "", List.of("t"), Instant.EPOCH, Map.of("k", "v"), Instant.EPOCH);
+        try {
+            read(write(sample));
+        } catch (BadBackupException e) {
+            throw new IllegalStateException("JAXB cannot read its own backup: " + e.getMessage(), e);
+        }
     }
 
     byte[] write(ComponentBackup b) {

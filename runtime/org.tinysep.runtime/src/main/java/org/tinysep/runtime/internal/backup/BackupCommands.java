@@ -44,12 +44,13 @@ public final class BackupCommands {
 
     private final BundleContext context;
     private final BackupStoreService store;
-    private final BackupCodec codec = new BackupCodec();
+    private final BackupCodec codec;
 
     @Activate
     public BackupCommands(BundleContext context, @Reference(name = "store") BackupStoreService store) {
         this.context = context;
         this.store = store;
+        this.codec = store.codec();
     }
 
     /** {@code backup}: the archive goes to the state folder as {@code tinysep-backup-<UTC time>.zip}. */

@@ -34,6 +34,10 @@ final class BackupFiles {
         return layout;
     }
 
+    BackupCodec codec() {
+        return codec;
+    }
+
     /**
      * Reads every {@code *.xml} below the root (except {@code damaged/}); leftover temp files of an interrupted
      * write are deleted.

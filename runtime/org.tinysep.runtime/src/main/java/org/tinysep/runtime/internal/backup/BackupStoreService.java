@@ -100,6 +100,11 @@ public final class BackupStoreService implements BackupStore {
         writer.drain(); // whatever was queued after the last run
     }
 
+    /** @return the codec of the backup files (shared: a JAXB context is costly) */
+    BackupCodec codec() {
+        return files.codec();
+    }
+
     /** @return the backup folder */
     public Path root() {
         return files.layout().root();
