@@ -46,8 +46,10 @@ public class BadInputTest extends TinySepTestSupport {
         try (AmicaNode node = new AmicaNode(1, 17, port, MOVEMENT);
                 AmicaNode stranger = new AmicaNode(1, 99, port, MOVEMENT)) {
             node.keepAlive();
-            await(TIMEOUT, () -> Topology.of(context).contains("FlatOccupancy <- MovementProvider of AmicaMovement@1.17"),
-                    "the movement node's devices");
+            // both ends: consumers connect to a new device's providers before the device connects to its bus device
+            await(TIMEOUT, () -> Topology.of(context).containsAll(Set.of(
+                    "FlatOccupancy <- MovementProvider of AmicaMovement@1.17",
+                    "AmicaMovement@1.17 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.17")), "the movement node's devices");
             Set<String> graph = Topology.of(context);
             MovementProvider movement = awaitService(MovementProvider.class, null, TIMEOUT);
             movement.connect((src, m) -> {
