@@ -81,6 +81,8 @@ public class RuntimeChangesTest extends TinySepTestSupport {
                     "FlatOccupancy <- DoorProvider of AmicaDoor@1.20");
             expectTopology(withDoor);
             String uid = Topology.uid(context, "AmicaDoor", "1.20");
+            String devices = shell("tinysep:devices");
+            assertTrue("the device manager lists the new device:\n" + devices, devices.contains(uid));
             String drivers = shell("tinysep:drivers");
             assertTrue("a hot-deployed bundle is FileInstall's, not the list's:\n" + drivers,
                     drivers.contains("org.tinysep.amica.door (not in the list)"));
