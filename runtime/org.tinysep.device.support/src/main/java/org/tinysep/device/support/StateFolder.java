@@ -1,5 +1,6 @@
 package org.tinysep.device.support;
 
+import java.io.File;
 import java.nio.file.Path;
 import java.util.Optional;
 import org.osgi.framework.BundleContext;
@@ -17,6 +18,20 @@ public final class StateFolder {
     public static final String HOME = "tinysep.home";
 
     private StateFolder() {
+    }
+
+    /**
+     * @return {@link #resolve(String, BundleContext, String)}, else {@code name} in the bundle's data area (Pax Exam
+     *         and bare frameworks have neither property); null only without a context or data area
+     */
+    public static Path resolveOrDataArea(String configured, BundleContext context, String name) {
+        Optional<Path> path = context == null ? resolve(configured, null, null, name)
+                : resolve(configured, context, name);
+        if (path.isPresent() || context == null) {
+            return path.orElse(null);
+        }
+        File data = context.getDataFile(name);
+        return data == null ? null : data.toPath().toAbsolutePath();
     }
 
     /** @return {@link #resolve(String, String, String, String)} with the framework properties of {@code context} */

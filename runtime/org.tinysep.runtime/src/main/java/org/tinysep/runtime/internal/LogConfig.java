@@ -3,6 +3,7 @@ package org.tinysep.runtime.internal;
 import java.nio.file.Path;
 import java.time.Duration;
 import org.osgi.framework.BundleContext;
+import org.tinysep.device.support.StateFolder;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,18 +39,6 @@ final class LogConfig {
     }
 
     static Path folder(String configured, BundleContext context) {
-        if (configured != null && !configured.isBlank()) {
-            return Path.of(configured.strip()).toAbsolutePath();
-        }
-        String var = context == null ? null : context.getProperty("tinysep.var");
-        if (var != null && !var.isBlank()) {
-            return Path.of(var.strip(), "log").toAbsolutePath();
-        }
-        String home = context == null ? null : context.getProperty("tinysep.home");
-        if (home != null && !home.isBlank()) {
-            return Path.of(home.strip(), "var", "log").toAbsolutePath();
-        }
-        java.io.File data = context == null ? null : context.getDataFile("log");
-        return data == null ? null : data.toPath().toAbsolutePath();
+        return StateFolder.resolveOrDataArea(configured, context, "log");
     }
 }

@@ -23,6 +23,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Driver;
 import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * {@code tinysep:backup [file]} writes the whole configuration as one zip archive; {@code tinysep:restore <file>}

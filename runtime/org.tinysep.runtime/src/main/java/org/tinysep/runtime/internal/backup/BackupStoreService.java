@@ -27,6 +27,7 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * The device manager's backup store (thesis 3.7): on activation reads every backup file (damaged ones are moved
@@ -52,7 +53,7 @@ public final class BackupStoreService implements BackupStore {
     @Activate
     public BackupStoreService(BundleContext context, BackupConfig config,
             @Reference(name = "eventLog") EventLog events) {
-        this(StateFolder.resolve(config.folder(), context, "backup"), Math.max(0, config.writeDelayMillis()), events);
+        this(StateFolder.resolveOrDataArea(config.folder(), context, "backup"), Math.max(0, config.writeDelayMillis()), events);
     }
 
     BackupStoreService(Path root, long writeDelayMillis, EventLog events) {
