@@ -18,6 +18,7 @@ import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.Topology;
 
 /**
@@ -34,11 +35,12 @@ public class DriverRemovalTest extends RemovalTestSupport {
     @Test
     public void stoppingADriverBundleRemovesItsDevicesOneByOneThenTheDriverAndTheyComeBack() throws Exception {
         int port = udpPortOf(BUS);
-        try (Node m17 = new Node(17, MOVEMENT); Node m18 = new Node(18, MOVEMENT); Node door = new Node(20, DOOR)) {
-            m17.keepAlive(port);
+        try (AmicaNode m17 = new AmicaNode(1, 17, port, MOVEMENT); AmicaNode m18 = new AmicaNode(1, 18, port, MOVEMENT);
+                AmicaNode door = new AmicaNode(1, 20, port, DOOR)) {
+            m17.keepAlive();
             expectGraph(Set.of("AmicaMovement@1.17"), Set.of());
-            m18.keepAlive(port); // created second
-            door.keepAlive(port);
+            m18.keepAlive(); // created second
+            door.keepAlive();
             Set<String> movements = Set.of("AmicaMovement@1.17", "AmicaMovement@1.18",
                     "FlatOccupancy <- MovementProvider of AmicaMovement@1.17",
                     "FlatOccupancy <- MovementProvider of AmicaMovement@1.18",
@@ -115,11 +117,12 @@ public class DriverRemovalTest extends RemovalTestSupport {
     @Test
     public void stoppingTheBusRadioMakesEveryDeviceThatNeededItRemoveItself() throws Exception {
         int port = udpPortOf(BUS);
-        try (Node movement = new Node(17, MOVEMENT); Node door = new Node(20, DOOR);
-                Node light = new Node(30, SIMPLE_LIGHT)) {
-            movement.keepAlive(port);
-            door.keepAlive(port);
-            light.keepAlive(port);
+        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
+                AmicaNode door = new AmicaNode(1, 20, port, DOOR);
+                AmicaNode light = new AmicaNode(1, 30, port, SIMPLE_LIGHT)) {
+            movement.keepAlive();
+            door.keepAlive();
+            light.keepAlive();
             Set<String> flat = Set.of("AmicaMovement@1.17", "AmicaDoor@1.20", "AmicaSimpleLight@1.30",
                     "FlatOccupancy", "InactivityRecognition", "FollowMeLight", "HouseInformation", "MailManager");
             expectGraph(flat, Set.of());
@@ -159,10 +162,14 @@ public class DriverRemovalTest extends RemovalTestSupport {
 
             radio.start();
             int newPort = udpPortOf(BUS);
-            movement.keepAlive(newPort);
-            door.keepAlive(newPort);
-            light.keepAlive(newPort);
-            expectGraph(flat, Set.of()); // rebuilt by the nodes' next keep-alives
+            try (AmicaNode movement2 = new AmicaNode(1, 17, newPort, MOVEMENT);
+                    AmicaNode door2 = new AmicaNode(1, 20, newPort, DOOR);
+                    AmicaNode light2 = new AmicaNode(1, 30, newPort, SIMPLE_LIGHT)) {
+                movement2.keepAlive();
+                door2.keepAlive();
+                light2.keepAlive();
+                expectGraph(flat, Set.of()); // rebuilt by the nodes' next keep-alives (to the radio's new port)
+            }
         }
     }
 

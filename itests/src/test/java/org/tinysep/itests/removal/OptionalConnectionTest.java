@@ -15,6 +15,7 @@ import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.osgi.framework.Bundle;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.Topology;
 
 /**
@@ -35,9 +36,10 @@ public class OptionalConnectionTest extends RemovalTestSupport {
     @Test
     public void losingAnOptionalProviderKeepsTheDeviceWhichReconnectsWhenItReturns() throws Exception {
         int port = udpPortOf(BUS);
-        try (Node movement = new Node(17, MOVEMENT); Node light = new Node(30, SIMPLE_LIGHT)) {
-            movement.keepAlive(port);
-            light.keepAlive(port);
+        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
+                AmicaNode light = new AmicaNode(1, 30, port, SIMPLE_LIGHT)) {
+            movement.keepAlive();
+            light.keepAlive();
             Set<String> full = Set.of(
                     INACTIVITY + " <- MovementProvider of " + MOV,
                     INACTIVITY + " <- FlatOccupancyProvider of FlatOccupancy (optional)",
