@@ -23,20 +23,26 @@ import org.tinysep.device.support.Placements;
 /**
  * Turns "device X reported something at T" into an {@link Activity}: the room from the device's
  * {@code tinysep.room} property at that moment, its name and type from House Information, its limit from the
- * {@link LimitTable}.
+ * {@link LimitTable}. A door's or window's first report is no activity ({@link ContactStates}).
  */
 final class ActivityFactory implements MovementListener, DoorListener, WindowListener {
 
     private final Placements directory;
     private final LimitTable limits;
     private final Consumer<Activity> sink;
+    private final ContactStates contacts = new ContactStates();
     private volatile Map<String, Room> rooms = Map.of();
 
-    /** @param sink receives every activity: indoor motion, door and window changes */
+    /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
         this.directory = directory;
         this.limits = limits;
         this.sink = sink;
+    }
+
+    /** A door or window was connected in state {@code current}. */
+    void contactConnected(String deviceUid, OpenState current) {
+        contacts.connected(deviceUid, current);
     }
 
     @Override
@@ -48,14 +54,14 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
 
     @Override
     public void doorChanged(DoorProvider source, OpenState state, Instant at) {
-        if (state != OpenState.UNKNOWN) {
+        if (contacts.isChange(source.deviceUid(), state)) {
             sink.accept(of(source.deviceUid(), n -> "door " + n + " " + lower(state), at));
         }
     }
 
     @Override
     public void windowChanged(WindowProvider source, OpenState state, Instant at) {
-        if (state != OpenState.UNKNOWN) {
+        if (contacts.isChange(source.deviceUid(), state)) {
             sink.accept(of(source.deviceUid(), n -> "window " + n + " " + lower(state), at));
         }
     }

@@ -58,10 +58,12 @@ final class InactivityDevice extends AbstractDevice
 
     void watch(DoorProvider p) {
         connect(p, DoorProvider.class, activities, true);
+        activities.contactConnected(p.deviceUid(), p.state());
     }
 
     void watch(WindowProvider p) {
         connect(p, WindowProvider.class, activities, true);
+        activities.contactConnected(p.deviceUid(), p.state());
     }
 
     void use(FlatOccupancyProvider p) {

@@ -81,17 +81,21 @@ final class Fakes {
     }
 
     static final class Door extends Base<DoorListener> implements DoorProvider {
+        private volatile OpenState state = OpenState.UNKNOWN;
+
         Door(String uid) {
             super(uid);
         }
 
+        /** Like a door device: the state changes, then the listeners hear it (the first report too). */
         void change(OpenState s, Instant at) {
+            state = s;
             List.copyOf(listeners).forEach(l -> l.doorChanged(this, s, at));
         }
 
         @Override
         public OpenState state() {
-            return OpenState.UNKNOWN;
+            return state;
         }
 
         @Override

@@ -58,9 +58,39 @@ class InactivityDeviceTest {
     }
 
     @Test
+    void aContactsFirstReportIsNoActivityItsChangesAre() {
+        device.use(flat);
+        bathSensor.report(true, T0.plusSeconds(600));
+        tickUntil(T0.plusSeconds(600 + 45 * 60 + 60));
+        assertEquals(InactivityState.ALERT, device.state());
+
+        bathDoor.change(OpenState.CLOSED, now); // power-up or platform restart: the node tells its state
+        assertEquals(InactivityState.ALERT, device.state(), "a first report does not answer the alert");
+        bathDoor.change(OpenState.CLOSED, now); // a repeat
+        assertEquals(InactivityState.ALERT, device.state());
+        bathDoor.change(OpenState.OPEN, now); // someone opened it
+        assertEquals(InactivityState.WATCHING, device.state());
+    }
+
+    @Test
+    void aContactConnectedWithAKnownStateCountsItsNextChange() {
+        Fakes.Door hallDoor = new Fakes.Door("d-hall");
+        directory.rooms.put("d-hall", "r-bath");
+        hallDoor.change(OpenState.CLOSED, T0); // reported before this device connected (e.g. it was updated)
+        device.use(flat);
+        device.watch(hallDoor);
+        bathSensor.report(true, T0.plusSeconds(600));
+        tickUntil(T0.plusSeconds(600 + 45 * 60 + 60));
+        assertEquals(InactivityState.ALERT, device.state());
+        hallDoor.change(OpenState.OPEN, now);
+        assertEquals(InactivityState.WATCHING, device.state(), "a change from the state known at connection");
+    }
+
+    @Test
     void oneMailPerAlertNamingRoomActivityAndTime() {
         device.use(mail);
         device.use(flat);
+        bathDoor.change(OpenState.CLOSED, T0); // the door's first report: its state, no activity
         bathSensor.report(true, T0.plusSeconds(600));
         tickUntil(T0.plusSeconds(600 + 45 * 60 + 300));
         assertEquals(InactivityState.ALERT, device.state());
