@@ -3,6 +3,7 @@ package org.tinysep.simulator.cli;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.time.LocalDate;
 import java.time.LocalDateTime;
 import java.time.ZoneOffset;
@@ -35,7 +36,7 @@ public record Replay(ReplayPlan plan, long shiftDays) {
     }
 
     /** @return the recorded local time of a virtual instant (the inverse of {@link #virtualSecond}) */
-    public LocalDateTime recordedTime(java.time.Instant virtual) {
+    public LocalDateTime recordedTime(Instant virtual) {
         return LocalDateTime.ofInstant(virtual, ZoneOffset.UTC).minusDays(shiftDays);
     }
 
@@ -71,7 +72,7 @@ public record Replay(ReplayPlan plan, long shiftDays) {
     /**
      * @return the first virtual day on which the recording, lead time included, starts after {@code notBefore}
      */
-    static LocalDate firstDayAfter(ReplayPlan plan, java.time.Instant notBefore) {
+    static LocalDate firstDayAfter(ReplayPlan plan, Instant notBefore) {
         LocalDate day = LocalDateTime.ofInstant(notBefore, ZoneOffset.UTC).toLocalDate();
         LocalDateTime start = plan.start().minusSeconds(LEAD_SECONDS);
         while (start.plusDays(day.toEpochDay() - plan.start().toLocalDate().toEpochDay())
