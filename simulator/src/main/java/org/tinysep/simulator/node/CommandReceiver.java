@@ -14,10 +14,15 @@ import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaProtocolException;
 
-/** One thread that receives the frames the platform sends to any AmICA node and hands them to that node. */
+/**
+ * Receives the frames the platform sends to any AmICA node and hands them to that node: on its own thread as they
+ * arrive, and on the simulation's thread at the start of every virtual second ({@link #drainNow}).
+ */
 final class CommandReceiver implements AutoCloseable {
 
     private final Selector selector;
+    private final List<AmicaNode> nodes;
+    private final ByteBuffer buf = ByteBuffer.allocate(AmicaCodec.MAX_FRAME + 1);
     private final ExecutorService executor = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "amica-commands");
         t.setDaemon(true);
@@ -25,6 +30,7 @@ final class CommandReceiver implements AutoCloseable {
     });
 
     CommandReceiver(List<AmicaNode> nodes) throws IOException {
+        this.nodes = List.copyOf(nodes);
         selector = Selector.open();
         for (AmicaNode n : nodes) {
             n.port().channel().configureBlocking(false);
@@ -34,22 +40,42 @@ final class CommandReceiver implements AutoCloseable {
     }
 
     private void loop() {
-        ByteBuffer buf = ByteBuffer.allocate(AmicaCodec.MAX_FRAME + 1);
         try {
             while (selector.isOpen()) {
                 selector.select();
                 for (SelectionKey key : selector.selectedKeys()) {
-                    AmicaNode node = (AmicaNode) key.attachment();
-                    buf.clear();
-                    while (key.isValid() && ((java.nio.channels.DatagramChannel) key.channel()).receive(buf) != null) {
-                        handle(node, buf.array(), buf.position());
-                        buf.clear();
+                    if (key.isValid()) {
+                        drain((AmicaNode) key.attachment());
                     }
                 }
                 selector.selectedKeys().clear();
             }
         } catch (IOException | ClosedSelectorException e) {
             // closed: the simulation ends
+        }
+    }
+
+    /**
+     * Carries out every command already waiting for any node, on the caller's thread. The simulation calls it at the
+     * start of each virtual second, so in lock-step a command the platform sent before its DONE is carried out
+     * before the node's next status report, however late this class's own thread gets the CPU.
+     */
+    void drainNow() {
+        for (AmicaNode node : nodes) {
+            try {
+                drain(node);
+            } catch (IOException e) {
+                return; // closed: the simulation ends
+            }
+        }
+    }
+
+    /** One node's waiting commands, in order; one lock so that the thread and {@link #drainNow} never interleave. */
+    private synchronized void drain(AmicaNode node) throws IOException {
+        buf.clear();
+        while (node.port().channel().isOpen() && node.port().channel().receive(buf) != null) {
+            handle(node, buf.array(), buf.position());
+            buf.clear();
         }
     }
 

@@ -22,6 +22,7 @@ public final class NodeFactory {
         List<SimNode> nodes = new ArrayList<>();
         List<AmicaNode> amica = new ArrayList<>();
         RoomConditions conditions = new RoomConditions();
+        CommandReceiver receiver;
         try {
             SunSpotPort spots = null;
             for (NodeSpec s : flat.nodes()) {
@@ -40,12 +41,12 @@ public final class NodeFactory {
                     nodes.add(new SunSpotNode(s, spots, env, conditions));
                 }
             }
-            CommandReceiver receiver = new CommandReceiver(amica);
+            receiver = new CommandReceiver(amica);
             resources.add(0, receiver::close);
         } catch (IOException | RuntimeException e) {
             new NodeSet(nodes, resources).close();
             throw e;
         }
-        return new NodeSet(nodes, resources);
+        return new NodeSet(nodes, resources, receiver::drainNow);
     }
 }

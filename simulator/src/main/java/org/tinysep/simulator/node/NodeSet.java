@@ -11,10 +11,17 @@ public final class NodeSet implements AutoCloseable {
 
     private final Map<String, SimNode> nodes = new LinkedHashMap<>();
     private final List<Closeable> resources;
+    private final Runnable beforeTick;
 
     NodeSet(List<SimNode> nodes, List<Closeable> resources) {
+        this(nodes, resources, () -> { });
+    }
+
+    /** @param beforeTick runs at the start of every {@link #tick}: commands waiting for the nodes are carried out */
+    NodeSet(List<SimNode> nodes, List<Closeable> resources, Runnable beforeTick) {
         nodes.forEach(n -> this.nodes.put(n.spec().id(), n));
         this.resources = resources;
+        this.beforeTick = beforeTick;
     }
 
     public List<SimNode> nodes() {
@@ -27,6 +34,7 @@ public final class NodeSet implements AutoCloseable {
 
     /** @return how many reported values changed (see {@link SimNode#tick}) */
     public int tick(long t) {
+        beforeTick.run();
         int changed = 0;
         for (SimNode n : nodes.values()) {
             changed += n.tick(t);

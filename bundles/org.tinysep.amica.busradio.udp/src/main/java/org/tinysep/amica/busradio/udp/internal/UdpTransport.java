@@ -13,8 +13,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The UDP socket of the driver: one receive loop and one sender, each on its own single-thread executor that
- * {@link #close()} shuts down. Datagrams are handed to the receiver synchronously on the receive thread.
+ * The UDP socket of the driver: one receive loop on its own single-thread executor that {@link #close()} shuts
+ * down; datagrams are handed to the receiver synchronously on the receive thread. Sends go out on the caller's
+ * thread: a UDP send does not wait for the peer, and a command sent while the Time Controller handles a TICK is
+ * then on the wire before its DONE (lock-step simulations see it in the same virtual second).
  */
 final class UdpTransport implements AutoCloseable {
 
@@ -34,13 +36,11 @@ final class UdpTransport implements AutoCloseable {
 
     private final DatagramSocket socket;
     private final ExecutorService receiveExecutor;
-    private final ExecutorService sendExecutor;
     private volatile boolean open = true;
 
     private UdpTransport(DatagramSocket socket, String name) {
         this.socket = socket;
         this.receiveExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, name + "-receive"));
-        this.sendExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, name + "-send"));
     }
 
     /** Binds the socket; nothing is received until {@link #start(Receiver)}. */
@@ -98,34 +98,30 @@ final class UdpTransport implements AutoCloseable {
         }
     }
 
-    /** Queues a datagram; never blocks the caller. */
+    /** Sends a datagram on the caller's thread and reports the outcome; a closed transport fails at once. */
     void send(byte[] frame, InetSocketAddress to, SendResult result) {
         if (!open) {
             result.done(frame, to, new IOException("bus radio is closed"));
             return;
         }
-        sendExecutor.execute(() -> {
-            IOException failure = null;
-            try {
-                socket.send(new DatagramPacket(frame, frame.length, to));
-            } catch (IOException e) {
-                failure = e;
-            }
-            result.done(frame, to, failure);
-        });
+        IOException failure = null;
+        try {
+            socket.send(new DatagramPacket(frame, frame.length, to));
+        } catch (IOException e) {
+            failure = e;
+        }
+        result.done(frame, to, failure);
     }
 
     @Override
     public void close() {
         open = false;
         socket.close();
-        sendExecutor.shutdown();
         receiveExecutor.shutdown();
         try {
             if (!receiveExecutor.awaitTermination(2, TimeUnit.SECONDS)) {
                 receiveExecutor.shutdownNow();
             }
-            sendExecutor.awaitTermination(2, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
