@@ -6,7 +6,6 @@ import java.util.function.Consumer;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.HeaterControl;
-import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
@@ -19,9 +18,6 @@ import org.tinysep.simulator.flat.NodeSpec;
  * value and are answered at once with a status frame.
  */
 public final class AmicaNode extends SimNode {
-
-    private static final int BATTERY_MV = 3000;
-    private static final int VENDOR = 0x0A11;
 
     private final AmicaPort port;
     private final Environment env;
@@ -60,7 +56,7 @@ public final class AmicaNode extends SimNode {
     protected synchronized int report(long t, long elapsed) {
         int changed = 0;
         if (Rates.due(elapsed, Rates.KEEP_ALIVE)) {
-            port.send(new KeepAlive(elapsed, BATTERY_MV, VENDOR, productId, serial));
+            port.sendKeepAlive(elapsed, productId, serial);
         }
         if (Rates.due(elapsed, Rates.MOTION) && spec.has("movement")) {
             changed += send("movement", new MotionDetection(env.personMotion(spec.room(), t - Rates.MOTION, t)));

@@ -10,9 +10,14 @@ import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.KeepAlive;
 
 /** One AmICA node's own UDP socket: frames to the bus radio (sequence numbers 0..255), commands back from it. */
 final class AmicaPort implements AutoCloseable {
+
+    /** The battery and vendor every simulated AmICA node reports in its keep-alive. */
+    private static final int BATTERY_MV = 3000;
+    private static final int VENDOR = 0x0A11;
 
     private final AmicaAddress address;
     private final DatagramChannel channel;
@@ -31,6 +36,11 @@ final class AmicaPort implements AutoCloseable {
 
     DatagramChannel channel() {
         return channel;
+    }
+
+    /** Sends this node's keep-alive: {@code uptime} seconds since start-up, its product id and serial number. */
+    void sendKeepAlive(long uptime, int productId, long serial) {
+        send(new KeepAlive(uptime, BATTERY_MV, VENDOR, productId, serial));
     }
 
     void send(AmicaPayload payload) {

@@ -5,7 +5,6 @@ import java.util.Locale;
 import java.util.Map;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaNodeType;
-import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.simulator.flat.Family;
 import org.tinysep.simulator.flat.NodeSpec;
 import org.tinysep.simulator.replay.Signal;
@@ -17,9 +16,6 @@ import org.tinysep.simulator.replay.Signal;
  * every {@link Rates#KEEP_ALIVE} s; the first one at start-up, before any other frame.
  */
 public final class ReplayNode extends SimNode {
-
-    private static final int BATTERY_MV = 3000;
-    private static final int VENDOR = 0x0A11;
 
     private final org.tinysep.simulator.replay.NodeSpec recorded;
     private final AmicaPort port;
@@ -66,7 +62,7 @@ public final class ReplayNode extends SimNode {
     @Override
     protected synchronized int report(long t, long elapsed) {
         if (Rates.due(elapsed, Rates.KEEP_ALIVE)) {
-            port.send(new KeepAlive(elapsed, BATTERY_MV, VENDOR, productId, serial));
+            port.sendKeepAlive(elapsed, productId, serial);
         }
         if (fullRate && Rates.due(elapsed, recorded.isMotion() ? Rates.MOTION : Rates.REED_SWITCH)) {
             port.send(state.payload());
