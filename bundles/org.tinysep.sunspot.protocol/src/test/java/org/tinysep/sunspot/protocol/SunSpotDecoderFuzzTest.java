@@ -9,6 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.amica.protocol.Fuzz;
 
 /**
  * The decoders fed random and mutated input (fixed seeds, see {@link Fuzz}): nothing but

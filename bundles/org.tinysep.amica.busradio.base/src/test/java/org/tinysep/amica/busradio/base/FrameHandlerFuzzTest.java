@@ -21,6 +21,7 @@ import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaProtocolException;
+import org.tinysep.amica.protocol.Fuzz;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
