@@ -23,7 +23,13 @@ public @interface MailManagerConfig {
     @AttributeDefinition(description = "SMTP user name; empty = no authentication")
     String user() default "";
 
-    @AttributeDefinition(description = "SMTP password (never logged, shown as ***)", type = AttributeType.PASSWORD)
+    @AttributeDefinition(description = "SMTP password file (first line), owner-only; empty = "
+            + "${tinysep.var}/secrets/smtp.password. Kept out of backups")
+    String passwordFile() default "";
+
+    @AttributeDefinition(description = "Deprecated: SMTP password in the configuration, stored in plain text in the "
+            + "framework cache; use passwordFile. Wins over the file when set (never logged, shown as ***)",
+            type = AttributeType.PASSWORD)
     String password() default "";
 
     @AttributeDefinition(description = "Sender address (From:)")
@@ -40,6 +46,10 @@ public @interface MailManagerConfig {
 
     @AttributeDefinition(description = "Longest retry delay in seconds")
     int retryMaxSeconds() default MailSettings.DEFAULT_RETRY_MAX;
+
+    @AttributeDefinition(description = "Give a message up when it has failed temporarily for this many seconds "
+            + "(default 86400 = 24 h)")
+    int giveUpAfterSeconds() default MailSettings.DEFAULT_GIVE_UP_AFTER;
 
     @AttributeDefinition(description = "Spool folder for queued mail; empty = ${tinysep.var}/mail-spool, else "
             + "${tinysep.home}/var/mail-spool, else mail-spool in the working directory")

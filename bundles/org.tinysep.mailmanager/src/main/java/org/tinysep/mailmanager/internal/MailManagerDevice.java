@@ -1,12 +1,13 @@
 package org.tinysep.mailmanager.internal;
 
+import java.time.Clock;
 import java.util.List;
+import java.util.function.Consumer;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceFunction;
-import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerListener;
@@ -34,15 +35,30 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     private volatile MailSettings settings;
     private volatile String configProblem;
     private volatile String lastProblem = "";
+    private volatile String undelivered;
+    private volatile String outboxDetail = "";
+    private volatile Consumer<MailHealth> onHealth = h -> { };
 
     /** @param configProblem why the configuration was refused, or null */
     MailManagerDevice(DriverContext context, MailSettings settings, String configProblem, SmtpTransport transport) {
+        this(context, settings, configProblem, transport, Clock.systemUTC(), null);
+    }
+
+    /**
+     * @param wall     the computer's clock, for the give-up age
+     * @param onHealth told (on the mail thread) whenever where alerts go or what is wrong changes; may be null
+     */
+    MailManagerDevice(DriverContext context, MailSettings settings, String configProblem, SmtpTransport transport,
+            Clock wall, Consumer<MailHealth> onHealth) {
         super(context, Uids.of(context.driverName(), "device"), context.driverName(), "Mail Manager");
         this.listeners = new Listeners<>(uid());
         this.settings = settings;
         this.configProblem = configProblem;
+        if (onHealth != null) {
+            this.onHealth = onHealth;
+        }
         publish(provider, MailManagerProvider.class);
-        this.outbox = new Outbox(settings, transport, this, context::now);
+        this.outbox = new Outbox(settings, transport, this, context::now, wall);
     }
 
     /** Applies a changed configuration without replacing the device (its consumers stay connected). */
@@ -62,44 +78,69 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         return s == null ? (settings.configured() ? MailStatus.IDLE : MailStatus.NOT_CONFIGURED) : s;
     }
 
+    /** @return where alerts go and what is wrong, now */
+    MailHealth health() {
+        return new MailHealth(settings, configProblem, mailStatus(), outboxDetail, undelivered);
+    }
+
     @Override
     public void statusChanged(MailStatus s, String detail) {
-        if (configProblem != null) {
-            status(DeviceStatus.State.ERROR, "bad configuration: " + configProblem
-                    + "; mail is written to the log until it is fixed");
-        } else if (s == MailStatus.NOT_CONFIGURED) {
-            status(DeviceStatus.State.UNKNOWN, "no SMTP host configured: mail is written to the log");
-        } else if (s == MailStatus.RETRYING) {
+        outboxDetail = detail == null ? "" : detail;
+        if (s == MailStatus.RETRYING) {
             lastProblem = detail;
-            status(DeviceStatus.State.OFFLINE, detail);
-        } else {
-            status(DeviceStatus.State.ONLINE, s == MailStatus.IDLE ? "" : detail);
         }
+        showHealth();
         listeners.fire(l -> l.mailStatusChanged(provider, s, now()));
     }
 
     @Override
-    public void queued(MailMessage m) {
-        event("mail queued: \"" + m.subject() + "\"");
+    public void undelivered(String notice) {
+        if (!java.util.Objects.equals(notice, undelivered)) {
+            undelivered = notice;
+            showHealth();
+        }
+    }
+
+    private void showHealth() {
+        MailHealth h = health();
+        status(h.state(), h.statusDetail());
+        onHealth.accept(h);
     }
 
     @Override
-    public void sent(MailMessage m, String detail) {
+    public void queued(MailMessage m, List<String> recipients) {
+        event(Words.mail(m) + " queued for " + String.join(", ", recipients));
+    }
+
+    @Override
+    public void delivered(MailMessage m, List<String> recipients) {
         sent.incrementAndGet();
-        event("mail sent: \"" + m.subject() + "\" (" + detail + ")");
+        event(Words.mail(m) + " delivered to " + String.join(", ", recipients));
     }
 
     @Override
-    public void givenUp(MailMessage m, String reason) {
-        problem("mail given up: \"" + m.subject() + "\": " + reason);
+    public void retrying(String what) {
+        event(what);
+    }
+
+    @Override
+    public void failed(String what) {
+        LOG.warn("Mail Manager: {}", what);
+        problem(what);
+    }
+
+    @Override
+    public void warning(String message) {
+        LOG.warn("Mail Manager: {}", message);
+        problem(message);
     }
 
     @Override
     public void logged(MailMessage m) {
         LOG.warn("Mail Manager {}: mail not sent, written here instead. Subject: {}\n{}",
                 configProblem == null ? "has no SMTP host" : "is misconfigured", m.subject(), m.body());
-        event("mail written to the log, not sent (" + (configProblem == null ? "no SMTP host" : "bad configuration")
-                + "): \"" + m.subject() + "\"");
+        event(Words.mail(m) + " NOT mailed, only written to the log ("
+                + (configProblem == null ? MailHealth.NO_HOST : "bad configuration: " + configProblem) + ")");
     }
 
     @Override
@@ -113,7 +154,10 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         MailSettings s = settings;
         String cfg = "set through ConfigAdmin pid " + MailManagerDriver.PID;
         return List.of(
+                Parameter.readOnly("delivery", health().summary(), "where alerts go, in plain words"),
                 Parameter.readOnly("mailStatus", mailStatus(), "IDLE, SENDING, RETRYING or NOT_CONFIGURED"),
+                Parameter.readOnly("undelivered", undelivered == null ? "" : undelivered,
+                        "the last alert that could not be delivered, until a delivery succeeds"),
                 Parameter.readOnly("queued", outbox.queued(), "messages waiting in the spool"),
                 Parameter.readOnly("sent", sent.get(), "messages sent since start"),
                 Parameter.readOnly("lastProblem", lastProblem, "the last failure, if any"),
@@ -121,7 +165,10 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
                 Parameter.readOnly("port", s.port(), cfg),
                 Parameter.readOnly("security", s.security(), cfg),
                 Parameter.readOnly("user", s.user(), cfg),
-                Parameter.readOnly("password", s.password().isEmpty() ? "" : MailSettings.MASK, cfg),
+                Parameter.readOnly("password", s.password().isEmpty() ? "" : MailSettings.MASK, cfg
+                        + " (deprecated: plain text in the framework cache; use passwordFile)"),
+                Parameter.readOnly("passwordFile", SmtpPassword.describe(s), cfg),
+                Parameter.readOnly("giveUpAfterSeconds", s.giveUpAfterSeconds(), cfg),
                 Parameter.readOnly("from", s.from(), cfg),
                 Parameter.readOnly("recipients", String.join(", ", s.recipients()), cfg),
                 Parameter.readOnly("spoolDir", s.spoolDir(), cfg));

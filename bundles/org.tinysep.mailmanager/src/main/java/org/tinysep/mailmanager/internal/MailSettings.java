@@ -13,14 +13,15 @@ import org.tinysep.device.support.StateFolder;
  *
  * @param host empty when not configured
  */
-record MailSettings(String host, int port, Security security, String user, String password, String from,
-        List<String> recipients, int connectTimeoutSeconds, int retryInitialSeconds, int retryMaxSeconds,
-        Path spoolDir) {
+record MailSettings(String host, int port, Security security, String user, String password, Path passwordFile,
+        String from, List<String> recipients, int connectTimeoutSeconds, int retryInitialSeconds, int retryMaxSeconds,
+        int giveUpAfterSeconds, Path spoolDir) {
 
     static final int DEFAULT_PORT = 587;
     static final int DEFAULT_CONNECT_TIMEOUT = 10;
     static final int DEFAULT_RETRY_INITIAL = 5;
     static final int DEFAULT_RETRY_MAX = 600;
+    static final int DEFAULT_GIVE_UP_AFTER = 86400;
     static final String MASK = "***";
 
     /** Deliberately simple: one @, no blanks or angle brackets, a dot-free host is allowed (e.g. localhost). */
@@ -60,6 +61,7 @@ record MailSettings(String host, int port, Security security, String user, Strin
         int timeout = number(props, "connectTimeoutSeconds", DEFAULT_CONNECT_TIMEOUT, 1, 3600);
         int initial = number(props, "retryInitialSeconds", DEFAULT_RETRY_INITIAL, 1, 86400);
         int max = number(props, "retryMaxSeconds", DEFAULT_RETRY_MAX, 1, 86400);
+        int giveUp = number(props, "giveUpAfterSeconds", DEFAULT_GIVE_UP_AFTER, 1, 30 * 86400);
         if (max < initial) {
             throw new IllegalArgumentException("retryMaxSeconds (" + max + ") must not be below retryInitialSeconds ("
                     + initial + ")");
@@ -77,8 +79,10 @@ record MailSettings(String host, int port, Security security, String user, Strin
                 throw new IllegalArgumentException("recipients must name at least one address (comma-separated)");
             }
         }
-        return new MailSettings(host, port, security, user, password, from, recipients, timeout, initial, max,
-                spoolDir(text(props, "spoolDir"), tinysepVar, tinysepHome));
+        return new MailSettings(host, port, security, user, password,
+                inStateFolder(text(props, "passwordFile"), tinysepVar, tinysepHome, "secrets/smtp.password"), from,
+                recipients, timeout, initial, max, giveUp,
+                inStateFolder(text(props, "spoolDir"), tinysepVar, tinysepHome, "mail-spool"));
     }
 
     private static String text(Map<String, ?> props, String key) {
@@ -129,10 +133,9 @@ record MailSettings(String host, int port, Security security, String user, Strin
         return List.copyOf(all);
     }
 
-    /** @return the configured folder, else {@code <var>/mail-spool}, {@code <home>/var/mail-spool}, {@code mail-spool} */
-    private static Path spoolDir(String v, String tinysepVar, String tinysepHome) {
-        return StateFolder.resolve(v, tinysepVar, tinysepHome, "mail-spool")
-                .orElseGet(() -> Path.of("mail-spool").toAbsolutePath());
+    /** @return the configured path, else {@code <var>/<name>}, {@code <home>/var/<name>}, {@code <name>} */
+    private static Path inStateFolder(String v, String tinysepVar, String tinysepHome, String name) {
+        return StateFolder.resolve(v, tinysepVar, tinysepHome, name).orElseGet(() -> Path.of(name).toAbsolutePath());
     }
 
     /** @return a one-line description without the password */

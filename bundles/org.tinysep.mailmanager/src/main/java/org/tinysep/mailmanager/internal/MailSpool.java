@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Properties;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
+import org.tinysep.device.support.AtomicFiles;
 
 /**
  * The queue on disk: one {@code <id>.mail} file per message (UTF-8 properties), written atomically (temporary
@@ -24,6 +25,7 @@ import java.util.stream.Stream;
 final class MailSpool {
 
     private static final String SUFFIX = ".mail";
+    private static final String NOTICE = "undelivered.txt";
 
     private final Path dir;
 
@@ -43,6 +45,15 @@ final class MailSpool {
         p.setProperty("queuedAt", m.queuedAt().toString());
         p.setProperty("subject", m.subject());
         p.setProperty("body", m.body());
+        if (!m.pending().isEmpty()) {
+            p.setProperty("pending", String.join(",", m.pending()));
+        }
+        if (!m.failed().isEmpty()) {
+            p.setProperty("failed", String.join(",", m.failed()));
+        }
+        if (m.firstFailure() != null) {
+            p.setProperty("firstFailure", m.firstFailure().toString());
+        }
         Path tmp = dir.resolve(m.id() + SUFFIX + ".tmp");
         try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
             p.store(w, "TinySEP mail spool");
@@ -68,12 +79,10 @@ final class MailSpool {
         }
     }
 
-    /** Moves a message the server refused for good into {@code failed/}. */
+    /** Keeps a message that could not be delivered to some recipients in {@code failed/} (with whom it failed for). */
     void moveToFailed(MailMessage m) throws IOException {
-        Path failed = Files.createDirectories(dir.resolve("failed"));
-        if (Files.exists(file(m))) {
-            Files.move(file(m), failed.resolve(file(m).getFileName()), StandardCopyOption.REPLACE_EXISTING);
-        }
+        new MailSpool(dir.resolve("failed")).write(m);
+        delete(m);
     }
 
     /**
@@ -120,7 +129,40 @@ final class MailSpool {
         if (id == null || queued == null || subject == null || body == null) {
             throw new IOException("missing id, queuedAt, subject or body");
         }
-        return new MailMessage(Long.parseLong(id.strip()), Instant.parse(queued.strip()), subject, body);
+        String first = p.getProperty("firstFailure");
+        return new MailMessage(Long.parseLong(id.strip()), Instant.parse(queued.strip()), subject, body,
+                list(p.getProperty("pending")), list(p.getProperty("failed")),
+                first == null ? null : Instant.parse(first.strip()));
+    }
+
+    private static List<String> list(String v) {
+        return v == null || v.isBlank() ? List.of()
+                : java.util.Arrays.stream(v.split(",")).map(String::strip).filter(x -> !x.isEmpty()).toList();
+    }
+
+    /**
+     * Remembers, durably, that an alert could not be delivered, so the device shows it after a restart too.
+     *
+     * @param notice a sentence for the user, or null to forget it (a delivery succeeded)
+     */
+    void notice(String notice) throws IOException {
+        Path f = dir.resolve(NOTICE);
+        if (notice == null) {
+            Files.deleteIfExists(f);
+            return;
+        }
+        Files.createDirectories(dir);
+        AtomicFiles.write(f, notice.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** @return the remembered undelivered-alert notice, or null */
+    String notice() {
+        try {
+            Path f = dir.resolve(NOTICE);
+            return Files.isRegularFile(f) ? Files.readString(f, StandardCharsets.UTF_8).strip() : null;
+        } catch (IOException e) {
+            return "an earlier alert may not have been delivered (" + NOTICE + " unreadable: " + e.getMessage() + ")";
+        }
     }
 
     private void moveAside(Path f, Exception why, Consumer<String> problems) {

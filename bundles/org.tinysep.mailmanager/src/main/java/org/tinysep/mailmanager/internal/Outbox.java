@@ -1,7 +1,10 @@
 package org.tinysep.mailmanager.internal;
 
 import java.io.IOException;
+import java.time.Clock;
 import java.time.Instant;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
@@ -13,29 +16,34 @@ import org.tinysep.api.service.MailStatus;
 
 /**
  * The sending engine: a FIFO queue mirrored in a {@link MailSpool}, worked off one message at a time on its own
- * single thread. A failed attempt keeps the message at the head and retries with exponential back-off, so the
- * order is kept and the caller never waits. Every state change goes to {@link OutboxEvents}.
+ * single thread. A temporary failure keeps the message at the head and retries with exponential back-off (what
+ * happens after an attempt is {@link Delivery}'s job), so the order is kept and the caller never waits.
  */
 final class Outbox implements AutoCloseable {
 
     private final ScheduledExecutorService executor;
-    private final SmtpTransport transport;
     private final OutboxEvents events;
     private final Supplier<Instant> clock;
+    private final Delivery delivery;
     private final TreeMap<Long, MailMessage> queue = new TreeMap<>(); // by id = sending order; outbox thread only
+    private final Map<Long, Backoff> backoffs = new HashMap<>(); // of messages that failed; outbox thread only
+    private final Map<Long, Long> due = new HashMap<>(); // System.nanoTime of their next try; outbox thread only
     private MailSettings settings; // outbox thread only
     private MailSpool spool;
-    private Backoff backoff;
     private ScheduledFuture<?> pending; // the one pending attempt, immediate or after back-off; outbox thread only
     private long lastId;
     private volatile MailStatus status;
     private volatile int size;
 
-    /** Loads the spool of {@code settings} and starts sending what it holds. */
-    Outbox(MailSettings settings, SmtpTransport transport, OutboxEvents events, Supplier<Instant> clock) {
-        this.transport = transport;
+    /**
+     * Loads the spool of {@code settings} and starts sending what it holds.
+     *
+     * @param clock the platform clock (time stamps, "retrying at"); {@code wall} the computer's clock (give-up age)
+     */
+    Outbox(MailSettings settings, SmtpTransport transport, OutboxEvents events, Supplier<Instant> clock, Clock wall) {
         this.events = events;
         this.clock = clock;
+        this.delivery = new Delivery(transport, events, clock, wall);
         this.executor = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "tinysep-mail");
             t.setDaemon(true);
@@ -62,10 +70,8 @@ final class Outbox implements AutoCloseable {
     /** Skips the current back-off delay and tries again at once. */
     void retryNow() {
         executor.execute(() -> {
-            if (pending != null && pending.cancel(false)) {
-                pending = null;
-                kick();
-            }
+            due.clear();
+            kick();
         });
     }
 
@@ -91,37 +97,42 @@ final class Outbox implements AutoCloseable {
         }
         queue.put(m.id(), m);
         size = queue.size();
-        events.queued(m);
+        events.queued(m, settings.recipients());
         if (status != MailStatus.RETRYING) {
             status(MailStatus.SENDING, queue.size() + " queued");
         }
         kick();
     }
 
-    /** Schedules an attempt now unless one is already pending (then the back-off it waits for is kept). */
+    /** Looks for due messages now (a message waiting for its retry keeps its own time). */
     private void kick() {
-        if (pending == null) {
-            pending = executor.schedule(this::attempt, 0, TimeUnit.SECONDS);
+        if (pending != null) {
+            pending.cancel(false);
         }
+        pending = executor.schedule(this::attempt, 0, TimeUnit.SECONDS);
     }
 
     private void apply(MailSettings next) {
         MailSpool old = spool;
         settings = next;
         spool = new MailSpool(next.spoolDir());
-        backoff = new Backoff(next.retryInitialSeconds(), next.retryMaxSeconds());
+        delivery.configure(next, spool);
+        backoffs.clear();
+        due.clear();
         if (pending != null) {
             pending.cancel(false);
             pending = null;
         }
         if (old != null && !old.dir().equals(spool.dir())) {
             queue.values().forEach(m -> old.moveTo(spool, m, events::problem));
+            delivery.moveNotice(old);
         }
         for (MailMessage m : spool.load(events::problem)) {
             queue.putIfAbsent(m.id(), m);
             lastId = Math.max(lastId, m.id());
         }
         size = queue.size();
+        events.undelivered(spool.notice());
         if (!next.configured()) {
             status(MailStatus.NOT_CONFIGURED, queue.isEmpty() ? "" : queue.size() + " spooled, waiting for a host");
             return;
@@ -132,46 +143,41 @@ final class Outbox implements AutoCloseable {
         }
     }
 
-    /** Sends the head of the queue; reschedules itself for the next message or, after a failure, a retry. */
+    /**
+     * Sends the first message that is due (in queue order: a message waiting for a retry does not hold back the
+     * ones behind it), then reschedules itself for the next due message.
+     */
     private void attempt() {
         pending = null;
         if (queue.isEmpty() || !settings.configured()) {
             return;
         }
-        MailMessage m = queue.firstEntry().getValue();
-        SmtpTransport.Result r = transport.send(settings, m);
-        switch (r.outcome()) {
-            case SENT, PARTIAL -> done(m, false, () -> events.sent(m, r.detail()));
-            case REFUSED -> done(m, true, () -> events.givenUp(m, r.detail() + "; kept in " + spool.dir()
-                    + "/failed"));
-            case RETRY -> {
-                long delay = backoff.fail();
-                status(MailStatus.RETRYING, "attempt " + backoff.failures() + " failed: " + r.detail()
-                        + "; next try in " + delay + " s, " + queue.size() + " queued");
-                pending = executor.schedule(this::attempt, delay, TimeUnit.SECONDS);
-            }
-        }
-    }
-
-    private void done(MailMessage m, boolean refused, Runnable report) {
-        queue.remove(m.id());
-        size = queue.size();
-        backoff.reset();
-        try {
-            if (refused) {
-                spool.moveToFailed(m);
+        long now = System.nanoTime();
+        MailMessage m = queue.values().stream().filter(x -> due.getOrDefault(x.id(), now) - now <= 0).findFirst()
+                .orElse(null);
+        if (m != null) {
+            Delivery.Next next = delivery.attempt(m, backoffs.computeIfAbsent(m.id(),
+                    id -> new Backoff(settings.retryInitialSeconds(), settings.retryMaxSeconds())));
+            if (next.retry() != null) {
+                queue.put(m.id(), next.retry());
+                due.put(m.id(), System.nanoTime() + TimeUnit.SECONDS.toNanos(next.delaySeconds()));
+                status(MailStatus.RETRYING, next.detail());
             } else {
-                spool.delete(m);
+                queue.remove(m.id());
+                backoffs.remove(m.id());
+                due.remove(m.id());
+                size = queue.size();
+                if (due.isEmpty()) {
+                    status(queue.isEmpty() ? MailStatus.IDLE : MailStatus.SENDING,
+                            queue.isEmpty() ? "" : queue.size() + " queued");
+                }
             }
-        } catch (IOException e) {
-            events.problem("cannot remove finished " + m + " from the spool (it may be sent again): " + e);
         }
-        report.run();
-        if (queue.isEmpty()) {
-            status(MailStatus.IDLE, "");
-        } else {
-            status(MailStatus.SENDING, queue.size() + " queued");
-            kick();
+        if (!queue.isEmpty()) {
+            long soonest = queue.keySet().stream().mapToLong(id -> due.getOrDefault(id, System.nanoTime()))
+                    .min().orElseThrow();
+            pending = executor.schedule(this::attempt, Math.max(0, soonest - System.nanoTime()),
+                    TimeUnit.NANOSECONDS);
         }
     }
 

@@ -1,5 +1,7 @@
 package org.tinysep.mailmanager.internal;
 
+import jakarta.mail.Address;
+import jakarta.mail.AuthenticationFailedException;
 import jakarta.mail.Message;
 import jakarta.mail.MessagingException;
 import jakarta.mail.SendFailedException;
@@ -8,8 +10,15 @@ import jakarta.mail.Transport;
 import jakarta.mail.internet.InternetAddress;
 import jakarta.mail.internet.MimeMessage;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
 import java.util.Date;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.Properties;
+import org.eclipse.angus.mail.util.MailConnectException;
 import org.eclipse.angus.mail.smtp.SMTPAddressFailedException;
 import org.eclipse.angus.mail.smtp.SMTPSendFailedException;
 
@@ -20,22 +29,28 @@ import org.eclipse.angus.mail.smtp.SMTPSendFailedException;
  */
 final class SmtpTransport {
 
-    /** How an attempt ended. */
-    enum Outcome {
-        SENT,
-        /** Sent to some recipients, refused for others (reported, not retried). */
-        PARTIAL,
-        /** Refused for good by the server (5xx reply): retrying cannot help. */
-        REFUSED,
-        /** Server unreachable, busy or temporarily failing: retry later. */
-        RETRY
+    /**
+     * How an attempt ended, recipient by recipient.
+     *
+     * @param delivered the recipients the server accepted the message for
+     * @param temporary recipient to server reply (or failure) for those to try again later
+     * @param permanent recipient to server reply for those refused for good (RFC 5321, see {@link SmtpReplies})
+     */
+    record Attempt(List<String> delivered, Map<String, String> temporary, Map<String, String> permanent) {
+
+        static Attempt allTemporary(List<String> recipients, String why) {
+            Map<String, String> t = new LinkedHashMap<>();
+            recipients.forEach(r -> t.put(r, why));
+            return new Attempt(List.of(), t, Map.of());
+        }
     }
 
-    /** @param detail a sentence for the log; never contains the password */
-    record Result(Outcome outcome, String detail) {
-    }
-
-    Result send(MailSettings s, MailMessage m) {
+    /**
+     * Sends one message to {@code recipients}.
+     *
+     * @param password the SMTP password, read from its file for this attempt; never logged
+     */
+    Attempt send(MailSettings s, String password, MailMessage m, List<String> recipients) {
         Thread thread = Thread.currentThread();
         ClassLoader old = thread.getContextClassLoader();
         thread.setContextClassLoader(SmtpTransport.class.getClassLoader());
@@ -44,28 +59,73 @@ final class SmtpTransport {
             Session session = Session.getInstance(properties(s, protocol));
             MimeMessage msg = new MimeMessage(session);
             msg.setFrom(new InternetAddress(s.from()));
-            msg.setRecipients(Message.RecipientType.TO, InternetAddress.parse(String.join(",", s.recipients())));
+            msg.setRecipients(Message.RecipientType.TO, InternetAddress.parse(String.join(",", recipients)));
             msg.setSubject(m.subject(), StandardCharsets.UTF_8.name());
             msg.setText(m.body(), StandardCharsets.UTF_8.name());
             msg.setSentDate(Date.from(m.queuedAt()));
             msg.setHeader("X-TinySEP-Mail-Id", Long.toString(m.id()));
             try (Transport t = session.getTransport(protocol)) {
                 t.connect(s.host(), s.port(), s.user().isEmpty() ? null : s.user(),
-                        s.user().isEmpty() ? null : s.password());
+                        s.user().isEmpty() ? null : password);
                 t.sendMessage(msg, msg.getAllRecipients());
             }
-            return new Result(Outcome.SENT, "sent to " + String.join(", ", s.recipients()));
+            return new Attempt(List.copyOf(recipients), Map.of(), Map.of());
         } catch (SendFailedException e) {
-            if (e.getValidSentAddresses() != null && e.getValidSentAddresses().length > 0) {
-                return new Result(Outcome.PARTIAL, "sent, but refused for " + list(e.getInvalidAddresses())
-                        + list(e.getValidUnsentAddresses()) + ": " + describe(e));
-            }
-            return new Result(permanent(e) ? Outcome.REFUSED : Outcome.RETRY, describe(e));
+            return sorted(recipients, e);
         } catch (MessagingException | RuntimeException e) {
-            return new Result(Outcome.RETRY, describe(e));
+            return Attempt.allTemporary(recipients, plain(e, s));
         } finally {
             thread.setContextClassLoader(old);
         }
+    }
+
+    /** Sorts the recipients of a refused or partly refused message by the replies the server gave. */
+    private static Attempt sorted(List<String> recipients, SendFailedException e) {
+        List<String> delivered = new ArrayList<>();
+        for (Address a : e.getValidSentAddresses() == null ? new Address[0] : e.getValidSentAddresses()) {
+            delivered.add(address(a));
+        }
+        Map<String, SMTPAddressFailedException> byAddress = new HashMap<>();
+        SMTPSendFailedException whole = null;
+        for (Throwable t = e; t != null; t = next(t)) {
+            if (t instanceof SMTPAddressFailedException a) {
+                byAddress.putIfAbsent(address(a.getAddress()).toLowerCase(Locale.ROOT), a);
+            } else if (t instanceof SMTPSendFailedException f && whole == null) {
+                whole = f;
+            }
+        }
+        Map<String, String> temporary = new LinkedHashMap<>();
+        Map<String, String> permanent = new LinkedHashMap<>();
+        for (String r : recipients) {
+            if (delivered.stream().anyMatch(r::equalsIgnoreCase)) {
+                continue;
+            }
+            SMTPAddressFailedException a = byAddress.get(r.toLowerCase(Locale.ROOT));
+            int code = a != null ? a.getReturnCode() : whole != null ? whole.getReturnCode() : 0;
+            String command = a != null ? a.getCommand() : whole != null ? whole.getCommand() : null;
+            String reply = a != null ? SmtpReplies.oneLine(a.getMessage())
+                    : whole != null ? SmtpReplies.oneLine(whole.getMessage()) : describe(e);
+            String said = reply + (command == null ? "" : " to " + SmtpReplies.verb(command));
+            (SmtpReplies.permanent(code, command) ? permanent : temporary).put(r, said);
+        }
+        return new Attempt(delivered, temporary, permanent);
+    }
+
+    /** A failure before any reply about the message itself, in plain words. */
+    private static String plain(Exception e, MailSettings s) {
+        if (e instanceof MailConnectException) {
+            Throwable cause = e.getCause() == null ? e : e.getCause();
+            return "cannot connect to " + s.host() + ":" + s.port() + " ("
+                    + SmtpReplies.oneLine(String.valueOf(cause.getMessage())) + ")";
+        }
+        if (e instanceof AuthenticationFailedException) {
+            return "the server refused the login of " + s.user() + " (" + SmtpReplies.oneLine(e.getMessage()) + ")";
+        }
+        return describe(e);
+    }
+
+    private static String address(Address a) {
+        return a instanceof InternetAddress ia ? ia.getAddress() : String.valueOf(a);
     }
 
     private static Properties properties(MailSettings s, String protocol) {
@@ -89,18 +149,6 @@ final class SmtpTransport {
         return props;
     }
 
-    /** A 5xx reply to MAIL, RCPT or DATA: the server will not take this message, however often we try. */
-    private static boolean permanent(Throwable e) {
-        for (Throwable t = e; t != null; t = next(t)) {
-            int code = t instanceof SMTPSendFailedException f ? f.getReturnCode()
-                    : t instanceof SMTPAddressFailedException a ? a.getReturnCode() : 0;
-            if (code >= 500 && code < 600) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     private static Throwable next(Throwable t) {
         Throwable n = t instanceof MessagingException me && me.getNextException() != null ? me.getNextException()
                 : t.getCause();
@@ -116,17 +164,6 @@ final class SmtpTransport {
                     .append(String.valueOf(t.getMessage()).strip().replaceAll("\\s+", " "));
         }
         b.append(")".repeat(Math.max(0, depth - 1)));
-        return b.toString();
-    }
-
-    private static String list(jakarta.mail.Address[] addresses) {
-        if (addresses == null || addresses.length == 0) {
-            return "";
-        }
-        StringBuilder b = new StringBuilder();
-        for (jakarta.mail.Address a : addresses) {
-            b.append(b.length() == 0 ? "" : ", ").append(a);
-        }
         return b.toString();
     }
 }

@@ -54,6 +54,25 @@ public abstract class AbstractDriver implements Driver {
     }
 
     /**
+     * Replaces the extra properties of the registered {@link Driver} service (the standard ones stay), e.g. a state
+     * others filter on or show; does nothing before {@link #start} or after {@link #stop()}.
+     */
+    protected final void driverProperties(Map<String, Object> extraProperties) {
+        ServiceRegistration<Driver> r = registration;
+        if (r == null) {
+            return;
+        }
+        Hashtable<String, Object> props = new Hashtable<>(extraProperties);
+        props.put(DeviceProperties.DRIVER_UID, uid);
+        props.put(DeviceProperties.DRIVER_NAME, name);
+        try {
+            r.setProperties(props);
+        } catch (IllegalStateException ignored) {
+            // unregistered meanwhile: the driver is stopping
+        }
+    }
+
+    /**
      * Removes every device, one by one in creation order (each removal announced by the service registry), then
      * unregisters the Driver service and releases the context.
      */
