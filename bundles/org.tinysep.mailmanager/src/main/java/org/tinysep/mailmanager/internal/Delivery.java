@@ -21,9 +21,10 @@ final class Delivery {
      * @param retry        the message to try again (with the recipients still to do), or null when it is finished
      * @param delaySeconds when to try it again
      * @param detail       the status detail while retrying
+     * @param serverWide   the failure concerned the server, not particular recipients: hold the whole queue
      */
-    record Next(MailMessage retry, long delaySeconds, String detail) {
-        static final Next FINISHED = new Next(null, 0, "");
+    record Next(MailMessage retry, long delaySeconds, String detail, boolean serverWide) {
+        static final Next FINISHED = new Next(null, 0, "", false);
     }
 
     private final SmtpTransport transport;
@@ -107,7 +108,7 @@ final class Delivery {
         events.retrying(Words.retrying(m, a.temporary(), at, delay));
         return new Next(retry, delay, Words.mail(m) + " not delivered yet to " + Words.replies(a.temporary())
                 + "; attempt " + backoff.failures() + " failed, next try at " + Words.time(at) + " (in " + delay
-                + " s)");
+                + " s)", a.serverWide());
     }
 
     /** @param what e.g. {@code mail "Alert" NOT delivered to a@b: refused for good by the server (550 ...)} */

@@ -28,6 +28,7 @@ final class Outbox implements AutoCloseable {
     private final TreeMap<Long, MailMessage> queue = new TreeMap<>(); // by id = sending order; outbox thread only
     private final Map<Long, Backoff> backoffs = new HashMap<>(); // of messages that failed; outbox thread only
     private final Map<Long, Long> due = new HashMap<>(); // System.nanoTime of their next try; outbox thread only
+    private long serverDue; // no message is tried before this System.nanoTime (server-wide failure); outbox thread
     private MailSettings settings; // outbox thread only
     private MailSpool spool;
     private ScheduledFuture<?> pending; // the one pending attempt, immediate or after back-off; outbox thread only
@@ -71,6 +72,7 @@ final class Outbox implements AutoCloseable {
     void retryNow() {
         executor.execute(() -> {
             due.clear();
+            serverDue = 0;
             kick();
         });
     }
@@ -119,6 +121,7 @@ final class Outbox implements AutoCloseable {
         delivery.configure(next, spool);
         backoffs.clear();
         due.clear();
+        serverDue = 0;
         if (pending != null) {
             pending.cancel(false);
             pending = null;
@@ -144,8 +147,9 @@ final class Outbox implements AutoCloseable {
     }
 
     /**
-     * Sends the first message that is due (in queue order: a message waiting for a retry does not hold back the
-     * ones behind it), then reschedules itself for the next due message.
+     * Sends the first message that is due, in queue order. A failure about particular recipients (a full mailbox)
+     * delays only that message; a server-wide one (no connection, 4xx to MAIL) holds the whole queue, so the order
+     * is kept. Then reschedules itself for the next due message.
      */
     private void attempt() {
         pending = null;
@@ -153,14 +157,16 @@ final class Outbox implements AutoCloseable {
             return;
         }
         long now = System.nanoTime();
-        MailMessage m = queue.values().stream().filter(x -> due.getOrDefault(x.id(), now) - now <= 0).findFirst()
-                .orElse(null);
+        MailMessage m = serverDue - now > 0 ? null : queue.values().stream()
+                .filter(x -> due.getOrDefault(x.id(), now) - now <= 0).findFirst().orElse(null);
         if (m != null) {
             Delivery.Next next = delivery.attempt(m, backoffs.computeIfAbsent(m.id(),
                     id -> new Backoff(settings.retryInitialSeconds(), settings.retryMaxSeconds())));
+            long at = System.nanoTime() + TimeUnit.SECONDS.toNanos(next.delaySeconds());
+            serverDue = next.serverWide() ? at : 0;
             if (next.retry() != null) {
                 queue.put(m.id(), next.retry());
-                due.put(m.id(), System.nanoTime() + TimeUnit.SECONDS.toNanos(next.delaySeconds()));
+                due.put(m.id(), at);
                 status(MailStatus.RETRYING, next.detail());
             } else {
                 queue.remove(m.id());
@@ -174,10 +180,10 @@ final class Outbox implements AutoCloseable {
             }
         }
         if (!queue.isEmpty()) {
-            long soonest = queue.keySet().stream().mapToLong(id -> due.getOrDefault(id, System.nanoTime()))
-                    .min().orElseThrow();
-            pending = executor.schedule(this::attempt, Math.max(0, soonest - System.nanoTime()),
-                    TimeUnit.NANOSECONDS);
+            long t = System.nanoTime();
+            long soonest = Math.max(serverDue - t, queue.keySet().stream().mapToLong(id -> due.getOrDefault(id, t) - t)
+                    .min().orElseThrow());
+            pending = executor.schedule(this::attempt, Math.max(0, soonest), TimeUnit.NANOSECONDS);
         }
     }
 

@@ -35,13 +35,16 @@ final class SmtpTransport {
      * @param delivered the recipients the server accepted the message for
      * @param temporary recipient to server reply (or failure) for those to try again later
      * @param permanent recipient to server reply for those refused for good (RFC 5321, see {@link SmtpReplies})
+     * @param serverWide the temporary failure was not about particular recipients (no connection, a refused login,
+     *                   4xx to MAIL or DATA): the messages behind this one would fail the same way
      */
-    record Attempt(List<String> delivered, Map<String, String> temporary, Map<String, String> permanent) {
+    record Attempt(List<String> delivered, Map<String, String> temporary, Map<String, String> permanent,
+            boolean serverWide) {
 
         static Attempt allTemporary(List<String> recipients, String why) {
             Map<String, String> t = new LinkedHashMap<>();
             recipients.forEach(r -> t.put(r, why));
-            return new Attempt(List.of(), t, Map.of());
+            return new Attempt(List.of(), t, Map.of(), true);
         }
     }
 
@@ -69,7 +72,7 @@ final class SmtpTransport {
                         s.user().isEmpty() ? null : password);
                 t.sendMessage(msg, msg.getAllRecipients());
             }
-            return new Attempt(List.copyOf(recipients), Map.of(), Map.of());
+            return new Attempt(List.copyOf(recipients), Map.of(), Map.of(), false);
         } catch (SendFailedException e) {
             return sorted(recipients, e);
         } catch (MessagingException | RuntimeException e) {
@@ -96,6 +99,7 @@ final class SmtpTransport {
         }
         Map<String, String> temporary = new LinkedHashMap<>();
         Map<String, String> permanent = new LinkedHashMap<>();
+        boolean serverWide = false;
         for (String r : recipients) {
             if (delivered.stream().anyMatch(r::equalsIgnoreCase)) {
                 continue;
@@ -106,9 +110,11 @@ final class SmtpTransport {
             String reply = a != null ? SmtpReplies.oneLine(a.getMessage())
                     : whole != null ? SmtpReplies.oneLine(whole.getMessage()) : describe(e);
             String said = reply + (command == null ? "" : " to " + SmtpReplies.verb(command));
-            (SmtpReplies.permanent(code, command) ? permanent : temporary).put(r, said);
+            boolean forGood = SmtpReplies.permanent(code, command);
+            (forGood ? permanent : temporary).put(r, said);
+            serverWide |= !forGood && a == null;
         }
-        return new Attempt(delivered, temporary, permanent);
+        return new Attempt(delivered, temporary, permanent, serverWide);
     }
 
     /** A failure before any reply about the message itself, in plain words. */

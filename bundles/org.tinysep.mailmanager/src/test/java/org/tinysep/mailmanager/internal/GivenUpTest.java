@@ -10,11 +10,15 @@ import java.util.Map;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 
-/** Permanent refusals (5xx): given up and kept aside, never retried forever, never blocking the next message. */
+/**
+ * Permanent refusals (5xx to MAIL/RCPT/DATA other than 552 to RCPT): failed at once and kept aside, never retried
+ * forever, never blocking the next message; the device shows the undelivered alert until a delivery succeeds.
+ */
 class GivenUpTest {
 
     @TempDir
@@ -28,7 +32,7 @@ class GivenUpTest {
     }
 
     @Test
-    void refusedMessageIsGivenUpKeptAsideAndTheNextOneIsSent() throws Exception {
+    void refusedMessageIsFailedKeptAsideAndTheNextOneIsSent() throws Exception {
         try (RefusingSmtpServer server = new RefusingSmtpServer()) {
             Map<String, Object> config = MailHarness.smtp(server.port(), spool);
             config.put("recipients", "nobody@gone.test");
@@ -36,9 +40,11 @@ class GivenUpTest {
             MailManagerProvider mail = device.provider();
 
             mail.send("refused", "x");
-            MailHarness.await("given up", () -> h.logs.events().stream()
-                    .anyMatch(e -> e.kind() == EventKind.PROBLEM && e.message().startsWith("mail given up: \"refused\"")));
+            MailHarness.await("failed", () -> h.logs.events().stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().startsWith("mail \"refused\" NOT delivered to nobody@gone.test: refused for good "
+                            + "by the server, not retried (550 5.1.1 no such user to RCPT)")));
             MailHarness.await("IDLE", () -> mail.status() == MailStatus.IDLE);
+            assertEquals(DeviceStatus.State.ERROR, device.status().state(), "an undelivered alert is shown");
             try (var failed = Files.list(spool.resolve("failed"))) {
                 assertEquals(1, failed.count(), "kept in failed/");
             }
@@ -47,10 +53,18 @@ class GivenUpTest {
             device.reconfigure(MailSettings.parse(config, null), null);
             mail.send("partly refused", "y");
             MailHarness.await("sent to the valid recipient", () -> server.acceptedRecipients.contains("carer@care.test"));
-            MailHarness.await("reported", () -> h.eventTexts().stream()
-                    .anyMatch(e -> e.startsWith("mail sent: \"partly refused\"") && e.contains("nobody@gone.test")));
+            MailHarness.await("reported", () -> h.eventTexts().contains("mail \"partly refused\" delivered to "
+                    + "carer@care.test") && h.eventTexts().stream().anyMatch(e -> e.startsWith(
+                            "mail \"partly refused\" NOT delivered to nobody@gone.test: refused for good")));
             assertEquals(List.of("carer@care.test"), server.acceptedRecipients);
             assertTrue(h.statuses.stream().noneMatch(MailStatus.RETRYING::equals), "no retry for a 5xx refusal");
+            assertEquals(DeviceStatus.State.ERROR, device.status().state());
+
+            config.put("recipients", "carer@care.test");
+            device.reconfigure(MailSettings.parse(config, null), null);
+            mail.send("all well", "z");
+            MailHarness.await("ONLINE once a mail reached all its recipients",
+                    () -> device.status().state() == DeviceStatus.State.ONLINE);
         }
     }
 }

@@ -67,8 +67,10 @@ class MailManagerDeviceTest {
                 Arrays.stream(m.getRecipients(Message.RecipientType.TO)).map(Object::toString).toList());
         assertEquals("No movement for 2 h.\r\nPlease call Anna.", GreenMailUtil.getBody(m).strip());
         MailHarness.await("IDLE and spool empty", () -> mail.status() == MailStatus.IDLE && spoolFiles().isEmpty());
-        assertTrue(h.eventTexts().contains("mail queued: \"Inactivity in the kitchen\""));
-        assertTrue(h.eventTexts().stream().anyMatch(e -> e.startsWith("mail sent: \"Inactivity in the kitchen\"")));
+        assertTrue(h.eventTexts().contains("mail \"Inactivity in the kitchen\" queued for carer@care.test, "
+                + "family@kin.test"), h.eventTexts().toString());
+        assertTrue(h.eventTexts().contains("mail \"Inactivity in the kitchen\" delivered to carer@care.test, "
+                + "family@kin.test"), h.eventTexts().toString());
     }
 
     @Test
@@ -108,7 +110,8 @@ class MailManagerDeviceTest {
         device.invoke("retryNow");
         MailHarness.await("second failure", () -> h.statuses.stream().filter(MailStatus.RETRYING::equals).count() >= 2);
 
-        assertTrue(device.status().detail().contains("AuthenticationFailedException"), device.status().toString());
+        assertTrue(device.status().detail().contains("the server refused the login of alice"),
+                device.status().toString());
         Parameter pw = device.parameters().stream().filter(p -> p.key().equals("password")).findFirst().orElseThrow();
         assertEquals("***", pw.value());
         assertFalse(h.stderr().contains(secret), "SLF4J output");
@@ -154,6 +157,12 @@ class MailManagerDeviceTest {
         assertTrue(h.stderr().contains("Help needed"));
         assertEquals(MailStatus.NOT_CONFIGURED, mail.status());
         assertEquals(DeviceStatus.State.UNKNOWN, device.status().state());
+        assertEquals("no SMTP host configured: alerts are only written to the log", device.status().detail());
+        assertEquals("none", device.health().delivery());
+        assertTrue(device.parameters().stream().anyMatch(p -> p.key().equals("delivery")
+                && p.value().equals("no SMTP host configured: alerts are only written to the log")));
+        MailHarness.await("said in the event log", () -> h.eventTexts().contains("mail \"Help needed\" NOT mailed, "
+                + "only written to the log (no SMTP host configured: alerts are only written to the log)"));
         assertTrue(spoolFiles().isEmpty());
     }
 

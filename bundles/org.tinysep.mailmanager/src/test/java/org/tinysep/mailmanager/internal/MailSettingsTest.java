@@ -32,6 +32,9 @@ class MailSettingsTest {
         assertEquals(10, s.connectTimeoutSeconds());
         assertEquals(5, s.retryInitialSeconds());
         assertEquals(600, s.retryMaxSeconds());
+        assertEquals(86400, s.giveUpAfterSeconds(), "24 h");
+        assertEquals(Path.of("/opt/tinysep/var/secrets/smtp.password"), s.passwordFile());
+        assertEquals(Path.of("/srv/v/secrets/smtp.password"), MailSettings.parse(Map.of(), "/srv/v", null).passwordFile());
         assertEquals(Path.of("/opt/tinysep/var/mail-spool"), s.spoolDir());
         assertEquals(Path.of("mail-spool").toAbsolutePath(), MailSettings.parse(Map.of(), null).spoolDir());
         assertFalse(MailSettings.parse(Map.of(), null).configured());
@@ -55,6 +58,7 @@ class MailSettingsTest {
         assertEquals("recipients must name at least one address (comma-separated)", problem("recipients", " , "));
         assertEquals("from must be one e-mail address like alerts@example.org, was 'home'", problem("from", "home"));
         assertEquals("retryMaxSeconds (3) must not be below retryInitialSeconds (5)", problem("retryMaxSeconds", 3));
+        assertEquals("giveUpAfterSeconds must be between 1 and 2592000, was 0", problem("giveUpAfterSeconds", 0));
         assertEquals("host must be a host name or address without port or scheme, was 'smtp://x'",
                 problem("host", "smtp://x"));
     }

@@ -87,6 +87,33 @@ class MailboxFullTest {
     }
 
     @Test
+    void aLaterAlertIsNotHeldBackByAFullMailbox() throws Exception {
+        try (RefusingSmtpServer server = new RefusingSmtpServer()) {
+            Map<String, Object> config = MailHarness.smtp(server.port(), spool);
+            config.put("recipients", "carer@care.test, full@kin.test");
+            config.put("retryInitialSeconds", 600); // far beyond this test's waits
+            config.put("retryMaxSeconds", 600);
+            MailManagerDevice device = h.start(config);
+            MailManagerProvider mail = device.provider();
+
+            mail.send("first", "x");
+            MailHarness.await("first retrying", () -> h.eventTexts().stream()
+                    .anyMatch(e -> e.startsWith("mail \"first\" to full@kin.test: delivery failed temporarily")));
+            mail.send("second", "y");
+            MailHarness.await("second delivered to the carer at once", () -> h.eventTexts()
+                    .contains("mail \"second\" delivered to carer@care.test"));
+            assertEquals(2, Collections.frequency(server.acceptedRecipients, "carer@care.test"));
+
+            server.mailboxFull = false;
+            device.invoke("retryNow");
+            MailHarness.await("both delivered to the emptied mailbox",
+                    () -> Collections.frequency(server.acceptedRecipients, "full@kin.test") == 2);
+            MailHarness.await("IDLE", () -> mail.status() == MailStatus.IDLE);
+            assertEquals(2, Collections.frequency(server.acceptedRecipients, "carer@care.test"), "nobody twice");
+        }
+    }
+
+    @Test
     void givenUpAfterTheMaximumAgeWithTheLastReplyAndShownUntilADeliverySucceeds() throws Exception {
         try (RefusingSmtpServer server = new RefusingSmtpServer()) {
             Map<String, Object> config = MailHarness.smtp(server.port(), spool);
