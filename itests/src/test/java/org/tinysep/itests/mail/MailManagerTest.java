@@ -13,9 +13,12 @@ import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.osgi.framework.ServiceReference;
 import org.tinysep.api.device.Device;
+import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
@@ -69,8 +72,10 @@ public class MailManagerTest extends TinySepTestSupport {
 
             List<String> log = awaitService(EventLog.class, null, TIMEOUT).recent(200).stream()
                     .map(EventEntry::message).toList();
-            assertTrue(log.toString(), log.contains("mail queued: \"Sent while the server was down\""));
-            assertTrue(log.toString(), log.stream().anyMatch(m -> m.startsWith("mail sent: \"Inactivity alert\"")));
+            assertTrue(log.toString(), log.contains("mail \"Sent while the server was down\" queued for "
+                    + "carer@care.test, family@kin.test"));
+            assertTrue(log.toString(), log.contains("mail \"Inactivity alert\" delivered to carer@care.test, "
+                    + "family@kin.test"));
         }
         Files.deleteIfExists(spool); // empty by now
     }
@@ -85,6 +90,62 @@ public class MailManagerTest extends TinySepTestSupport {
         MailManagerProvider mail = awaitService(MailManagerProvider.class, DEVICE, TIMEOUT);
         mail.send("still accepted", "written to the log");
         assertEquals(MailStatus.NOT_CONFIGURED, mail.status());
+    }
+
+    /** Issue 10, item 5: 552 at RCPT is temporary (RFC 5321 4.5.3.1.10): retried, logged as it is, delivered. */
+    @Test
+    public void aFullMailboxIsRetriedAndLoggedTruthfully() throws Exception {
+        MailManagerProvider mail = awaitService(MailManagerProvider.class, DEVICE, TIMEOUT);
+        Path spool = Files.createTempDirectory("tinysep-mail-spool");
+        try (SmtpSink sink = new SmtpSink().start()) {
+            sink.mailboxFull("full@care.test", true);
+            configure(PID, Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()), "security", "NONE",
+                    "from", "tinysep@home.test", "recipients", "full@care.test", "retryInitialSeconds", "1",
+                    "retryMaxSeconds", "1", "spoolDir", spool.toString()));
+            await(TIMEOUT, () -> driverProperty(MailManagerTest.DELIVERY).equals("smtp"), "delivery=smtp");
+
+            mail.send("Inactivity alert (full mailbox)", "x");
+            EventLog events = awaitService(EventLog.class, null, TIMEOUT);
+            await(TIMEOUT, () -> events.recent(200).stream().anyMatch(e -> e.message().startsWith(
+                    "mail \"Inactivity alert (full mailbox)\" to full@care.test: delivery failed temporarily "
+                            + "(552 5.2.2 mailbox full to RCPT), retrying at ")), "a truthful entry");
+            assertEquals(MailStatus.RETRYING, mail.status());
+            assertTrue(events.recent(200).stream().noneMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().contains("full mailbox")));
+
+            sink.mailboxFull("full@care.test", false);
+            assertTrue("delivered", sink.await(1, TIMEOUT));
+            await(TIMEOUT, () -> events.recent(200).stream().anyMatch(e -> e.message().equals(
+                    "mail \"Inactivity alert (full mailbox)\" delivered to full@care.test")), "logged as delivered");
+        }
+    }
+
+    /** Issue 10, item 5: with no SMTP host the driver figures, service properties and device status say so. */
+    @Test
+    public void withoutHostTheDriverSaysAlertsOnlyGoToTheLog() throws Exception {
+        configure(PID, Map.of("host", ""));
+        Device device = awaitService(Device.class, DEVICE, TIMEOUT);
+        String plainly = "no SMTP host configured: alerts are only written to the log";
+        await(TIMEOUT, () -> driverProperty(DELIVERY).equals("none"), "delivery=none");
+        assertEquals(plainly, driverProperty("tinysep.mail.summary"));
+        await(TIMEOUT, () -> device.status().detail().equals(plainly), "the device status");
+        String drivers = shell("tinysep:drivers");
+        assertTrue(drivers, drivers.contains("delivery=none"));
+        assertTrue(drivers, drivers.contains(plainly));
+    }
+
+    private static final String DELIVERY = "tinysep.mail.delivery";
+
+    /** @return a property of the Mail Manager's Driver service, or "" */
+    private String driverProperty(String key) {
+        try {
+            ServiceReference<Driver> ref = context.getServiceReferences(Driver.class, DEVICE).stream().findFirst()
+                    .orElse(null);
+            Object v = ref == null ? null : ref.getProperty(key);
+            return v == null ? "" : v.toString();
+        } catch (org.osgi.framework.InvalidSyntaxException e) {
+            throw new AssertionError(e);
+        }
     }
 
     private static String parameter(Device device, String key) {

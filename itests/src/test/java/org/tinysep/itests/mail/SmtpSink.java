@@ -26,8 +26,9 @@ import java.util.concurrent.TimeUnit;
  * {@link #start()}, the same port on every later one), speaks plain SMTP (EHLO/HELO, MAIL FROM, RCPT TO, DATA
  * with dot-unstuffing, RSET, NOOP, QUIT; no AUTH, no STARTTLS) and records each accepted message. {@link #stop()}
  * closes the port and every open connection, so a client sees the server go down; {@link #start()} brings it
- * back. Use it with the Mail Manager configured to {@code security=NONE}, {@code host=127.0.0.1},
- * {@code port=}{@link #port()}.
+ * back. {@link #mailboxFull} makes it answer {@code 552 5.2.2 mailbox full} to RCPT for an address (RFC 5321
+ * 4.5.3.1.10: the client must treat it as temporary). Use it with the Mail Manager configured to
+ * {@code security=NONE}, {@code host=127.0.0.1}, {@code port=}{@link #port()}.
  */
 public final class SmtpSink implements AutoCloseable {
 
@@ -56,6 +57,7 @@ public final class SmtpSink implements AutoCloseable {
 
     private final List<Received> received = new CopyOnWriteArrayList<>();
     private final Set<Socket> clients = ConcurrentHashMap.newKeySet();
+    private final Set<String> fullMailboxes = ConcurrentHashMap.newKeySet();
     private volatile ServerSocket server;
     private volatile ExecutorService threads;
     private int port;
@@ -93,6 +95,15 @@ public final class SmtpSink implements AutoCloseable {
             threads.awaitTermination(5, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Makes RCPT for {@code address} answer {@code 552 5.2.2 mailbox full} (or, with false, accept it again). */
+    public void mailboxFull(String address, boolean full) {
+        if (full) {
+            fullMailboxes.add(address.toLowerCase(Locale.ROOT));
+        } else {
+            fullMailboxes.remove(address.toLowerCase(Locale.ROOT));
         }
     }
 
@@ -155,6 +166,10 @@ public final class SmtpSink implements AutoCloseable {
                         reply(out, "250 sender ok");
                     }
                     case "RCPT" -> {
+                        if (fullMailboxes.contains(address(line).toLowerCase(Locale.ROOT))) {
+                            reply(out, "552 5.2.2 mailbox full");
+                            continue;
+                        }
                         to.add(address(line));
                         reply(out, "250 recipient ok");
                     }

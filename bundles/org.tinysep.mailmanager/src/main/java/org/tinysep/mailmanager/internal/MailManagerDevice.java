@@ -65,6 +65,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     void reconfigure(MailSettings next, String problem) {
         settings = next;
         configProblem = problem;
+        showHealth(); // the outbox may stay in the same state (e.g. NOT_CONFIGURED for a refused and for no host)
         outbox.reconfigure(next);
     }
 
@@ -101,7 +102,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         }
     }
 
-    private void showHealth() {
+    private synchronized void showHealth() {
         MailHealth h = health();
         status(h.state(), h.statusDetail());
         onHealth.accept(h);

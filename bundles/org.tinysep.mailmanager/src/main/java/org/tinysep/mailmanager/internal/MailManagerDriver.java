@@ -72,7 +72,7 @@ public final class MailManagerDriver extends AbstractDriver {
     }
 
     /** Called on the mail thread: the service properties follow, so the launcher's banner can show them. */
-    private void healthChanged(MailHealth next) {
+    private synchronized void healthChanged(MailHealth next) {
         MailHealth before = health;
         health = next;
         if (!next.delivery().equals(before.delivery()) || !next.summary().equals(before.summary())) {
