@@ -1,12 +1,13 @@
 package org.tinysep.mailmanager.internal;
 
 import java.time.Clock;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.function.Consumer;
+import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceFunction;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
@@ -19,10 +20,11 @@ import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
 
 /**
- * The Mail Manager device (thesis 4.4.3.3): created at once by its driver, it takes {@link #send} requests from
- * any device and hands them to its {@link Outbox}. The event log gets one entry per message queued, sent or given
- * up on (subject only); the password never appears in a log, a status or a parameter. The provider is a separate
- * object because {@code MailManagerProvider.status()} and {@code Device.status()} differ in type.
+ * The Mail Manager device (thesis 4.4.3.3): created at once by its driver, it takes send requests from any device
+ * ({@link MailProvider}) and hands them to its {@link Outbox}. The event log says, per message and in plain words,
+ * queued, delivered, failed temporarily (retrying at), or not delivered (subject and recipients, never the body
+ * or the password); its status ({@link MailHealth}) says where alerts go and shows an undelivered alert until a
+ * delivery succeeds.
  */
 final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
 
@@ -31,7 +33,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     private final Listeners<MailManagerListener> listeners;
     private final Outbox outbox;
     private final AtomicLong sent = new AtomicLong();
-    private final MailProvider provider = new MailProvider();
+    private final MailProvider provider;
     private volatile MailSettings settings;
     private volatile String configProblem;
     private volatile String lastProblem = "";
@@ -52,6 +54,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
             Clock wall, Consumer<MailHealth> onHealth) {
         super(context, Uids.of(context.driverName(), "device"), context.driverName(), "Mail Manager");
         this.listeners = new Listeners<>(uid());
+        this.provider = new MailProvider(uid(), this::send, this::mailStatus, listeners);
         this.settings = settings;
         this.configProblem = configProblem;
         if (onHealth != null) {
@@ -67,6 +70,10 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         configProblem = problem;
         showHealth(); // the outbox may stay in the same state (e.g. NOT_CONFIGURED for a refused and for no host)
         outbox.reconfigure(next);
+    }
+
+    private void send(String subject, String body) {
+        outbox.send(subject, body);
     }
 
     /** @return the MailManagerProvider service object */
@@ -96,7 +103,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
 
     @Override
     public void undelivered(String notice) {
-        if (!java.util.Objects.equals(notice, undelivered)) {
+        if (!Objects.equals(notice, undelivered)) {
             undelivered = notice;
             showHealth();
         }
@@ -152,27 +159,16 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
 
     @Override
     protected List<Parameter> moreParameters() {
-        MailSettings s = settings;
-        String cfg = "set through ConfigAdmin pid " + MailManagerDriver.PID;
-        return List.of(
+        List<Parameter> all = new ArrayList<>(List.of(
                 Parameter.readOnly("delivery", health().summary(), "where alerts go, in plain words"),
                 Parameter.readOnly("mailStatus", mailStatus(), "IDLE, SENDING, RETRYING or NOT_CONFIGURED"),
                 Parameter.readOnly("undelivered", undelivered == null ? "" : undelivered,
                         "the last alert that could not be delivered, until a delivery succeeds"),
                 Parameter.readOnly("queued", outbox.queued(), "messages waiting in the spool"),
                 Parameter.readOnly("sent", sent.get(), "messages sent since start"),
-                Parameter.readOnly("lastProblem", lastProblem, "the last failure, if any"),
-                Parameter.readOnly("host", s.host(), cfg),
-                Parameter.readOnly("port", s.port(), cfg),
-                Parameter.readOnly("security", s.security(), cfg),
-                Parameter.readOnly("user", s.user(), cfg),
-                Parameter.readOnly("password", s.password().isEmpty() ? "" : MailSettings.MASK, cfg
-                        + " (deprecated: plain text in the framework cache; use passwordFile)"),
-                Parameter.readOnly("passwordFile", SmtpPassword.describe(s), cfg),
-                Parameter.readOnly("giveUpAfterSeconds", s.giveUpAfterSeconds(), cfg),
-                Parameter.readOnly("from", s.from(), cfg),
-                Parameter.readOnly("recipients", String.join(", ", s.recipients()), cfg),
-                Parameter.readOnly("spoolDir", s.spoolDir(), cfg));
+                Parameter.readOnly("lastProblem", lastProblem, "the last failure, if any")));
+        all.addAll(SettingsParameters.of(settings));
+        return all;
     }
 
     @Override
@@ -193,35 +189,6 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     protected void onDispose() {
         outbox.close();
         listeners.closeAll();
-    }
-
-    /** The MailManagerProvider side of the device. */
-    private final class MailProvider implements MailManagerProvider {
-
-        @Override
-        public void send(String subject, String body) {
-            outbox.send(subject, body);
-        }
-
-        @Override
-        public MailStatus status() {
-            return mailStatus();
-        }
-
-        @Override
-        public String deviceUid() {
-            return uid();
-        }
-
-        @Override
-        public Connection connect(MailManagerListener listener) {
-            return listeners.add(listener);
-        }
-
-        @Override
-        public String toString() {
-            return "MailManagerProvider of " + uid();
-        }
     }
 
     /** A whole-flat service: it has no room. */
