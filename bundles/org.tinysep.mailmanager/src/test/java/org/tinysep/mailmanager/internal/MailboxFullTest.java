@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Collections;
 import java.util.Map;
 import org.junit.jupiter.api.AfterEach;
@@ -55,6 +56,10 @@ class MailboxFullTest {
             assertTrue(h.logs.events().stream().noneMatch(e -> e.kind() == EventKind.PROBLEM), "not given up");
             assertFalse(Files.exists(spool.resolve("failed")), "nothing failed");
             assertEquals(1, spoolFiles(), "kept in the spool");
+            try (var files = Files.list(spool)) { // alert texts: owner-only (issue 10, item 6)
+                Path f = files.filter(p -> p.toString().endsWith(".mail")).findFirst().orElseThrow();
+                assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(f)));
+            }
 
             server.mailboxFull = false; // the carer emptied the mailbox
             MailHarness.await("delivered", () -> server.acceptedRecipients.contains("full@care.test"));
