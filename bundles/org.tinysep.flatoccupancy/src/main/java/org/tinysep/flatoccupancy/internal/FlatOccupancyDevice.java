@@ -2,6 +2,7 @@ package org.tinysep.flatoccupancy.internal;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.time.temporal.ChronoUnit;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -117,7 +118,8 @@ final class FlatOccupancyDevice extends AbstractDevice
     /** The clock went back: says so (the logic already re-based its times on the new clock). */
     private void clockWentBack(Optional<Instant> from, Instant now) {
         from.ifPresent(f -> {
-            event("clock went back from " + f + " to " + now + ": occupancy times and any leave check counted "
+            event("clock went back from " + f.truncatedTo(ChronoUnit.SECONDS) + " to "
+                    + now.truncatedTo(ChronoUnit.SECONDS) + ": occupancy times and any leave check counted "
                     + "from now");
             saveBackup();
         });
