@@ -2,13 +2,17 @@ package org.tinysep.flatoccupancy.internal;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.time.temporal.ChronoUnit;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
@@ -58,9 +62,12 @@ final class FlatOccupancyDevice extends AbstractDevice
     public void movementReported(MovementProvider source, MovementEvent movement) {
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
             Optional<Occupancy> change;
+            Optional<Instant> wentBack;
             synchronized (logic) {
+                wentBack = logic.rebase(movement.at());
                 change = logic.motion(movement.at());
             }
+            clockWentBack(wentBack, movement.at());
             announce(change, movement.at(), "motion from " + source.deviceUid());
         }
     }
@@ -75,8 +82,14 @@ final class FlatOccupancyDevice extends AbstractDevice
             return; // a door node's first report (power-up, restart) is no evidence that anyone left
         }
         Optional<Occupancy> change;
+        Optional<Instant> wentBack;
         synchronized (logic) {
+            wentBack = logic.rebase(at);
             change = state == OpenState.OPEN ? logic.outerDoorOpened(at) : logic.outerDoorClosed(at);
+        }
+        clockWentBack(wentBack, at);
+        if (state == OpenState.CLOSED) {
+            saveBackup(); // a pending leave check survives a crash
         }
         announce(change, at, "outer door " + source.deviceUid() + " " + state.name().toLowerCase());
     }
@@ -84,9 +97,12 @@ final class FlatOccupancyDevice extends AbstractDevice
     /** Advances the algorithm's clock; called every second by the driver. */
     void tick(Instant now) {
         Optional<Occupancy> change;
+        Optional<Instant> wentBack;
         synchronized (logic) {
+            wentBack = logic.rebase(now);
             change = logic.tick(now);
         }
+        clockWentBack(wentBack, now);
         announce(change, now, "no indoor motion for " + leaveTimeout.toSeconds() + " s after the door closed");
     }
 
@@ -94,8 +110,52 @@ final class FlatOccupancyDevice extends AbstractDevice
         change.ifPresent(o -> {
             status(DeviceStatus.State.ONLINE, "");
             event("flat " + o.name().toLowerCase() + " (" + reason + ")");
+            saveBackup(); // the decision survives a restart
             listeners.fire(l -> l.occupancyChanged(this, o, at));
         });
+    }
+
+    /** The clock went back: says so (the logic already re-based its times on the new clock). */
+    private void clockWentBack(Optional<Instant> from, Instant now) {
+        from.ifPresent(f -> {
+            event("clock went back from " + f.truncatedTo(ChronoUnit.SECONDS) + " to "
+                    + now.truncatedTo(ChronoUnit.SECONDS) + ": occupancy times and any leave check counted "
+                    + "from now");
+            saveBackup();
+        });
+    }
+
+    @Override
+    protected Map<String, String> backupState() {
+        synchronized (logic) {
+            return SavedOccupancy.toState(logic.saved());
+        }
+    }
+
+    /**
+     * After a restart: resumes from the saved decision (with its since and any pending leave check) instead of
+     * UNKNOWN, so Inactivity Recognition keeps watching someone already home; times from the future are counted
+     * from now.
+     */
+    @Override
+    protected void onRestore(ComponentBackup saved) {
+        List<String> problems = new ArrayList<>();
+        OccupancyLogic.Saved s = SavedOccupancy.fromState(saved.state(), problems);
+        problems.forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        if (s == null) {
+            return;
+        }
+        Instant now = now();
+        Optional<Instant> wentBack;
+        synchronized (logic) {
+            logic.restore(s);
+            wentBack = logic.rebase(now);
+        }
+        status(DeviceStatus.State.ONLINE, "");
+        event("restored after a restart: flat " + s.state().name().toLowerCase() + " since " + s.since()
+                + (s.leaveDeadline() == null ? "" : ", leave check until " + s.leaveDeadline()));
+        wentBack.ifPresent(f -> event("saved state from the future (" + f + ", now " + now
+                + "): counted from now"));
     }
 
     @Override

@@ -16,9 +16,18 @@ import org.tinysep.api.service.Occupancy;
  * after the close, the flat becomes UNOCCUPIED. Motion in the first {@code exitGrace} after the close is
  * ignored: the leaving person is still seen by the hall sensor.</li>
  * </ul>
- * Pet movement and outdoor sensors are not inputs at all. Not thread-safe: the device serialises calls.
+ * Pet movement and outdoor sensors are not inputs at all. A clock that went back is re-based
+ * ({@link #rebase(Instant)}): times later than {@code now} are taken as {@code now}, so fresh motion is never
+ * ignored and a leave check never waits for a time from the future. Not thread-safe: the device serialises calls.
  */
 final class OccupancyLogic {
+
+    /** Times this much later than {@code now} are threads racing, not a clock that went back. */
+    static final Duration CLOCK_SLACK = Duration.ofSeconds(2);
+
+    /** What is kept across a restart (the device's backup state). */
+    record Saved(Occupancy state, Instant since, Instant lastClose, Instant leaveDeadline) {
+    }
 
     private final Duration leaveTimeout;
     private final Duration exitGrace;
@@ -56,6 +65,45 @@ final class OccupancyLogic {
         lastClose = at;
         leaveDeadline = at.plus(leaveTimeout);
         return Optional.empty();
+    }
+
+    /**
+     * Counts from {@code now} what lies later than it (beyond {@link #CLOCK_SLACK}): the state's since, the last
+     * door close and a pending leave check (which then runs its full timeout from now). Call before every input.
+     *
+     * @return the latest such time (where the clock came back from), empty when the clock did not go back
+     */
+    Optional<Instant> rebase(Instant now) {
+        Instant limit = now.plus(CLOCK_SLACK);
+        Instant from = null;
+        if (since.isAfter(limit)) {
+            from = since;
+            since = now;
+        }
+        if (lastClose != null && lastClose.isAfter(limit)) {
+            from = from == null || lastClose.isAfter(from) ? lastClose : from;
+            lastClose = now;
+            if (leaveDeadline != null) {
+                leaveDeadline = now.plus(leaveTimeout);
+            }
+        }
+        return Optional.ofNullable(from);
+    }
+
+    /** @return what to keep across a restart */
+    Saved saved() {
+        return new Saved(state, since, lastClose, leaveDeadline);
+    }
+
+    /**
+     * After a restart: takes the saved decision back (a pending leave check too: if its deadline passed while
+     * the platform was down, the next tick ends it, stamped with its deadline). Call {@link #rebase} afterwards.
+     */
+    void restore(Saved saved) {
+        state = saved.state() == null ? Occupancy.UNKNOWN : saved.state();
+        since = saved.since() == null ? since : saved.since();
+        lastClose = saved.lastClose();
+        leaveDeadline = saved.leaveDeadline();
     }
 
     /** Time passed; ends a leave check whose deadline is reached. */

@@ -21,12 +21,16 @@ import org.tinysep.api.service.Occupancy;
  * <li>Person motion seen while the flat is not (yet) OCCUPIED is kept for {@link #ARRIVAL_WINDOW}: Flat
  * Occupancy may hear the same motion after us and only then say OCCUPIED.</li>
  * <li>UNOCCUPIED: every lit room goes dark; nothing happens until the flat is OCCUPIED again.</li>
+ * <li>A clock that went back (virtual time, then real time): a room's motion time later than {@code now} is taken
+ * as {@code now}, so the room goes dark after the grace period on the new clock and fresh motion counts.</li>
  * </ul>
  * Not thread-safe: the device serialises calls.
  */
 final class FollowMeLogic {
 
     static final Duration ARRIVAL_WINDOW = Duration.ofSeconds(5);
+    /** Times this much later than {@code now} are threads racing, not a clock that went back. */
+    static final Duration CLOCK_SLACK = Duration.ofSeconds(2);
 
     private final Duration grace;
     private final Map<String, Instant> lit = new LinkedHashMap<>();
@@ -56,8 +60,8 @@ final class FollowMeLogic {
 
     private List<Command> motion(String roomUid, Instant at, String what) {
         Instant before = lit.get(roomUid);
-        if (before != null && before.isAfter(at)) {
-            return List.of(); // a late report: the room's newer motion stands
+        if (before != null && before.isAfter(at) && !before.isAfter(at.plus(CLOCK_SLACK))) {
+            return List.of(); // a report a moment late: the room's newer motion stands
         }
         lit.put(roomUid, at);
         return before == null ? List.of(new Command(roomUid, true, what)) : List.of();
@@ -85,6 +89,9 @@ final class FollowMeLogic {
 
     /** Time passed: rooms quiet for the grace period go dark. */
     List<Command> tick(Instant now) {
+        Instant limit = now.plus(CLOCK_SLACK);
+        lit.replaceAll((room, t) -> t.isAfter(limit) ? now : t); // the clock went back: count from now
+        waiting.replaceAll((room, t) -> t.isAfter(limit) ? now : t);
         List<Command> out = new ArrayList<>();
         for (Iterator<Map.Entry<String, Instant>> it = lit.entrySet().iterator(); it.hasNext();) {
             Map.Entry<String, Instant> e = it.next();

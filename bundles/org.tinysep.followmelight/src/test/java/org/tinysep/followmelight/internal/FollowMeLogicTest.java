@@ -111,4 +111,23 @@ class FollowMeLogicTest {
         record(logic.occupancy(Occupancy.OCCUPIED, at(11)), 11);
         assertEquals(List.of("hall on@11"), commands, "the kitchen motion is older than the arrival window");
     }
+
+    @Test
+    void timeJumpForwardsThenBackLetsALitRoomGoDarkOnTheNewClock() {
+        Instant future = Instant.parse("2099-01-01T00:00:00Z");
+        record(logic.occupancy(Occupancy.OCCUPIED, T0), 0);
+        record(logic.personMotion("hall", future), 0); // a synchronised day ahead
+        assertEquals(Set.of("hall"), logic.litRooms());
+        record(logic.tick(at(1)), 1); // back to real time
+        record(logic.tick(at(60)), 60);
+        assertEquals(Set.of("hall"), logic.litRooms(), "the grace period runs from when the clock came back");
+        record(logic.tick(at(61)), 61);
+        assertEquals(List.of("hall on@0", "hall off@61"), commands, "not lit until 2099");
+
+        record(logic.personMotion("hall", at(70)), 70);
+        record(logic.personMotion("hall", future), 71);
+        record(logic.personMotion("hall", at(72)), 72); // the clock went back again: fresh motion counts
+        record(logic.tick(at(72 + 60)), 132);
+        assertEquals(List.of("hall on@0", "hall off@61", "hall on@70", "hall off@132"), commands);
+    }
 }

@@ -1,5 +1,6 @@
 package org.tinysep.inactivity.internal;
 
+import java.time.Instant;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 import org.tinysep.api.service.InactivityAlert;
@@ -17,6 +18,34 @@ final class AlertMail {
 
     String subject(InactivityAlert alert) {
         return "TinySEP: no activity in " + alert.roomName() + " since " + clock.format(alert.lastActivityAt());
+    }
+
+    /**
+     * @return the subject, and for an alert that fell due during {@code outage} (may be null) the words
+     *         "(Inactivity Recognition was not running from 14:20 to 15:10; this alert is late)"
+     */
+    String subject(InactivityAlert alert, Outage outage) {
+        return subject(alert) + (outage != null && outage.delayed(alert) ? " (" + late(outage) + ")" : "");
+    }
+
+    private String late(Outage outage) {
+        return "Inactivity Recognition was not running from " + clock.format(outage.from()) + " to "
+                + clock.format(outage.to()) + "; this alert is late";
+    }
+
+    /** @return a time for the event log, e.g. "2026-11-22 14:01:00 UTC" */
+    String time(Instant at) {
+        return full.format(at);
+    }
+
+    String body(InactivityAlert alert, Outage outage) {
+        String body = body(alert);
+        if (outage == null || !outage.delayed(alert)) {
+            return body;
+        }
+        return body.replace("\n\nPlease check", "\nIt fell due at " + full.format(alert.raisedAt())
+                + ", while Inactivity Recognition was not running (from " + full.format(outage.from()) + " to "
+                + full.format(outage.to()) + "): this alert is late.\n\nPlease check");
     }
 
     String body(InactivityAlert alert) {

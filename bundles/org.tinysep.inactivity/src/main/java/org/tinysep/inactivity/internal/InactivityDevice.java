@@ -1,6 +1,7 @@
 package org.tinysep.inactivity.internal;
 
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -38,7 +39,10 @@ final class InactivityDevice extends AbstractDevice
     private final InactivityLogic logic;
     private final ActivityFactory activities;
     private final HelpCall help;
+    private static final long HEARTBEAT_NANOS = 60_000_000_000L;
+    private final AlertMail words;
     private volatile String occupancySource;
+    private volatile long lastHeartbeat = System.nanoTime();
     private final RoomActivity rooms = new RoomActivity();
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
@@ -47,6 +51,7 @@ final class InactivityDevice extends AbstractDevice
         this.logic = new InactivityLogic(limits.defaultLimit(), context.now());
         this.activities = new ActivityFactory(directory, limits, this::activity);
         this.help = new HelpCall(words);
+        this.words = words;
         limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
         status(DeviceStatus.State.ONLINE, "");
         publish(this, InactivityRecognitionProvider.class);
@@ -94,12 +99,29 @@ final class InactivityDevice extends AbstractDevice
 
     private void activity(Activity a) {
         Optional<InactivityState> change;
+        Optional<Instant> wentBack;
         synchronized (logic) {
+            wentBack = logic.rebase(a.at());
             change = logic.activity(a);
         }
+        wentBack.ifPresent(from -> clockWentBack(from, a.at()));
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());
+    }
+
+    /** The clock went back: says so in plain words (the logic already counts the quiet time from now). */
+    private void clockWentBack(Instant from, Instant now) {
+        String room = lastRoom();
+        event("clock went back from " + words.time(from) + " to " + words.time(now) + ": quiet time"
+                + (room.isEmpty() ? "" : " in " + room) + " counted from now");
+        saveBackup();
+    }
+
+    private String lastRoom() {
+        synchronized (logic) {
+            return logic.lastActivity().map(Activity::roomName).orElse("");
+        }
     }
 
     private void occupancy(Occupancy occupancy, Instant at) {
@@ -113,10 +135,18 @@ final class InactivityDevice extends AbstractDevice
     /** Advances the algorithm's clock; called every platform second by the driver. */
     void tick(Instant now) {
         Optional<InactivityState> change;
+        Optional<Instant> wentBack;
         synchronized (logic) {
+            wentBack = logic.rebase(now);
             change = logic.tick(now);
         }
+        wentBack.ifPresent(from -> clockWentBack(from, now));
         announce(change, now, "limit reached");
+        long wall = System.nanoTime();
+        if (wall - lastHeartbeat >= HEARTBEAT_NANOS) {
+            lastHeartbeat = wall;
+            saveBackup(); // its time tells, after a crash, until when this device was running
+        }
     }
 
     private void announce(Optional<InactivityState> change, Instant at, String reason) {
@@ -124,6 +154,7 @@ final class InactivityDevice extends AbstractDevice
             String detail = s == InactivityState.ALERT ? alert().map(help::subject).orElse("") : "";
             event("inactivity " + lower(s) + " (" + reason + ")" + (detail.isEmpty() ? "" : ": " + detail));
             listeners.fire(l -> l.inactivityStateChanged(this, s, at));
+            saveBackup(); // whether (since when) the flat is watched survives a crash
             if (s == InactivityState.ALERT) {
                 mailPendingAlert();
             } else {
@@ -139,12 +170,14 @@ final class InactivityDevice extends AbstractDevice
             return;
         }
         switch (help.call(a.get())) {
-            case SENT -> {
-                event("alert mailed: " + help.subject(a.get()));
+            case HANDED_OVER -> {
+                event("alert handed to the Mail Manager (it queues, sends and logs the delivery): "
+                        + help.subject(a.get()));
                 status(DeviceStatus.State.ONLINE, "");
+                saveBackup(); // not handed over twice after a restart
             }
             case NO_MAIL_MANAGER -> status(DeviceStatus.State.ERROR, "alert raised but no Mail Manager to send it");
-            case ALREADY_SENT -> { }
+            case ALREADY_HANDED_OVER -> { }
         }
     }
 
@@ -202,17 +235,40 @@ final class InactivityDevice extends AbstractDevice
     @Override
     protected Map<String, String> backupState() {
         synchronized (logic) {
-            return rooms.state(logic.lastActivity().orElse(null));
+            return rooms.state(logic.lastActivity().orElse(null), logic.watchingFrom().orElse(null),
+                    help.handedOverDue());
         }
     }
 
+    /**
+     * After a restart: the last activity, since when the flat was watched and the alert already handed over come
+     * back, so the quiet time that began before keeps counting once Flat Occupancy (restored too) says OCCUPIED;
+     * an alert that fell due meanwhile is raised by the first tick and says it is late. Times from the future are
+     * counted from now.
+     */
     @Override
     protected void onRestore(ComponentBackup saved) {
-        Activity last = rooms.restore(saved.state());
-        if (last != null) {
-            synchronized (logic) {
-                logic.activity(last);
-            }
+        Instant now = now();
+        List<String> problems = new ArrayList<>();
+        RoomActivity.Saved s = rooms.restore(saved.state(), now, problems);
+        problems.forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        help.handedOverDue(s.handedOverDue());
+        if (saved.savedAt() != null && saved.savedAt().isBefore(now)) {
+            help.outage(new Outage(saved.savedAt(), now));
+        }
+        Optional<Instant> wentBack;
+        synchronized (logic) {
+            logic.resume(s.last(), s.watchedFrom());
+            wentBack = logic.rebase(now);
+        }
+        wentBack.ifPresent(from -> event("saved state from the future (" + words.time(from) + ", now "
+                + words.time(now) + "): quiet time counted from now"));
+        Activity a = s.last();
+        if (a != null) {
+            event("restored after a restart: last activity " + a.description() + " in " + a.roomName() + " at "
+                    + words.time(a.at()) + (s.watchedFrom() == null ? "" : "; the flat was watched since "
+                    + words.time(s.watchedFrom()) + ", the quiet time keeps counting")
+                    + (saved.savedAt() == null ? "" : "; last saved " + words.time(saved.savedAt())));
         }
     }
 

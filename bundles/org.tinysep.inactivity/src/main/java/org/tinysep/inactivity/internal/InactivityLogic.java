@@ -18,13 +18,21 @@ import org.tinysep.api.service.Occupancy;
  * <li>A tick at or after the deadline raises the alert once (stamped with the deadline); further ticks do
  * nothing until the next activity.</li>
  * <li>UNOCCUPIED or UNKNOWN: NOT_WATCHING, and a raised alert is dropped (someone left through the door).</li>
+ * <li>The clock went back (switch from virtual to real time, an NTP step, a restored time from the future):
+ * {@link #rebase(Instant)} counts the quiet time from the new {@code now} instead; an activity is never dropped
+ * because of its time.</li>
+ * <li>After a restart {@link #resume} takes back the last activity and since when the flat was watched, so the
+ * quiet time that began before the restart keeps counting.</li>
  * </ul>
  * Not thread-safe: the device serialises calls.
  */
 final class InactivityLogic {
 
+    /** Times this much later than {@code now} are threads racing, not a clock that went back. */
+    static final Duration CLOCK_SLACK = Duration.ofSeconds(2);
+
     private final Duration defaultLimit;
-    private final Instant start;
+    private Instant start;
     private InactivityState state = InactivityState.NOT_WATCHING;
     private Instant since;
     private Instant watchingFrom;
@@ -41,10 +49,13 @@ final class InactivityLogic {
         this.since = start;
     }
 
-    /** An activity happened. @return the new state if it changed (an alert clears) */
+    /**
+     * An activity happened; it always counts, whatever its time. One stamped a moment before the last one (two
+     * threads racing) keeps the later time. @return the new state if it changed (an alert clears)
+     */
     Optional<InactivityState> activity(Activity a) {
         if (last != null && a.at().isBefore(last.at())) {
-            return Optional.empty(); // a late report of something older than what we know
+            a = new Activity(a.roomUid(), a.roomName(), a.description(), last.at(), a.limit());
         }
         last = a;
         alert = null;
@@ -63,6 +74,59 @@ final class InactivityLogic {
         alert = null;
         watchingFrom = null;
         return change(InactivityState.NOT_WATCHING, at);
+    }
+
+    /**
+     * Counts from {@code now} what lies later than it (beyond {@link #CLOCK_SLACK}): the last activity, the start
+     * of watching, the state's since. Call before every tick and activity.
+     *
+     * @return the latest such time (where the clock came back from), empty when the clock did not go back
+     */
+    Optional<Instant> rebase(Instant now) {
+        Instant limit = now.plus(CLOCK_SLACK);
+        Instant from = null;
+        if (last != null && last.at().isAfter(limit)) {
+            from = last.at();
+            last = new Activity(last.roomUid(), last.roomName(), last.description(), now, last.limit());
+        }
+        if (watchingFrom != null && watchingFrom.isAfter(limit)) {
+            from = later(from, watchingFrom);
+            watchingFrom = now;
+        }
+        if (since.isAfter(limit)) {
+            from = later(from, since);
+            since = now;
+        }
+        if (start.isAfter(limit)) {
+            start = now;
+        }
+        return Optional.ofNullable(from);
+    }
+
+    private static Instant later(Instant a, Instant b) {
+        return a == null || b.isAfter(a) ? b : a;
+    }
+
+    /**
+     * After a restart, before Flat Occupancy reports: takes back the last activity and, if the flat was watched
+     * before, since when, so watching resumes from then and the quiet time keeps counting (an alert due during
+     * the outage is raised by the next tick).
+     *
+     * @param saved       the last activity before the restart, or null
+     * @param watchedFrom since when the flat was watched before the restart, or null if it was not
+     */
+    void resume(Activity saved, Instant watchedFrom) {
+        if (saved != null) {
+            last = saved;
+        }
+        if (watchedFrom != null && watchedFrom.isBefore(start)) {
+            start = watchedFrom;
+        }
+    }
+
+    /** @return since when the flat is watched, empty when not watching */
+    Optional<Instant> watchingFrom() {
+        return state == InactivityState.NOT_WATCHING ? Optional.empty() : Optional.ofNullable(watchingFrom);
     }
 
     /** Time passed. @return ALERT when the deadline is reached now, otherwise empty */

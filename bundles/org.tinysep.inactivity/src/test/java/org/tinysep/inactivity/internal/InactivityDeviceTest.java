@@ -60,6 +60,7 @@ class InactivityDeviceTest {
     @Test
     void aContactsFirstReportIsNoActivityItsChangesAre() {
         device.use(flat);
+        tickUntil(T0.plusSeconds(600));
         bathSensor.report(true, T0.plusSeconds(600));
         tickUntil(T0.plusSeconds(600 + 45 * 60 + 60));
         assertEquals(InactivityState.ALERT, device.state());
@@ -91,6 +92,7 @@ class InactivityDeviceTest {
         device.use(mail);
         device.use(flat);
         bathDoor.change(OpenState.CLOSED, T0); // the door's first report: its state, no activity
+        tickUntil(T0.plusSeconds(600)); // reports are stamped with the platform's time: never ahead of it
         bathSensor.report(true, T0.plusSeconds(600));
         tickUntil(T0.plusSeconds(600 + 45 * 60 + 300));
         assertEquals(InactivityState.ALERT, device.state());
@@ -169,7 +171,7 @@ class InactivityDeviceTest {
         assertEquals(0, mail.sent.size());
     }
 
-    private static HouseInformationProvider house(Room... rooms) {
+    static HouseInformationProvider house(Room... rooms) {
         class House extends Fakes.Base<HouseInformationListener> implements HouseInformationProvider {
             House() {
                 super("house");

@@ -131,11 +131,24 @@ class InactivityLogicTest {
     }
 
     @Test
-    void anOlderReportDoesNotReplaceTheLastActivity() {
+    void aReportStampedAMomentEarlierCountsWithTheLaterTime() {
         logic.occupancy(Occupancy.OCCUPIED, T0);
         logic.activity(in(BEDROOM, at(8, 0)));
-        logic.activity(in(HALL, at(7, 59)));
-        assertEquals("Bedroom", logic.lastActivity().orElseThrow().roomName());
-        assertTrue(logic.deadline().orElseThrow().isAfter(at(17, 0)));
+        assertEquals(Optional.empty(), logic.rebase(at(8, 0).minusSeconds(1)), "threads racing: no clock step");
+        logic.activity(in(HALL, at(8, 0).minusSeconds(1)));
+        assertEquals("Hall", logic.lastActivity().orElseThrow().roomName(), "never dropped");
+        assertEquals(Optional.of(at(8, 30)), logic.deadline());
+    }
+
+    @Test
+    void aClockThatWentBackIsRebasedAndTheOlderReportCounts() {
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        logic.activity(in(BEDROOM, at(20, 0)));
+        assertEquals(Optional.of(at(20, 0)), logic.rebase(at(8, 0)), "the clock came back from 20:00");
+        assertEquals(Optional.of(at(8, 0).plusSeconds(600 * 60)), logic.deadline(), "counted from now");
+        logic.activity(in(HALL, at(8, 1)));
+        assertEquals("Hall", logic.lastActivity().orElseThrow().roomName());
+        assertEquals(Optional.of(at(8, 31)), logic.deadline());
+        assertEquals(Optional.empty(), logic.rebase(at(8, 2)), "once re-based, nothing is in the future");
     }
 }

@@ -2,9 +2,12 @@ package org.tinysep.inactivity.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 
@@ -19,18 +22,43 @@ class RoomActivityTest {
         Activity bath = new Activity("bath-uid", "Bathroom", "movement by Bath sensor", T, Duration.ofMinutes(45));
         rooms.seen(new Activity("hall-uid", "Hall", "door", T.minusSeconds(60), Duration.ofMinutes(30)));
         rooms.seen(bath);
-        rooms.seen(new Activity("bath-uid", "Bathroom", "late report", T.minusSeconds(5), Duration.ofMinutes(45)));
+        rooms.seen(new Activity("bath-uid", "Bathroom", "racing report", T.minusSeconds(1), Duration.ofMinutes(45)));
         rooms.seen(new Activity("", "unknown room", "no room", T, Duration.ofMinutes(45)));
-        Map<String, String> state = rooms.state(bath);
+        Map<String, String> state = rooms.state(bath, T.minusSeconds(3600), T.minusSeconds(600));
         assertEquals(Map.of("room.hall-uid", T.minusSeconds(60).toString(), "room.bath-uid", T.toString(),
                 "last.at", T.toString(), "last.room", "bath-uid", "last.roomName", "Bathroom",
-                "last.description", "movement by Bath sensor", "last.limitSeconds", "2700"), state);
+                "last.description", "movement by Bath sensor", "last.limitSeconds", "2700",
+                "watching.from", T.minusSeconds(3600).toString(), "alert.handedOver", T.minusSeconds(600).toString()),
+                state);
 
         RoomActivity restarted = new RoomActivity();
-        Activity last = restarted.restore(state);
-        assertEquals(new Activity("bath-uid", "Bathroom", "movement by Bath sensor (before restart)", T,
-                Duration.ofMinutes(45)), last);
+        List<String> problems = new ArrayList<>();
+        RoomActivity.Saved saved = restarted.restore(state, T.plusSeconds(60), problems);
+        assertEquals(new RoomActivity.Saved(new Activity("bath-uid", "Bathroom",
+                "movement by Bath sensor (before restart)", T, Duration.ofMinutes(45)), T.minusSeconds(3600),
+                T.minusSeconds(600)), saved);
         assertEquals(rooms.describe(), restarted.describe());
-        assertNull(new RoomActivity().restore(Map.of()));
+        assertEquals(List.of(), problems);
+        assertNull(new RoomActivity().restore(Map.of(), T, problems).last());
+    }
+
+    @Test
+    void aTimeFromTheFutureIsTakenAsNowAndABadEntryIsSkippedWithAProblem() {
+        RoomActivity rooms = new RoomActivity();
+        List<String> problems = new ArrayList<>();
+        RoomActivity.Saved saved = rooms.restore(Map.of("room.bath-uid", "2099-01-01T00:00:00Z",
+                "room.hall-uid", "yesterday", "last.at", "2099-01-01T00:00:00Z", "last.limitSeconds", "ninety"),
+                T, problems);
+        assertEquals("{bath-uid=" + T + "}", rooms.describe());
+        assertNull(saved.last());
+        assertEquals(2, problems.size(), problems.toString());
+        assertTrue(problems.get(0).contains("yesterday") || problems.get(1).contains("yesterday"), problems.toString());
+
+        // after the clock went back, a room's fresh activity replaces its time from the future
+        RoomActivity live = new RoomActivity();
+        live.seen(new Activity("bath-uid", "Bathroom", "virtual", Instant.parse("2099-01-01T00:00:00Z"),
+                Duration.ofMinutes(45)));
+        live.seen(new Activity("bath-uid", "Bathroom", "real", T, Duration.ofMinutes(45)));
+        assertEquals("{bath-uid=" + T + "}", live.describe());
     }
 }
