@@ -107,7 +107,7 @@ public final class ShellFunctions {
             List<String> args = all.stream().filter(a -> !RoomTypes.NEW_TYPE.equals(a)).toList();
             if (args.size() < min || args.size() > max) {
                 throw new IllegalArgumentException((args.size() < min ? "missing arguments" : "too many arguments")
-                        + "; usage: tinysep:" + usage + " (tinysep:" + usage.split(" ")[0] + " --help explains)");
+                        + "; usage: " + usage + " (tinysep:" + usage.split(" ")[0] + " --help explains)");
             }
             return run.apply(args, all.contains(RoomTypes.NEW_TYPE));
         }

@@ -49,7 +49,7 @@ class RoomTypesTest {
     void commandsGiveTheirUsageAndHelpInsteadOfGogosCoercionError() {
         ShellFunctions.Command add = new ShellFunctions.Command("room-add <name> <type> [--new-type]", "adds a room",
                 List.of("<name>: the room's name"), 2, 2, (a, isNew) -> a + " " + isNew);
-        assertEquals("missing arguments; usage: tinysep:room-add <name> <type> [--new-type] (tinysep:room-add --help"
+        assertEquals("missing arguments; usage: room-add <name> <type> [--new-type] (tinysep:room-add --help"
                 + " explains)", assertThrows(IllegalArgumentException.class,
                         () -> add.execute(null, List.of("Garage"))).getMessage());
         assertEquals("tinysep:room-add <name> <type> [--new-type]\n  adds a room\n  <name>: the room's name",
