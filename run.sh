@@ -7,7 +7,21 @@ set -euo pipefail
 cd "$(dirname "$0")"
 if [[ "${SKIP_BUILD:-0}" != "1" ]]; then
   scripts/install-deps.sh
-  mvn -B -q -DskipTests package
+  # one line per module as Maven builds it (about 40 s the first time); the whole log: target/build.log
+  mkdir -p target
+  echo "Building TinySEP (mvn -B -DskipTests package; log: target/build.log)"
+  build_start=$SECONDS
+  set +e
+  mvn -B -DskipTests package 2>&1 | tee target/build.log \
+    | sed -un 's/^\[INFO\] Building \(.*\) [0-9][^ ]* *\[\([0-9]*\/[0-9]*\)\]$/  [\2] \1/p'
+  build_status=${PIPESTATUS[0]}
+  set -e
+  if [[ $build_status -ne 0 ]]; then
+    grep -E '^\[ERROR\]' target/build.log | head -40 >&2
+    echo "Build failed (mvn exit code $build_status); the whole log: target/build.log" >&2
+    exit "$build_status"
+  fi
+  echo "Built in $((SECONDS - build_start)) s"
 fi
 repo=$(pwd)
 # State (drivers list, house, mail spool, framework cache) lives in <repo>/var, outside target/: `mvn clean` keeps it.

@@ -61,6 +61,7 @@ public final class FrameworkConfig {
         p.put("felix.fileinstall.poll", "1000");
         p.put("felix.fileinstall.noInitialDelay", "true");
         p.put("felix.fileinstall.log.level", "2");
+        p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
         if (daemon) {
             p.put("gosh.args", "--nointeractive");
         }

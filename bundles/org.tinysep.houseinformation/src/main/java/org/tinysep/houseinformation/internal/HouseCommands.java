@@ -42,14 +42,27 @@ final class HouseCommands {
         return table(rows);
     }
 
+    /** @param isNew whether a type that is neither standard nor used yet is meant ({@link RoomTypes#NEW_TYPE}) */
+    String add(String name, String type, boolean isNew) {
+        boolean fresh = RoomTypes.find(type, house.rooms()).isEmpty();
+        Room added = house.addRoom(name, RoomTypes.check(type, isNew, house.rooms()));
+        return "added " + Rooms.label(added) + ", type " + added.type() + (fresh ? " (a new type: Inactivity"
+                + " Recognition uses its default limit for it until its typeLimits names it)" : "");
+    }
+
     String add(String name, String type) {
-        return "added " + Rooms.label(house.addRoom(name, type));
+        return add(name, type, false);
+    }
+
+    String rename(String room, String name, String type, boolean isNew) {
+        Room r = find(room);
+        Room updated = house.updateRoom(r.uid(), name, type == null ? r.type()
+                : RoomTypes.check(type, isNew, house.rooms()));
+        return "updated " + Rooms.label(updated) + ", type " + updated.type();
     }
 
     String rename(String room, String name, String type) {
-        Room r = find(room);
-        Room updated = house.updateRoom(r.uid(), name, type == null ? r.type() : type);
-        return "updated " + Rooms.label(updated) + ", type " + updated.type();
+        return rename(room, name, type, false);
     }
 
     String link(String a, String b) {

@@ -51,7 +51,7 @@ record Placement(Result result, String detail) {
         }
         try {
             device.setParameter("room", room.uid());
-            return new Placement(Result.PLACED, Rooms.label(room));
+            return new Placement(Result.PLACED, room.name());
         } catch (IllegalArgumentException e) { // the device does not see House Information yet, or a room race
             return new Placement(Result.NOT_YET, e.getMessage());
         }

@@ -36,6 +36,8 @@ public final class RoomPlacer {
     static final String ORIGIN = "RoomPlacement";
     static final int ATTEMPTS = 10;
     static final long RETRY_MS = 200;
+    /** Placements within this time of the first one of a burst are summed up in one console line. */
+    static final long SUMMARY_DELAY_MS = 2000;
     private static final Logger LOG = LoggerFactory.getLogger(RoomPlacer.class);
 
     private final ScheduledExecutorService executor = Executors.newSingleThreadScheduledExecutor(r -> {
@@ -50,6 +52,8 @@ public final class RoomPlacer {
     private Reporter reporter;
     private ServiceTracker<Device, ServiceReference<Device>> devices;
     private ServiceTracker<HouseInformationProvider, HouseInformationProvider> house;
+    /** Devices placed since the last summary line, and their rooms; used on the executor's thread only. */
+    private final PlacementSummary burst = new PlacementSummary();
 
     @Activate
     void activate(BundleContext bundleContext, PlacementConfig config) throws InvalidSyntaxException {
@@ -125,7 +129,12 @@ public final class RoomPlacer {
         String uid = String.valueOf(ref.getProperty(DeviceProperties.DEVICE_UID));
         Placement outcome = Placement.apply(context, ref, rule, house.getService());
         switch (outcome.result()) {
-            case PLACED -> LOG.info("Placed device {} (node {}) in room {}", uid, rule.address(), outcome.detail());
+            case PLACED -> {
+                LOG.debug("Placed device {} (node {}) in room {}", uid, rule.address(), outcome.detail());
+                if (burst.add(outcome.detail())) {
+                    executor.schedule(() -> LOG.info("{}", burst.takeLine()), SUMMARY_DELAY_MS, TimeUnit.MILLISECONDS);
+                }
+            }
             case UNKNOWN_ROOM -> {
                 if (reported.add(rule)) {
                     reporter.event(EventKind.PROBLEM, ORIGIN, "placement rule '" + rule + "': "

@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import org.apache.felix.service.command.Descriptor;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
@@ -42,6 +43,8 @@ public final class DriversCommands {
      * {@code drivers}: the list (each application with its status), then every Driver service with its application,
      * device count and figures (what the device manager's own {@code drivers} listing showed).
      */
+    @Descriptor("the drivers list (var/drivers.xml: each application, enabled, status), then every driver with its"
+            + " application, device count and figures")
     public String drivers() {
         List<DriverEntry> entries = list.entries();
         TextTable apps = new TextTable("APPLICATION", "ENABLED", "STATUS", "FILE");
@@ -70,7 +73,8 @@ public final class DriversCommands {
     }
 
     /** {@code drivers reload} (or {@code list}). */
-    public String drivers(String action) {
+    @Descriptor("applies an edited drivers.xml: installs new entries, stops disabled ones, uninstalls removed ones")
+    public String drivers(@Descriptor("reload (or list: the same as tinysep:drivers)") String action) {
         return switch (action.toLowerCase(Locale.ROOT)) {
             case "reload" -> {
                 List<String> changes = list.reload();
@@ -84,7 +88,9 @@ public final class DriversCommands {
     }
 
     /** {@code drivers enable|disable <bsn>}. */
-    public String drivers(String action, String bsn) {
+    @Descriptor("switches one application on or off, in the drivers list too (it stays so across restarts)")
+    public String drivers(@Descriptor("enable or disable") String action,
+            @Descriptor("the application's bundle symbolic name, e.g. org.tinysep.followmelight") String bsn) {
         boolean enable = switch (action.toLowerCase(Locale.ROOT)) {
             case "enable" -> true;
             case "disable" -> false;
@@ -92,6 +98,13 @@ public final class DriversCommands {
                     + "': use tinysep:drivers enable <name> or tinysep:drivers disable <name>");
         };
         return String.join("\n", list.setEnabled(bsn, enable));
+    }
+
+    /** {@code drivers} with more arguments than any form takes: the usage. */
+    @Descriptor("with too many arguments: prints the usage")
+    public String drivers(@Descriptor("anything else") String... wrong) {
+        throw new IllegalArgumentException("wrong number of arguments (" + wrong.length + "); usage: tinysep:drivers"
+                + " [reload | enable <bsn> | disable <bsn>] (help tinysep:drivers explains them)");
     }
 
     private List<ServiceReference<Driver>> driverReferences() {

@@ -66,8 +66,8 @@ public final class DriversList implements BundleListener {
                     locations, report);
             Reconciler.Result r = reconciler.apply(initial);
             entries = r.entries();
-            LOG.info("Drivers list {}: {} entries; {}", file.path(), entries.size(),
-                    r.changes().isEmpty() ? "nothing to do" : String.join(", ", r.changes()));
+            LOG.info("Drivers list {}: {} entries; {}", file.path(), entries.size(), Report.summary(r.changes()));
+            LOG.debug("Drivers list changes: {}", r.changes());
             r.changes().stream().filter(c -> c.startsWith("cannot ") || c.startsWith("missing ")).forEach(report::problem);
             save();
         }

@@ -12,7 +12,7 @@ final class DeviceOrigins {
 
     /**
      * @return the UIDs of the current devices and drivers {@code ref} names (UID, unique UID prefix, name ignoring
-     *         case), {@code node <address>} for such a device with a node address, and {@code ref} itself, so that
+     *         case, node address), {@code node <address>} for such a device with a node address, and {@code ref} itself, so that
      *         devices removed since can be found by the UID the log shows
      */
     static Set<String> of(String ref, Inventory inventory) {
@@ -28,7 +28,7 @@ final class DeviceOrigins {
         for (DeviceRecord d : devices) {
             String name = Safely.get(() -> d.device().name(), d.name());
             if ((byUid.size() == 1 && byUid.get(0).equals(d.uid())) || name.equalsIgnoreCase(q)
-                    || d.name().equalsIgnoreCase(q)) {
+                    || d.name().equalsIgnoreCase(q) || d.node().address().equals(q)) {
                 out.add(d.uid());
                 if (!d.node().address().isEmpty()) {
                     out.add("node " + d.node().address());

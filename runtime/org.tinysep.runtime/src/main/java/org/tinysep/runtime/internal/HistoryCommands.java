@@ -1,10 +1,15 @@
 package org.tinysep.runtime.internal;
 
 import java.time.Clock;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
+import org.apache.felix.service.command.Descriptor;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
@@ -30,6 +35,9 @@ import org.tinysep.api.log.PacketLog;
 public final class HistoryCommands {
 
     static final int DEFAULT_LINES = 20;
+    static final String OPTIONS = "[N] the newest N entries (default 20); --from T, --to T a time (e.g. 14:00,"
+            + " 2026-11-22T14:00, -2h); --device D a device's UID, first characters, name or node address, or a"
+            + " driver's name; --kind K[,K] the kinds; --limit N the same as N";
     static final Set<String> EVENT_KINDS = names(Arrays.stream(EventKind.values()).map(Enum::name).toList());
     static final Set<String> PACKET_KINDS = names(java.util.stream.Stream.concat(
             Arrays.stream(Direction.values()).map(Enum::name),
@@ -54,26 +62,63 @@ public final class HistoryCommands {
     }
 
     /** {@code events [N] [--from T] [--to T] [--device D] [--kind K] [--limit N]}: event-log history. */
-    public String events(String... args) {
-        return ShellCommands.run("events", () -> render(events.query(query(args, EVENT_KINDS)), Listings::events));
+    @Descriptor("the event log, newest last (oldest first), e.g. tinysep:events --device \"Flat occupancy\""
+            + " --kind DEVICE_EVENT --limit 50")
+    public String events(@Descriptor(OPTIONS) String... args) {
+        return ShellCommands.run("events", () -> answer(args, events.query(query(args, EVENT_KINDS)),
+                list -> Listings.events(list, deviceNames()), "(no events)"));
     }
 
     /** {@code log ...}: the same as {@code events}. */
-    public String log(String... args) {
+    @Descriptor("the same as tinysep:events (type the scope: felix:log has the same name)")
+    public String log(@Descriptor(OPTIONS) String... args) {
         return events(args);
     }
 
     /** {@code packets [N] [--from T] [--to T] [--device D] [--kind K] [--limit N]}: packet-log history. */
-    public String packets(String... args) {
-        return ShellCommands.run("packets",
-                () -> render(packets.query(query(args, PACKET_KINDS)), Listings::packets));
+    @Descriptor("the packet log (every frame received and sent, decimal and hex), newest last; --kind RECEIVED,"
+            + " SENT, REJECTED or GOOD")
+    public String packets(@Descriptor(OPTIONS) String... args) {
+        return ShellCommands.run("packets", () -> answer(args, packets.query(query(args, PACKET_KINDS)),
+                Listings::packets, "(no packets)"));
+    }
+
+    /** @return the table, or, when nothing matched and a {@code --device} names no device, that it names none */
+    private <E> String answer(String[] args, LogHistory<E> history, Function<List<E>, String> table, String none) {
+        if (history.entries().isEmpty()) {
+            for (String ref : deviceRefs(args)) {
+                if (DeviceOrigins.of(ref, inventory).size() == 1) { // only the text itself: no device or driver
+                    return DeviceFilter.noMatch(ref) + ", and no log entry comes from it";
+                }
+            }
+        }
+        return render(history, table);
+    }
+
+    private static List<String> deviceRefs(String[] args) {
+        List<String> refs = new ArrayList<>();
+        for (int i = 0; args != null && i < args.length - 1; i++) {
+            if ("--device".equals(args[i])) {
+                refs.add(args[i + 1]);
+            }
+        }
+        return refs;
+    }
+
+    /** @return UID → name of every current device, for the ORIGIN column */
+    private Map<String, String> deviceNames() {
+        Map<String, String> names = new HashMap<>();
+        for (DeviceRecord d : inventory.devices()) {
+            names.put(d.uid(), Safely.get(() -> d.device().name(), d.name()));
+        }
+        return names;
     }
 
     private LogQuery query(String[] args, Set<String> kinds) {
         return HistoryArguments.parse(args, kinds, inventory, clock, DEFAULT_LINES);
     }
 
-    private static <E> String render(LogHistory<E> history, Function<java.util.List<E>, String> table) {
+    private static <E> String render(LogHistory<E> history, Function<List<E>, String> table) {
         String out = table.apply(history.entries());
         return history.damagedLines() == 0 ? out : out + "\n(" + history.damagedLines() + " damaged lines skipped)";
     }

@@ -3,6 +3,7 @@ package org.tinysep.runtime.internal;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
 import java.util.List;
+import java.util.Map;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.PacketEntry;
@@ -33,12 +34,19 @@ final class Listings {
     }
 
     static String events(List<EventEntry> entries) {
+        return events(entries, Map.of());
+    }
+
+    /** @param names device UID → name: an origin that is a current device shows its name beside the UID */
+    static String events(List<EventEntry> entries, Map<String, String> names) {
         if (entries.isEmpty()) {
             return "(no events)";
         }
         Table t = new Table("SEQ", "TIME", "KIND", "ORIGIN", "MESSAGE");
         for (EventEntry e : entries) {
-            t.row(Long.toString(e.sequence()), TIME.format(e.time()), e.kind().name(), dash(e.origin()), e.message());
+            String name = e.origin() == null ? null : names.get(e.origin());
+            t.row(Long.toString(e.sequence()), TIME.format(e.time()), e.kind().name(),
+                    dash(e.origin()) + (name == null ? "" : " \"" + name + "\""), e.message());
         }
         return t.render();
     }

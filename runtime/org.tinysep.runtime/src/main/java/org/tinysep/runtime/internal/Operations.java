@@ -19,6 +19,9 @@ public final class Operations {
         String stop(long bundleId) throws Exception;
     }
 
+    /** The read-only parameter of an actuator's request the node has not confirmed (ConfirmedSetting.PENDING). */
+    static final String PENDING = "pending";
+
     private final Inventory inventory;
     private final BundleControl bundles;
     private final long ownBundleId;
@@ -35,6 +38,11 @@ public final class Operations {
 
     List<DeviceView> devices() {
         return Views.devices(inventory);
+    }
+
+    /** @return the devices {@code filter} names ({@link DeviceFilter}); all when it is empty */
+    List<DeviceView> devices(String filter) {
+        return DeviceFilter.apply(devices(), filter);
     }
 
     /** Removes a device (exact UID or unique prefix) or else a driver (UID, name or unique UID prefix). */
@@ -125,9 +133,18 @@ public final class Operations {
             throw new IllegalStateException("device " + d.uid() + " failed to set " + key + ": "
                     + Safely.describe(e));
         }
-        String now = Safely.get(() -> d.device().parameters(), List.<Parameter>of()).stream()
-                .filter(p -> p.key().equals(key)).map(Parameter::value).findFirst().orElse(value);
-        return d.uid() + ": " + key + "=" + now;
+        List<Parameter> after = Safely.get(() -> d.device().parameters(), List.<Parameter>of());
+        String now = valueOf(after, key).orElse(value);
+        String pending = PENDING.equals(key) ? "" : valueOf(after, PENDING).orElse("");
+        String who = d.uid() + ": ";
+        String pendingBefore = valueOf(before, PENDING).orElse("");
+        if (!pending.isEmpty() && (!pending.equals(pendingBefore) || pending.equals(value))) {
+            // an actuator took the request: the node's next status report decides
+            return who + key + "=" + pending + " requested, pending until the node confirms it (it reports " + key
+                    + "=" + (now.isEmpty() ? "nothing yet" : now) + "; tinysep:events --device " + d.uid()
+                    + " shows the answer)";
+        }
+        return who + key + "=" + now;
     }
 
     String invoke(String query, String function) {
@@ -153,6 +170,10 @@ public final class Operations {
 
     private static String reason(IllegalArgumentException e) {
         return e.getMessage() == null || e.getMessage().isBlank() ? "rejected" : Safely.oneLine(e.getMessage());
+    }
+
+    private static java.util.Optional<String> valueOf(List<Parameter> parameters, String key) {
+        return parameters.stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst();
     }
 
     private static String keys(List<Parameter> parameters) {

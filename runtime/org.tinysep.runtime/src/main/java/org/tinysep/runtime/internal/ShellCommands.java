@@ -2,6 +2,7 @@ package org.tinysep.runtime.internal;
 
 import java.time.Duration;
 import java.util.function.Supplier;
+import org.apache.felix.service.command.Descriptor;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
@@ -30,6 +31,9 @@ import org.tinysep.api.backup.BackupStore;
 })
 public final class ShellCommands {
 
+    static final String DEVICE = "a device's UID, its first characters (4 or more) or its name";
+    static final String FILTER = "a UID or its first characters, a node address (e.g. 1.4), a driver name, or"
+            + " part of a device name";
     private static final Logger LOG = LoggerFactory.getLogger(ShellCommands.class);
 
     private final Operations operations;
@@ -47,28 +51,58 @@ public final class ShellCommands {
     }
 
     /** {@code drivers}: one table row per driver. */
+    @Descriptor("lists the drivers: UID, name, bundle, device count and figures (e.g. a bus radio's port)")
     public String drivers() {
         return run("drivers", () -> Listings.drivers(operations.drivers()));
     }
 
     /** {@code devices}: one block per device. */
+    @Descriptor("lists every device: status, interfaces, connections, node, parameters, functions")
     public String devices() {
         return run("devices", () -> DeviceBlocks.render(operations.devices()));
     }
 
+    /** {@code devices <filter>}: the blocks of the devices the filter names ({@link DeviceFilter}). */
+    @Descriptor("lists the devices a filter names")
+    public String devices(@Descriptor(FILTER) String filter) {
+        return run("devices", () -> DeviceBlocks.render(operations.devices(filter)));
+    }
+
     /** {@code remove <uid>}: a device (uid or unique prefix), else a driver (uid or name). */
-    public String remove(String uid) {
+    @Descriptor("removes a device, or a driver with all its devices (stops its bundle; 'start <id>' brings it back)")
+    public String remove(@Descriptor(DEVICE + ", or a driver's UID or name") String uid) {
         return run("remove", () -> operations.remove(uid));
     }
 
     /** {@code set <uid> <key> <value>}: changes one device parameter. */
-    public String set(String uid, String key, String value) {
+    @Descriptor("changes a device parameter, e.g. tinysep:set 1a2b room Kitchen; an actuator's change is pending"
+            + " until the node confirms it")
+    public String set(@Descriptor(DEVICE) String uid,
+            @Descriptor("the parameter key (tinysep:devices shows them)") String key,
+            @Descriptor("the new value") String value) {
         return run("set", () -> operations.setParameter(uid, key, value) + durable());
     }
 
     /** {@code invoke <uid> <function>}: runs one device function. */
-    public String invoke(String uid, String function) {
+    @Descriptor("runs a device function (tinysep:devices shows a device's functions)")
+    public String invoke(@Descriptor(DEVICE) String uid, @Descriptor("the function's name") String function) {
         return run("invoke", () -> operations.invoke(uid, function));
+    }
+
+    /** {@code remove}, {@code set} or {@code invoke} with the wrong number of arguments: the usage. */
+    @Descriptor("with a wrong number of arguments: prints the usage")
+    public String remove(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("remove <uid or driver>", wrong);
+    }
+
+    @Descriptor("with a wrong number of arguments: prints the usage")
+    public String set(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("set <uid> <key> <value>", wrong);
+    }
+
+    @Descriptor("with a wrong number of arguments: prints the usage")
+    public String invoke(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("invoke <uid> <function>", wrong);
     }
 
     /** Waits until the change is in the system backup; @return "" when it is, else a note for the user. */

@@ -83,6 +83,10 @@ final class FakeDevice implements Device {
         if (key.equals("timeout") && !value.matches("\\d+")) {
             throw new IllegalArgumentException("timeout must be a whole number of seconds, not '" + value + "'");
         }
+        if (key.equals("on") && parameters.containsKey("pending")) { // an actuator: the node's report will change the value
+            parameters.put("pending", Parameter.readOnly("pending", value, "requested, not yet confirmed"));
+            return;
+        }
         parameters.put(key, Parameter.writable(key, value, p.description()));
     }
 

@@ -83,6 +83,27 @@ class HistoryCommandsTest {
     }
 
     @Test
+    void eventsShowTheNameOfAnOriginThatIsADevice() {
+        events.record(EventKind.DEVICE_EVENT, "amica-movement-0012", "movement detected");
+        events.record(EventKind.DEVICE_EVENT, "gone-device", "door opened");
+        List<String> lines = shell.events().lines().toList();
+        assertTrue(lines.get(1).contains("| amica-movement-0012 \"Movement 0012\" | movement detected"), lines.get(1));
+        assertTrue(lines.get(2).contains("| gone-device ") && !lines.get(2).contains("\""), lines.get(2));
+    }
+
+    @Test
+    void aDeviceFilterThatNamesNoDeviceSaysSoButANodeAddressIsADevice() {
+        events.record(EventKind.DEVICE_EVENT, "amica-movement-0012", "movement detected");
+        assertTrue(shell.events("--device", "nosuch").startsWith("no device matches 'nosuch' ("),
+                shell.events("--device", "nosuch"));
+        assertTrue(shell.packets("--device", "nosuch").startsWith("no device matches 'nosuch' ("));
+        assertEquals(2, shell.events("--device", "0012").lines().count(), "node address 0012");
+        assertEquals("(no events)", shell.events("--device", "0012", "--kind", "PROBLEM"), "a device, no entries");
+        events.record(EventKind.DEVICE_REMOVED, "removed-0009", "removed");
+        assertEquals(2, shell.events("--device", "removed-0009").lines().count(), "a removed device's UID");
+    }
+
+    @Test
     void emptyLogsSaySo() {
         assertEquals("(no events)", shell.log());
         assertEquals("(no packets)", shell.packets());

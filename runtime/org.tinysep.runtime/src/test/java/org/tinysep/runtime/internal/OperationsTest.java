@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleException;
+import org.tinysep.api.device.Parameter;
 
 class OperationsTest {
 
@@ -106,6 +107,32 @@ class OperationsTest {
         assertEquals("cannot set colour on amica-movement-0012: unknown parameter colour (parameters: timeout, events)",
                 assertThrows(IllegalArgumentException.class,
                         () -> ops.setParameter("amica-movement", "colour", "red")).getMessage());
+    }
+
+    @Test
+    void setOnAnActuatorSaysTheChangeIsPendingNotTheOldValue() {
+        FakeDevice light = new FakeDevice("amica-light-0014", "AmicaSimpleLight", home.movement.uid, "Light 0014")
+                .parameter(Parameter.writable("on", false, "the node's report"))
+                .parameter(Parameter.readOnly("pending", null, "requested, not yet confirmed"))
+                .parameter(Parameter.writable("label", "", "a writable parameter that is no command"));
+        home.addDevice(home.movement, light, new NodeInfo(List.of("simple-light"), "0014", ""), "SimpleLightProvider");
+        assertEquals("amica-light-0014: on=true requested, pending until the node confirms it (it reports on=false;"
+                + " tinysep:events --device amica-light-0014 shows the answer)",
+                ops.setParameter("amica-light", "on", "true"));
+        assertEquals("amica-light-0014: label=Hall", ops.setParameter("amica-light", "label", "Hall"),
+                "another parameter of a device with a pending request is not pending");
+    }
+
+    @Test
+    void devicesFilterByUidPrefixNodeAddressDriverOrNameAndSayWhenNothingMatches() {
+        assertEquals(List.of("amica-movement-0012", "amica-node-0012"),
+                ops.devices("0012").stream().map(DeviceView::uid).sorted().toList(), "node address");
+        assertEquals(List.of("flat-occupancy-1"), ops.devices("flat").stream().map(DeviceView::uid).toList());
+        assertEquals(List.of("amica-node-0012", "amica-node-0013"),
+                ops.devices("BusRadioAmica").stream().map(DeviceView::uid).sorted().toList(), "driver");
+        assertEquals(4, ops.devices("").size());
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> ops.devices("nosuch")).getMessage()
+                .startsWith("no device matches 'nosuch' ("));
     }
 
     @Test

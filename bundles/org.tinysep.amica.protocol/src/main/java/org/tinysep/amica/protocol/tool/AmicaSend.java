@@ -22,7 +22,8 @@ import org.tinysep.amica.protocol.ReedSwitchStatus;
 /**
  * Sends AmICA frames over UDP, as a node would: a tool for trying the platform by hand.
  * <pre>
- * java -jar org.tinysep.amica.protocol-*.jar [--to host:port] --node NG.ADDR MESSAGE...
+ * bin/amica-send [--to host:port] --node NG.ADDR MESSAGE...          (in the distribution; default --to: its etc/)
+ * java -jar org.tinysep.amica.protocol-0.1.0-SNAPSHOT.jar [--to host:port] --node NG.ADDR MESSAGE...
  *   MESSAGE: keepalive TYPE[,TYPE...] | motion 0|1 | reed open|closed
  * </pre>
  * Each message becomes one datagram; several messages may follow one {@code --node}.
