@@ -35,7 +35,8 @@ import org.tinysep.simulator.cli.Run;
  * Issue 5, test item 1: the REAL simulator (flat A, scenario demo-day, seed 1) drives the platform over the wire
  * protocols only (AmICA UDP, Sun SPOT UDP, the time synchroniser in lock-step), 06:00 to 18:05 virtual time (every scripted step up to Ben leaving).
  * Asserted: Flat Occupancy's changes with their virtual times, the sequence of rooms whose light was switched on,
- * Inactivity Recognition's states (exactly one ALERT) and exactly one mail naming the Bathroom.
+ * Inactivity Recognition's states (exactly one ALERT), exactly one mail naming the Bathroom, and no actuator request
+ * given up (every simulated node carries out every command, so a give-up would be false: issue 17).
  * <p>
  * {@code --wander 0}: no random short walks, so the rooms lit are exactly those of the scenario (jitter, seeded,
  * still moves every scripted time). The simulation starts at 06:00 so that the platform has registered every
@@ -156,11 +157,19 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
             simulate(executor, common, "06:00", "06:05");
             await(Duration.ofSeconds(30), () -> connected(Topology.of(context)), "flat A's devices connected");
             simulate(executor, common, "06:05", "18:05");
+            // the wall time is printed, not asserted: it depends on the machine's load (issue 17: 24 s with a loaded
+            // machine, 43-60 s with three more busy loops); each part of the run is bounded by simulate's timeout
             long millis = (System.nanoTime() - wall) / 1_000_000;
             System.out.println("SimulatedDemoDayTest: 06:00-18:05 virtual in " + millis + " ms wall time");
             log.info("recorded: {}", record);
             sink.await(1, Duration.ofSeconds(10));
 
+            // issue 17 item 4: every simulated node carries out every command, so any request given up is false
+            List<String> givenUp = awaitService(EventLog.class, null, TIMEOUT).recent(Integer.MAX_VALUE).stream()
+                    .filter(e -> e.message().contains("request given up")).map(e -> e.origin() + " " + e.message())
+                    .toList();
+            System.out.println("SimulatedDemoDayTest: " + givenUp.size() + " request(s) given up");
+            assertEquals("requests given up although every node obeys", List.of(), givenUp);
             assertEquals("Flat Occupancy's changes", OCCUPANCY, record.occupancy);
             assertEquals("rooms whose lights Follow Me Light switched on, in order", ROOMS_LIT,
                     record.roomsRequested(awaitService(EventLog.class, null, TIMEOUT), house));
@@ -171,7 +180,6 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
             SmtpSink.Received alert = sink.messages().get(0);
             assertEquals("the alert mail", "TinySEP: no activity in Bathroom since 14:01", alert.subject());
             assertTrue("the mail's text names the Bathroom: " + alert.body(), alert.body().contains("Bathroom"));
-            assertTrue("well under a minute of wall time: " + millis + " ms", millis < 60_000);
         } finally {
             if (record != null) {
                 record.close();

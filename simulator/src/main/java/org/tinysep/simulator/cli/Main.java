@@ -73,7 +73,7 @@ public final class Main {
                 + " nodes -> AmICA " + target.amica() + ", Sun SPOT " + target.sunSpot() + "; scenario " + o.scenario()
                 + " (" + scenario.agents() + "), seed " + o.seed() + ", " + from + " .. " + until);
         try (Simulation sim = new Simulation(flat, scenario, target, midnight, o.seed(), o.jitter(), o.wander(),
-                e -> System.out.println(clock.now() + " " + e))) {
+                e -> System.out.println(clock.now() + " " + e), sync != null)) {
             for (long t = midnight; t < from.getEpochSecond(); t++) {
                 sim.rehearse(t);
             }

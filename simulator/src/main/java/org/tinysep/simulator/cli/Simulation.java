@@ -29,7 +29,13 @@ public final class Simulation implements AutoCloseable {
     /** @param midnight epoch second of the simulated day's 00:00 */
     public Simulation(Flat flat, Scenario scenario, Target target, long midnight, long seed, int jitter, double wander,
             Consumer<String> events) throws IOException {
-        this.nodes = NodeFactory.create(flat, world, target, events);
+        this(flat, scenario, target, midnight, seed, jitter, wander, events, false);
+    }
+
+    /** @param lockstep nodes carry out commands only at the start of each virtual second (see NodeFactory) */
+    public Simulation(Flat flat, Scenario scenario, Target target, long midnight, long seed, int jitter, double wander,
+            Consumer<String> events, boolean lockstep) throws IOException {
+        this.nodes = NodeFactory.create(flat, world, target, events, lockstep);
         this.director = new Director(flat.house(), flat.entrance().orElse(null), scenario, midnight, seed, jitter,
                 wander, world, nodes::power);
     }

@@ -93,25 +93,29 @@ public final class AmicaNode extends SimNode {
         return payload.equals(lastReported.put(kind, payload)) ? 0 : 1;
     }
 
-    /** Handles a command from the platform: sets the value and reports it at once. Ignored while switched off. */
-    public synchronized void command(AmicaPayload payload) {
+    /**
+     * Handles a command from the platform: sets the value and reports it at once. Ignored while switched off.
+     *
+     * @return 1 if the answer reports a value different from the node's previous report of that kind, else 0
+     */
+    public synchronized int command(AmicaPayload payload) {
         if (!powered()) {
-            return;
+            return 0;
         }
         if (payload instanceof LightControl c && (spec.has("simple-light") || spec.has("dimmable-light"))) {
             light = c.percent();
             events.accept(spec.id() + " light " + light + " %");
-            send("light", new LightControl(light));
+            return send("light", new LightControl(light));
         } else if (payload instanceof HeaterControl c && spec.has("heater")) {
             heater = c.percent();
             events.accept(spec.id() + " heater " + heater + " %");
-            send("heater", new HeaterControl(heater));
+            return send("heater", new HeaterControl(heater));
         } else if (payload instanceof SpeakerControl c && spec.has("speaker")) {
             speaker = c.percent();
             events.accept(spec.id() + " speaker " + speaker + " %");
-            send("speaker", new SpeakerControl(speaker));
-        } else {
-            events.accept(spec.id() + " ignored a command it cannot carry out: " + payload);
+            return send("speaker", new SpeakerControl(speaker));
         }
+        events.accept(spec.id() + " ignored a command it cannot carry out: " + payload);
+        return 0;
     }
 }

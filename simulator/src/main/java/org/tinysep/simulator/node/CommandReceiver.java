@@ -15,8 +15,10 @@ import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaProtocolException;
 
 /**
- * Receives the frames the platform sends to any AmICA node and hands them to that node: on its own thread as they
- * arrive, and on the simulation's thread at the start of every virtual second ({@link #drainNow}).
+ * Receives the frames the platform sends to any AmICA node and hands them to that node: on the simulation's thread
+ * at the start of every virtual second ({@link #drainNow}), and in real time also on its own thread as they arrive.
+ * In lock-step only the simulation's thread carries them out, so a command's answer always goes out at the start of
+ * the virtual second after the one in which the platform sent the command, never at a moment the scheduler picks.
  */
 final class CommandReceiver implements AutoCloseable {
 
@@ -29,14 +31,17 @@ final class CommandReceiver implements AutoCloseable {
         return t;
     });
 
-    CommandReceiver(List<AmicaNode> nodes) throws IOException {
+    /** @param ownThread also carry out commands as they arrive (real time); lock-step passes false */
+    CommandReceiver(List<AmicaNode> nodes, boolean ownThread) throws IOException {
         this.nodes = List.copyOf(nodes);
         selector = Selector.open();
         for (AmicaNode n : nodes) {
             n.port().channel().configureBlocking(false);
             n.port().channel().register(selector, SelectionKey.OP_READ, n);
         }
-        executor.execute(this::loop);
+        if (ownThread) {
+            executor.execute(this::loop);
+        }
     }
 
     private void loop() {
@@ -59,36 +64,43 @@ final class CommandReceiver implements AutoCloseable {
      * Carries out every command already waiting for any node, on the caller's thread. The simulation calls it at the
      * start of each virtual second, so in lock-step a command the platform sent before its DONE is carried out
      * before the node's next status report, however late this class's own thread gets the CPU.
+     *
+     * @return how many of the answers report a changed value (the lock-step paces them like any change)
      */
-    void drainNow() {
+    int drainNow() {
+        int changed = 0;
         for (AmicaNode node : nodes) {
             try {
-                drain(node);
+                changed += drain(node);
             } catch (IOException e) {
-                return; // closed: the simulation ends
+                return changed; // closed: the simulation ends
             }
         }
+        return changed;
     }
 
     /** One node's waiting commands, in order; one lock so that the thread and {@link #drainNow} never interleave. */
-    private synchronized void drain(AmicaNode node) throws IOException {
+    private synchronized int drain(AmicaNode node) throws IOException {
+        int changed = 0;
         buf.clear();
         while (node.port().channel().isOpen() && node.port().channel().receive(buf) != null) {
-            handle(node, buf.array(), buf.position());
+            changed += handle(node, buf.array(), buf.position());
             buf.clear();
         }
+        return changed;
     }
 
-    private static void handle(AmicaNode node, byte[] b, int length) {
+    private static int handle(AmicaNode node, byte[] b, int length) {
         try {
             AmicaFrame f = AmicaCodec.decode(b, 0, length);
             if (!f.receiver().equals(node.port().address())) {
                 NodeLog.LOG.warning("node " + node.port().address() + " got a frame for " + f.receiver());
-                return;
+                return 0;
             }
-            node.command(AmicaPayloads.decode(f.payload()));
+            return node.command(AmicaPayloads.decode(f.payload()));
         } catch (AmicaProtocolException e) {
             NodeLog.LOG.warning("node " + node.port().address() + " dropped a bad frame: " + e.getMessage());
+            return 0;
         }
     }
 

@@ -16,8 +16,17 @@ public final class NodeFactory {
     private NodeFactory() {
     }
 
-    /** @param events receives a line for every command a node carried out */
+    /** Nodes that also carry out commands as they arrive (real time); see {@link #create(Flat, Environment, Target, Consumer, boolean)}. */
     public static NodeSet create(Flat flat, Environment env, Target target, Consumer<String> events) throws IOException {
+        return create(flat, env, target, events, false);
+    }
+
+    /**
+     * @param events   receives a line for every command a node carried out
+     * @param lockstep carry out commands only at the start of each virtual second, on the simulation's thread
+     */
+    public static NodeSet create(Flat flat, Environment env, Target target, Consumer<String> events, boolean lockstep)
+            throws IOException {
         List<Closeable> resources = new ArrayList<>();
         List<SimNode> nodes = new ArrayList<>();
         List<AmicaNode> amica = new ArrayList<>();
@@ -41,7 +50,7 @@ public final class NodeFactory {
                     nodes.add(new SunSpotNode(s, spots, env, conditions));
                 }
             }
-            receiver = new CommandReceiver(amica);
+            receiver = new CommandReceiver(amica, !lockstep);
             resources.add(0, receiver::close);
         } catch (IOException | RuntimeException e) {
             new NodeSet(nodes, resources).close();

@@ -5,20 +5,24 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.IntSupplier;
 
 /** All nodes of a simulated flat: ticked together, switched by id, closed together. */
 public final class NodeSet implements AutoCloseable {
 
     private final Map<String, SimNode> nodes = new LinkedHashMap<>();
     private final List<Closeable> resources;
-    private final Runnable beforeTick;
+    private final IntSupplier beforeTick;
 
     NodeSet(List<SimNode> nodes, List<Closeable> resources) {
-        this(nodes, resources, () -> { });
+        this(nodes, resources, () -> 0);
     }
 
-    /** @param beforeTick runs at the start of every {@link #tick}: commands waiting for the nodes are carried out */
-    NodeSet(List<SimNode> nodes, List<Closeable> resources, Runnable beforeTick) {
+    /**
+     * @param beforeTick runs at the start of every {@link #tick}: commands waiting for the nodes are carried out;
+     *                   returns how many answers report a changed value
+     */
+    NodeSet(List<SimNode> nodes, List<Closeable> resources, IntSupplier beforeTick) {
         nodes.forEach(n -> this.nodes.put(n.spec().id(), n));
         this.resources = resources;
         this.beforeTick = beforeTick;
@@ -32,10 +36,9 @@ public final class NodeSet implements AutoCloseable {
         return nodes.get(id);
     }
 
-    /** @return how many reported values changed (see {@link SimNode#tick}) */
+    /** @return how many reported values changed (see {@link SimNode#tick}), command answers included */
     public int tick(long t) {
-        beforeTick.run();
-        int changed = 0;
+        int changed = beforeTick.getAsInt();
         for (SimNode n : nodes.values()) {
             changed += n.tick(t);
         }

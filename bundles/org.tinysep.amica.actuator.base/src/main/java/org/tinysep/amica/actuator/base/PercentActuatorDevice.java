@@ -1,5 +1,6 @@
 package org.tinysep.amica.actuator.base;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
 import java.util.Optional;
@@ -26,8 +27,8 @@ import org.tinysep.device.support.Uids;
  * Abstracts one AmICA percent-actuator node. Its status payload of type {@code P} reports the value (a
  * percentage); {@link #request(Percent)} sends the same payload with the new value and returns at once. Thesis
  * actuator model: the value, its listeners and the event log change only when the node's next status report
- * confirms it; until then the request is shown as the read-only parameter {@code pending}. A request contradicted
- * by {@link #PATIENCE} reports is given up.
+ * confirms it; until then the request is shown as the read-only parameter {@code pending}. A request is given
+ * up only when a report arrives {@link #PATIENCE} or more after it and still disagrees.
  *
  * @param <P> the status / command payload, e.g. {@code HeaterControl}
  * @param <L> the listener type of the provider interface
@@ -35,8 +36,13 @@ import org.tinysep.device.support.Uids;
 public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends AbstractDevice
         implements BusRadioAmicaListener {
 
-    /** Status reports that may disagree with a request before it is given up (the first may cross it). */
-    public static final int PATIENCE = 2;
+    /** An AmICA actuator node reports its value every 10 s (thesis 3.9.1, docs/protocols/amica.md). */
+    public static final Duration REPORT_INTERVAL = Duration.ofSeconds(10);
+    /**
+     * How long after a request a disagreeing status report may still predate the command: two report intervals, so
+     * the node has one whole interval to answer before a report of the old value counts as a contradiction.
+     */
+    public static final Duration PATIENCE = REPORT_INTERVAL.multipliedBy(2);
 
     private final BusRadioAmicaProvider bus;
     private final Listeners<L> listeners;
@@ -63,7 +69,7 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         this.payloadType = payloadType;
         this.percentOf = percentOf;
         this.command = command;
-        this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::event);
+        this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::now, this::event);
         serviceProperty(DeviceProperties.NODE_ADDRESS, bus.nodeId());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {nodeType});
     }
@@ -89,7 +95,7 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
             return; // the bus radio already rejected and counted it
         }
         status(DeviceStatus.State.ONLINE, "");
-        setting.report(reported).ifPresent(v -> listeners.fire(l -> fire(l, v, at)));
+        setting.report(reported, at).ifPresent(v -> listeners.fire(l -> fire(l, v, at)));
     }
 
     /** Sends the command for {@code value}; the value changes when the node confirms it. */

@@ -37,6 +37,7 @@ public final class FrameHandler<R> {
     private final Nodes<R> nodes;
     private final RejectCounter rejects;
     private final AtomicLong received = new AtomicLong();
+    private volatile Instant lastStamp;
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
         this.context = context;
@@ -46,6 +47,17 @@ public final class FrameHandler<R> {
 
     /** Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after. */
     public void datagram(byte[] data, int length, R from) {
+        datagram(data, length, from, null);
+    }
+
+    /**
+     * Like {@link #datagram(byte[], int, Object)}, stamped {@code at} instead of the platform time now: a
+     * transport that takes a late frame during a platform tick stamps it with the time it arrived in (the time
+     * before the tick), as it would have been stamped on time. Never earlier than the last stamp given.
+     *
+     * @param at the platform time of the frame; {@code null} for now
+     */
+    public void datagram(byte[] data, int length, R from, Instant at) {
         received.incrementAndGet();
         byte[] raw = Arrays.copyOf(data, length);
         AmicaFrame frame;
@@ -55,13 +67,13 @@ public final class FrameHandler<R> {
             reject(e.reason(), e.getMessage(), raw, from);
             return;
         }
-        handle(frame, raw, from);
+        handle(frame, raw, from, at);
     }
 
     /** Handles a frame already found in a byte stream (framing checked); {@code raw} are its bytes. */
     public void frame(AmicaFrame frame, byte[] raw, R from) {
         received.incrementAndGet();
-        handle(frame, raw, from);
+        handle(frame, raw, from, null);
     }
 
     /**
@@ -72,8 +84,10 @@ public final class FrameHandler<R> {
         reject(reason, message, raw, from);
     }
 
-    private void handle(AmicaFrame frame, byte[] raw, R from) {
-        Instant at = context.now();
+    private void handle(AmicaFrame frame, byte[] raw, R from, Instant stamp) {
+        Instant last = lastStamp;
+        Instant at = stamp == null ? context.now() : last != null && stamp.isBefore(last) ? last : stamp;
+        lastStamp = at;
         String origin = nodes.describe(from);
         AmicaPayload payload;
         try {

@@ -52,6 +52,19 @@ class FrameHandlerTest {
     }
 
     @Test
+    void aFrameTakenLateIsStampedWithTheTimeGivenButNeverEarlierThanTheLastStamp() {
+        byte[] keepAlive = frame(1, 17, keepAlive(AmicaNodeType.MOVEMENT));
+        radio.handler.datagram(keepAlive, keepAlive.length, FROM, TestRadio.T0.minusSeconds(2));
+        List<String> stamps = new ArrayList<>();
+        node(1, 17).connect((src, payload, at) -> stamps.add(at.toString()));
+        byte[] motion = frame(1, 17, AmicaPayloads.encode(new MotionDetection(true)));
+        radio.handler.datagram(motion, motion.length, FROM, TestRadio.T0.minusSeconds(1)); // taken during a tick
+        radio.handler.datagram(motion, motion.length, FROM); // now (T0)
+        radio.handler.datagram(motion, motion.length, FROM, TestRadio.T0.minusSeconds(5)); // never backwards
+        assertEquals(List.of("2026-11-22T09:59:59Z", "2026-11-22T10:00:00Z", "2026-11-22T10:00:00Z"), stamps);
+    }
+
+    @Test
     void payloadsOfAKnownNodeReachItsListenersAsCopies() {
         feed(frame(1, 17, keepAlive(AmicaNodeType.MOVEMENT)));
         AmicaBusDevice<String> node = node(1, 17);

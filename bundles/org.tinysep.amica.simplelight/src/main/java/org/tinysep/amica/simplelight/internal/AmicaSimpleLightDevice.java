@@ -1,5 +1,6 @@
 package org.tinysep.amica.simplelight.internal;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
 import java.util.Optional;
@@ -30,13 +31,18 @@ import org.tinysep.device.support.Uids;
  */
 final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLightProvider, BusRadioAmicaListener {
 
-    /** Status reports that may disagree with a request before it is given up (the first may cross it). */
-    static final int PATIENCE = 2;
+    /** An AmICA actuator node reports its value every 10 s (thesis 3.9.1, docs/protocols/amica.md). */
+    static final Duration REPORT_INTERVAL = Duration.ofSeconds(10);
+    /**
+     * How long after a request a disagreeing status report may still predate the command: two report intervals, so
+     * the node has one whole interval to answer before a report of the old value counts as a contradiction.
+     */
+    static final Duration PATIENCE = REPORT_INTERVAL.multipliedBy(2);
 
     private final BusRadioAmicaProvider bus;
     private final Listeners<SimpleLightListener> listeners;
     private final ConfirmedSetting<Boolean> on = new ConfirmedSetting<>(v -> v ? "light on" : "light off",
-            PATIENCE, this::event);
+            PATIENCE, this::now, this::event);
 
     AmicaSimpleLightDevice(DriverContext context, BusRadioAmicaProvider bus) {
         super(context, Uids.of(context.driverName(), bus.deviceUid()), context.driverName(), "Light " + bus.nodeId());
@@ -64,7 +70,7 @@ final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLight
             return; // the bus radio already rejected and counted it
         }
         status(DeviceStatus.State.ONLINE, "");
-        on.report(lit).ifPresent(v -> listeners.fire(l -> l.lightSwitched(this, v, at)));
+        on.report(lit, at).ifPresent(v -> listeners.fire(l -> l.lightSwitched(this, v, at)));
     }
 
     @Override

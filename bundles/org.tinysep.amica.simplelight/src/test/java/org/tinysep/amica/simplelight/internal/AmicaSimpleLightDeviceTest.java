@@ -104,7 +104,20 @@ class AmicaSimpleLightDeviceTest {
     }
 
     @Test
-    void aCommandTheNodeDoesNotTakeIsGivenUpAfterTwoStatusReports() {
+    void staleReportsWithinTwoReportIntervalsAreNoContradiction() {
+        receive(new LightControl(0), 0);
+        light.switchLight(true); // at T0
+        receive(new LightControl(0), 0); // sent before the command reached the node, delivered late
+        receive(new LightControl(0), 10);
+        receive(new LightControl(0), 19);
+        assertEquals("true", parameter("pending"));
+        receive(new LightControl(100), 19);
+        assertEquals(List.of("off@0", "on@19"), heard);
+        assertTrue(deviceEvents().stream().noneMatch(e -> e.contains("given up")), deviceEvents().toString());
+    }
+
+    @Test
+    void aCommandTheNodeDoesNotTakeIsGivenUpByAReportTwoIntervalsLaterThatSaysWhichReport() {
         receive(new LightControl(0), 0);
         light.switchLight(true);
         receive(new LightControl(0), 10); // may have crossed the command
@@ -112,8 +125,9 @@ class AmicaSimpleLightDeviceTest {
         receive(new LightControl(0), 20);
         assertEquals("", parameter("pending"));
         assertEquals(List.of("off@0"), heard);
-        assertTrue(deviceEvents().contains("light on not confirmed: the node still reports light off after 2 status "
-                + "report(s); request given up"), deviceEvents().toString());
+        assertTrue(deviceEvents().contains("light on not confirmed: the node reported light off at "
+                + "2026-11-22T10:00:20Z, 20 s after the request (2026-11-22T10:00:00Z); request given up"),
+                deviceEvents().toString());
     }
 
     @Test

@@ -2,6 +2,7 @@ package org.tinysep.amica.busradio.udp.internal;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -20,12 +21,18 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.PlatformTicker;
 
 /**
  * Bus Radio AmICA UDP/IP (thesis 4.4.1.2): listens on a UDP port and hands each datagram to the shared AmICA bus
  * radio logic ({@code org.tinysep.amica.busradio.base}), which creates one bus device per node on the node's first
  * keep-alive and forwards later payloads to it. This class is the transport: a node's route is the UDP address
  * it last sent from. Its Driver service carries the bound port ({@value #PORT_PROPERTY}).
+ * <p>
+ * Lock-step: every platform tick first hands over the datagrams still waiting in the socket, on the tick's thread,
+ * stamped with the platform time before the tick (what the receive thread would have stamped). A frame a simulator
+ * sent before a {@code TICK} is therefore handled, and the commands it causes are sent, before that TICK's
+ * {@code DONE}, however late the receive thread gets the CPU (docs/time-sync.md).
  */
 @Component(service = {}, immediate = true, configurationPid = AmicaUdpDriver.PID)
 @Designate(ocd = BusRadioUdpConfig.class)
@@ -42,6 +49,9 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private FrameHandler<InetSocketAddress> handler;
     private UdpTransport transport;
     private String listening;
+    private PlatformTicker ticker;
+    /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
+    private Instant beforeTick;
 
     public AmicaUdpDriver() {
         super(NAME);
@@ -68,13 +78,24 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         nodes.restore(savedDevices()); // known nodes as they were, before the first datagram (docs/backup.md)
         if (transport != null) {
             transport.start(handler::datagram);
+            ticker = new PlatformTicker(bundleContext, NAME, this::tick);
         } else {
             context().event(EventKind.PROBLEM, problem);
         }
     }
 
+    /** Hands over the frames that arrived before this tick (called by the platform ticker, never concurrently). */
+    private void tick(Instant now) {
+        Instant stamp = beforeTick == null ? now : beforeTick;
+        beforeTick = now;
+        transport.drain((data, length, from) -> handler.datagram(data, length, from, stamp));
+    }
+
     @Deactivate
     void deactivate() {
+        if (ticker != null) {
+            ticker.close();
+        }
         if (transport != null) {
             transport.close();
         }

@@ -1,11 +1,15 @@
 package org.tinysep.amica.busradio.udp.internal;
 
 import java.io.IOException;
-import java.net.DatagramPacket;
-import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.SocketException;
+import java.net.SocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.ClosedSelectorException;
+import java.nio.channels.DatagramChannel;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -14,9 +18,11 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The UDP socket of the driver: one receive loop on its own single-thread executor that {@link #close()} shuts
- * down; datagrams are handed to the receiver synchronously on the receive thread. Sends go out on the caller's
- * thread: a UDP send does not wait for the peer, and a command sent while the Time Controller handles a TICK is
- * then on the wire before its DONE (lock-step simulations see it in the same virtual second).
+ * down; datagrams are handed to the receiver synchronously on the receive thread. {@link #drain} hands over every
+ * datagram already waiting on the caller's thread instead (the platform tick calls it, so in lock-step every frame
+ * sent before a TICK is handled before its DONE). Receive loop and drain never interleave: one lock, held while a
+ * datagram is handled. Sends go out on the caller's thread: a UDP send does not wait for the peer, and a command
+ * sent while the Time Controller handles a TICK is then on the wire before its DONE.
  */
 final class UdpTransport implements AutoCloseable {
 
@@ -34,26 +40,36 @@ final class UdpTransport implements AutoCloseable {
     /** Larger than any valid frame, so an oversize datagram is seen as such rather than cut silently. */
     static final int RECEIVE_BUFFER = 2048;
 
-    private final DatagramSocket socket;
+    private final DatagramChannel channel;
+    private final Selector selector;
     private final ExecutorService receiveExecutor;
+    private final ByteBuffer buffer = ByteBuffer.allocate(RECEIVE_BUFFER);
     private volatile boolean open = true;
 
-    private UdpTransport(DatagramSocket socket, String name) {
-        this.socket = socket;
+    private UdpTransport(DatagramChannel channel, Selector selector, String name) {
+        this.channel = channel;
+        this.selector = selector;
         this.receiveExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, name + "-receive"));
     }
 
     /** Binds the socket; nothing is received until {@link #start(Receiver)}. */
     static UdpTransport open(String bindAddress, int port, int receiveBufferBytes, String name) throws IOException {
-        DatagramSocket socket = new DatagramSocket(null);
+        DatagramChannel channel = DatagramChannel.open();
+        Selector selector = null;
         try {
-            socket.setReceiveBufferSize(receiveBufferBytes);
-            socket.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
+            channel.setOption(StandardSocketOptions.SO_RCVBUF, receiveBufferBytes);
+            channel.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
+            channel.configureBlocking(false);
+            selector = Selector.open();
+            channel.register(selector, SelectionKey.OP_READ);
         } catch (IOException | RuntimeException e) {
-            socket.close();
+            channel.close();
+            if (selector != null) {
+                selector.close();
+            }
             throw e;
         }
-        return new UdpTransport(socket, name);
+        return new UdpTransport(channel, selector, name);
     }
 
     /** Starts the receive loop; datagrams queued in the socket buffer meanwhile are not lost. */
@@ -62,40 +78,79 @@ final class UdpTransport implements AutoCloseable {
     }
 
     int localPort() {
-        return socket.getLocalPort();
+        return local().getPort();
     }
 
     String localAddress() {
-        return socket.getLocalAddress().getHostAddress() + ":" + socket.getLocalPort();
+        InetSocketAddress a = local();
+        return a.getAddress().getHostAddress() + ":" + a.getPort();
+    }
+
+    private InetSocketAddress local() {
+        try {
+            return (InetSocketAddress) channel.getLocalAddress();
+        } catch (IOException e) {
+            return new InetSocketAddress(0);
+        }
     }
 
     int receiveBufferSize() {
         try {
-            return socket.getReceiveBufferSize();
-        } catch (SocketException e) {
+            return channel.getOption(StandardSocketOptions.SO_RCVBUF);
+        } catch (IOException e) {
             return -1;
         }
     }
 
     private void receiveLoop(Receiver receiver) {
-        byte[] buf = new byte[RECEIVE_BUFFER];
-        DatagramPacket packet = new DatagramPacket(buf, buf.length);
         while (open) {
             try {
-                packet.setLength(buf.length);
-                socket.receive(packet);
+                selector.select();
+                selector.selectedKeys().clear();
+            } catch (ClosedSelectorException e) {
+                return;
             } catch (IOException e) {
                 if (open) {
                     LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
                 }
                 continue;
             }
-            try {
-                receiver.datagram(buf, packet.getLength(), (InetSocketAddress) packet.getSocketAddress());
-            } catch (RuntimeException e) {
-                LOG.error("Datagram handling failed; the receive loop goes on", e);
+            drain(receiver);
+        }
+    }
+
+    /**
+     * Hands every datagram already waiting in the socket to {@code receiver}, on the caller's thread, and returns
+     * when none is left. Waits for a datagram the receive loop is handling at the moment.
+     *
+     * @return how many datagrams it handed over
+     */
+    int drain(Receiver receiver) {
+        int n = 0;
+        synchronized (buffer) {
+            while (open) {
+                buffer.clear();
+                SocketAddress from;
+                try {
+                    from = channel.receive(buffer);
+                } catch (IOException e) {
+                    if (open) {
+                        LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
+                    }
+                    return n;
+                }
+                if (from == null) {
+                    return n;
+                }
+                n++;
+                try {
+                    receiver.datagram(buffer.array(), buffer.position(), (InetSocketAddress) from);
+                } catch (RuntimeException e) {
+                    LOG.error("Datagram handling failed; the receive loop goes on", e);
+                }
             }
         }
+        return n;
     }
 
     /** Sends a datagram on the caller's thread and reports the outcome; a closed transport fails at once. */
@@ -106,7 +161,9 @@ final class UdpTransport implements AutoCloseable {
         }
         IOException failure = null;
         try {
-            socket.send(new DatagramPacket(frame, frame.length, to));
+            if (channel.send(ByteBuffer.wrap(frame), to) == 0) {
+                failure = new IOException("the socket's send buffer is full; datagram dropped");
+            }
         } catch (IOException e) {
             failure = e;
         }
@@ -116,7 +173,12 @@ final class UdpTransport implements AutoCloseable {
     @Override
     public void close() {
         open = false;
-        socket.close();
+        try {
+            selector.close();
+            channel.close();
+        } catch (IOException e) {
+            LOG.debug("closing {}: {}", localAddress(), e.toString());
+        }
         receiveExecutor.shutdown();
         try {
             if (!receiveExecutor.awaitTermination(2, TimeUnit.SECONDS)) {

@@ -10,6 +10,10 @@ import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.stream.IntStream;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -67,6 +71,65 @@ class UdpTransportTest {
             node.send(new DatagramPacket(new byte[] {1}, 1, radio));
             assertEquals(0, seen.poll(5, TimeUnit.SECONDS));
             assertEquals(1, seen.poll(5, TimeUnit.SECONDS));
+        }
+    }
+
+    /**
+     * Issue 17: the platform tick drains the socket so that in lock-step every frame sent before a TICK is handled
+     * before its DONE, however late the receive thread runs. Here the receive thread is stuck in its first datagram
+     * when the drain starts: the drain waits for it and returns only when every datagram sent before it was handled
+     * completely, in order (by the receive thread or by the drain itself).
+     */
+    @Test
+    void drainReturnsOnlyWhenEveryDatagramSentBeforeItWasHandledInOrder() throws Exception {
+        List<Integer> seen = new CopyOnWriteArrayList<>();
+        CountDownLatch loopBusy = new CountDownLatch(1);
+        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+                DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            UdpTransport.Receiver receiver = (data, length, from) -> {
+                int i = data[0];
+                if (i == 0) {
+                    loopBusy.countDown();
+                    sleep(300); // a receive thread that does not get the CPU
+                }
+                seen.add(i); // handled completely
+            };
+            transport.start(receiver);
+            InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
+            node.send(new DatagramPacket(new byte[] {0}, 1, radio));
+            assertTrue(loopBusy.await(5, TimeUnit.SECONDS));
+            for (int i = 1; i <= 50; i++) {
+                node.send(new DatagramPacket(new byte[] {(byte) i}, 1, radio));
+            }
+            transport.drain(receiver);
+            assertEquals(IntStream.rangeClosed(0, 50).boxed().toList(), seen, "all, in order, when drain returns");
+        }
+    }
+
+    @Test
+    void drainHandsOverWaitingDatagramsOnTheCallersThread() throws Exception {
+        List<String> threads = new CopyOnWriteArrayList<>();
+        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+                DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
+            for (int i = 0; i < 20; i++) {
+                node.send(new DatagramPacket(new byte[] {(byte) i}, 1, radio));
+            }
+            int drained = 0;
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+            while (drained < 20 && System.nanoTime() < end) { // loopback delivers at once; a wait, not a sleep
+                drained += transport.drain((data, length, from) -> threads.add(Thread.currentThread().getName()));
+            }
+            assertEquals(20, drained);
+            assertTrue(threads.stream().allMatch(Thread.currentThread().getName()::equals), threads.toString());
+        }
+    }
+
+    private static void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 
