@@ -36,6 +36,8 @@ final class InactivityLogic {
     private InactivityState state = InactivityState.NOT_WATCHING;
     private Instant since;
     private Instant watchingFrom;
+    /** The start of watching before Flat Occupancy went away (UNKNOWN), kept for a restart; else null. */
+    private Instant pausedFrom;
     private Activity last;
     private InactivityAlert alert;
 
@@ -68,10 +70,14 @@ final class InactivityLogic {
             if (state != InactivityState.NOT_WATCHING) {
                 return Optional.empty();
             }
+            pausedFrom = null;
             watchingFrom = at.isBefore(start) ? start : at;
             return change(InactivityState.WATCHING, watchingFrom);
         }
         alert = null;
+        // UNKNOWN is no decision that anyone left (Flat Occupancy went away: an update, the platform stopping):
+        // a restart resumes watching from the old start. UNOCCUPIED is: watching starts anew on arrival.
+        pausedFrom = occupancy == Occupancy.UNKNOWN && watchingFrom != null ? watchingFrom : null;
         watchingFrom = null;
         return change(InactivityState.NOT_WATCHING, at);
     }
@@ -92,6 +98,9 @@ final class InactivityLogic {
         if (watchingFrom != null && watchingFrom.isAfter(limit)) {
             from = later(from, watchingFrom);
             watchingFrom = now;
+        }
+        if (pausedFrom != null && pausedFrom.isAfter(limit)) {
+            pausedFrom = now;
         }
         if (since.isAfter(limit)) {
             from = later(from, since);
@@ -124,9 +133,12 @@ final class InactivityLogic {
         }
     }
 
-    /** @return since when the flat is watched, empty when not watching */
+    /**
+     * @return since when the flat is watched (for the backup), or was until Flat Occupancy went away; empty when
+     *         not watching since someone left
+     */
     Optional<Instant> watchingFrom() {
-        return state == InactivityState.NOT_WATCHING ? Optional.empty() : Optional.ofNullable(watchingFrom);
+        return Optional.ofNullable(state == InactivityState.NOT_WATCHING ? pausedFrom : watchingFrom);
     }
 
     /** Time passed. @return ALERT when the deadline is reached now, otherwise empty */
