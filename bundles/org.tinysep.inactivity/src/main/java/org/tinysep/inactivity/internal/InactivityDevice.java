@@ -101,11 +101,12 @@ final class InactivityDevice extends AbstractDevice
     private void activity(Activity a) {
         Optional<InactivityState> change;
         Optional<Instant> wentBack;
+        Instant now = now();
         synchronized (logic) {
-            wentBack = logic.rebase(a.at());
+            wentBack = logic.rebase(now); // the platform's time, not the report's: a late report is no clock step
             change = logic.activity(a);
         }
-        wentBack.ifPresent(from -> clockWentBack(from, a.at()));
+        wentBack.ifPresent(from -> clockWentBack(from, now));
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());

@@ -19,8 +19,8 @@ import org.tinysep.api.service.Occupancy;
  * nothing until the next activity.</li>
  * <li>UNOCCUPIED or UNKNOWN: NOT_WATCHING, and a raised alert is dropped (someone left through the door).</li>
  * <li>The clock went back (switch from virtual to real time, an NTP step, a restored time from the future):
- * {@link #rebase(Instant)} counts the quiet time from the new {@code now} instead; an activity is never dropped
- * because of its time.</li>
+ * {@link #rebase(Instant)} with the platform's {@code now} counts the quiet time from it, so fresh activity is
+ * never taken for a late one.</li>
  * <li>After a restart {@link #resume} takes back the last activity and since when the flat was watched, so the
  * quiet time that began before the restart keeps counting.</li>
  * </ul>
@@ -52,12 +52,14 @@ final class InactivityLogic {
     }
 
     /**
-     * An activity happened; it always counts, whatever its time. One stamped a moment before the last one (two
-     * threads racing) keeps the later time. @return the new state if it changed (an alert clears)
+     * An activity happened. A report older than the last activity is a late delivery (a bus device's hand-over,
+     * lock-step frames stamped a tick late) and tells nothing new: ignored. Fresh activity is never older, since
+     * the caller re-bases on the platform's {@code now} first ({@link #rebase}). @return the new state if it
+     * changed (an alert clears)
      */
     Optional<InactivityState> activity(Activity a) {
         if (last != null && a.at().isBefore(last.at())) {
-            a = new Activity(a.roomUid(), a.roomName(), a.description(), last.at(), a.limit());
+            return Optional.empty();
         }
         last = a;
         alert = null;
