@@ -63,11 +63,12 @@ final class FlatOccupancyDevice extends AbstractDevice
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
             Optional<Occupancy> change;
             Optional<Instant> wentBack;
+            Instant now = now();
             synchronized (logic) {
-                wentBack = logic.rebase(movement.at());
+                wentBack = logic.rebase(now); // the platform's time: a late report is no clock step
                 change = logic.motion(movement.at());
             }
-            clockWentBack(wentBack, movement.at());
+            clockWentBack(wentBack, now);
             announce(change, movement.at(), "motion from " + source.deviceUid());
         }
     }
@@ -83,11 +84,12 @@ final class FlatOccupancyDevice extends AbstractDevice
         }
         Optional<Occupancy> change;
         Optional<Instant> wentBack;
+        Instant now = now();
         synchronized (logic) {
-            wentBack = logic.rebase(at);
+            wentBack = logic.rebase(now);
             change = state == OpenState.OPEN ? logic.outerDoorOpened(at) : logic.outerDoorClosed(at);
         }
-        clockWentBack(wentBack, at);
+        clockWentBack(wentBack, now);
         if (state == OpenState.CLOSED) {
             saveBackup(); // a pending leave check survives a crash
         }

@@ -21,8 +21,9 @@ import org.tinysep.api.service.Occupancy;
  * <li>Person motion seen while the flat is not (yet) OCCUPIED is kept for {@link #ARRIVAL_WINDOW}: Flat
  * Occupancy may hear the same motion after us and only then say OCCUPIED.</li>
  * <li>UNOCCUPIED: every lit room goes dark; nothing happens until the flat is OCCUPIED again.</li>
- * <li>A clock that went back (virtual time, then real time): a room's motion time later than {@code now} is taken
- * as {@code now}, so the room goes dark after the grace period on the new clock and fresh motion counts.</li>
+ * <li>A clock that went back (virtual time, then real time): at the next tick a room's motion time later than
+ * {@code now} is taken as {@code now}, so the room goes dark after the grace period on the new clock and fresh
+ * motion counts again.</li>
  * </ul>
  * Not thread-safe: the device serialises calls.
  */
@@ -60,8 +61,8 @@ final class FollowMeLogic {
 
     private List<Command> motion(String roomUid, Instant at, String what) {
         Instant before = lit.get(roomUid);
-        if (before != null && before.isAfter(at) && !before.isAfter(at.plus(CLOCK_SLACK))) {
-            return List.of(); // a report a moment late: the room's newer motion stands
+        if (before != null && before.isAfter(at)) {
+            return List.of(); // a late report: the room's newer motion stands (a clock step: re-based by tick)
         }
         lit.put(roomUid, at);
         return before == null ? List.of(new Command(roomUid, true, what)) : List.of();

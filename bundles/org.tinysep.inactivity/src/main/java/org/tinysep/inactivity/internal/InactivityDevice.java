@@ -1,7 +1,6 @@
 package org.tinysep.inactivity.internal;
 
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -35,11 +34,13 @@ import org.tinysep.device.support.Placements;
 final class InactivityDevice extends AbstractDevice
         implements InactivityRecognitionProvider {
 
+    /** While running, the state is saved this often (wall time), so after a crash it tells when it stopped. */
+    private static final long HEARTBEAT_NANOS = 60_000_000_000L;
+
     private final Listeners<InactivityRecognitionListener> listeners;
     private final InactivityLogic logic;
     private final ActivityFactory activities;
     private final HelpCall help;
-    private static final long HEARTBEAT_NANOS = 60_000_000_000L;
     private final AlertMail words;
     private volatile String occupancySource;
     private volatile long lastHeartbeat = System.nanoTime();
@@ -100,11 +101,12 @@ final class InactivityDevice extends AbstractDevice
     private void activity(Activity a) {
         Optional<InactivityState> change;
         Optional<Instant> wentBack;
+        Instant now = now();
         synchronized (logic) {
-            wentBack = logic.rebase(a.at());
+            wentBack = logic.rebase(now); // the platform's time, not the report's: a late report is no clock step
             change = logic.activity(a);
         }
-        wentBack.ifPresent(from -> clockWentBack(from, a.at()));
+        wentBack.ifPresent(from -> clockWentBack(from, now));
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());
@@ -248,28 +250,9 @@ final class InactivityDevice extends AbstractDevice
      */
     @Override
     protected void onRestore(ComponentBackup saved) {
-        Instant now = now();
-        List<String> problems = new ArrayList<>();
-        RoomActivity.Saved s = rooms.restore(saved.state(), now, problems);
-        problems.forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
-        help.handedOverDue(s.handedOverDue());
-        if (saved.savedAt() != null && saved.savedAt().isBefore(now)) {
-            help.outage(new Outage(saved.savedAt(), now));
-        }
-        Optional<Instant> wentBack;
-        synchronized (logic) {
-            logic.resume(s.last(), s.watchedFrom());
-            wentBack = logic.rebase(now);
-        }
-        wentBack.ifPresent(from -> event("saved state from the future (" + words.time(from) + ", now "
-                + words.time(now) + "): quiet time counted from now"));
-        Activity a = s.last();
-        if (a != null) {
-            event("restored after a restart: last activity " + a.description() + " in " + a.roomName() + " at "
-                    + words.time(a.at()) + (s.watchedFrom() == null ? "" : "; the flat was watched since "
-                    + words.time(s.watchedFrom()) + ", the quiet time keeps counting")
-                    + (saved.savedAt() == null ? "" : "; last saved " + words.time(saved.savedAt())));
-        }
+        Restart.Report r = Restart.apply(saved, now(), logic, rooms, help, words);
+        r.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        r.events().forEach(this::event);
     }
 
     @Override

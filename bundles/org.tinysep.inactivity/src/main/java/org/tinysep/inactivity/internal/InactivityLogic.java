@@ -19,8 +19,8 @@ import org.tinysep.api.service.Occupancy;
  * nothing until the next activity.</li>
  * <li>UNOCCUPIED or UNKNOWN: NOT_WATCHING, and a raised alert is dropped (someone left through the door).</li>
  * <li>The clock went back (switch from virtual to real time, an NTP step, a restored time from the future):
- * {@link #rebase(Instant)} counts the quiet time from the new {@code now} instead; an activity is never dropped
- * because of its time.</li>
+ * {@link #rebase(Instant)} with the platform's {@code now} counts the quiet time from it, so fresh activity is
+ * never taken for a late one.</li>
  * <li>After a restart {@link #resume} takes back the last activity and since when the flat was watched, so the
  * quiet time that began before the restart keeps counting.</li>
  * </ul>
@@ -36,6 +36,8 @@ final class InactivityLogic {
     private InactivityState state = InactivityState.NOT_WATCHING;
     private Instant since;
     private Instant watchingFrom;
+    /** The start of watching before Flat Occupancy went away (UNKNOWN), kept for a restart; else null. */
+    private Instant pausedFrom;
     private Activity last;
     private InactivityAlert alert;
 
@@ -50,12 +52,14 @@ final class InactivityLogic {
     }
 
     /**
-     * An activity happened; it always counts, whatever its time. One stamped a moment before the last one (two
-     * threads racing) keeps the later time. @return the new state if it changed (an alert clears)
+     * An activity happened. A report older than the last activity is a late delivery (a bus device's hand-over,
+     * lock-step frames stamped a tick late) and tells nothing new: ignored. Fresh activity is never older, since
+     * the caller re-bases on the platform's {@code now} first ({@link #rebase}). @return the new state if it
+     * changed (an alert clears)
      */
     Optional<InactivityState> activity(Activity a) {
         if (last != null && a.at().isBefore(last.at())) {
-            a = new Activity(a.roomUid(), a.roomName(), a.description(), last.at(), a.limit());
+            return Optional.empty();
         }
         last = a;
         alert = null;
@@ -68,10 +72,14 @@ final class InactivityLogic {
             if (state != InactivityState.NOT_WATCHING) {
                 return Optional.empty();
             }
+            pausedFrom = null;
             watchingFrom = at.isBefore(start) ? start : at;
             return change(InactivityState.WATCHING, watchingFrom);
         }
         alert = null;
+        // UNKNOWN is no decision that anyone left (Flat Occupancy went away: an update, the platform stopping):
+        // a restart resumes watching from the old start. UNOCCUPIED is: watching starts anew on arrival.
+        pausedFrom = occupancy == Occupancy.UNKNOWN && watchingFrom != null ? watchingFrom : null;
         watchingFrom = null;
         return change(InactivityState.NOT_WATCHING, at);
     }
@@ -92,6 +100,9 @@ final class InactivityLogic {
         if (watchingFrom != null && watchingFrom.isAfter(limit)) {
             from = later(from, watchingFrom);
             watchingFrom = now;
+        }
+        if (pausedFrom != null && pausedFrom.isAfter(limit)) {
+            pausedFrom = now;
         }
         if (since.isAfter(limit)) {
             from = later(from, since);
@@ -124,9 +135,12 @@ final class InactivityLogic {
         }
     }
 
-    /** @return since when the flat is watched, empty when not watching */
+    /**
+     * @return since when the flat is watched (for the backup), or was until Flat Occupancy went away; empty when
+     *         not watching since someone left
+     */
     Optional<Instant> watchingFrom() {
-        return state == InactivityState.NOT_WATCHING ? Optional.empty() : Optional.ofNullable(watchingFrom);
+        return Optional.ofNullable(state == InactivityState.NOT_WATCHING ? pausedFrom : watchingFrom);
     }
 
     /** Time passed. @return ALERT when the deadline is reached now, otherwise empty */

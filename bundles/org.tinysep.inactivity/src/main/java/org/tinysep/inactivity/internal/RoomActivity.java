@@ -54,15 +54,17 @@ final class RoomActivity {
     }
 
     /**
-     * Takes the saved state back. A per-room time later than {@code now} (a clock that went back, a backup from
-     * the future) is taken as {@code now}; an entry that cannot be read is skipped and named in {@code problems}.
+     * Takes the saved state back. The per-room times are a record of what was seen and come back as saved, virtual
+     * times included (a room's next activity replaces a time from the future, see {@link #seen}); the caller
+     * re-bases the last activity and the watching start, which decide. An entry that cannot be read is skipped and
+     * named in {@code problems}.
      */
-    synchronized Saved restore(Map<String, String> state, Instant now, List<String> problems) {
+    synchronized Saved restore(Map<String, String> state, List<String> problems) {
         state.forEach((k, v) -> {
             if (k.startsWith("room.")) {
                 Instant at = instant(k, v, problems);
                 if (at != null) {
-                    perRoom.put(k.substring(5), at.isAfter(now) ? now : at);
+                    perRoom.put(k.substring(5), at);
                 }
             }
         });

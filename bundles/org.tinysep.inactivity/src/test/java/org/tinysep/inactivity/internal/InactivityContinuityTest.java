@@ -177,6 +177,25 @@ class InactivityContinuityTest {
         assertEquals(1, mail.sent.size(), "but not mailed twice");
     }
 
+    @Test
+    void anOrderlyStopWhereFlatOccupancyGoesFirstStillResumesTheCount() {
+        Fakes.Flat flat = new Fakes.Flat("flat", Occupancy.OCCUPIED, T0);
+        InactivityDevice before = device(null, flat);
+        tickUntil(before, T0.plusSeconds(600));
+        bathSensor.report(true, now); // 09:10
+        tickUntil(before, T0.plusSeconds(900));
+        before.forget("flat"); // the platform stops: Flat Occupancy's service goes before this device is disposed
+        assertEquals(InactivityState.NOT_WATCHING, before.state());
+        ComponentBackup saved = before.backup();
+
+        now = T0.plusSeconds(1200);
+        InactivityDevice after = device(saved, new Fakes.Flat("flat", Occupancy.OCCUPIED, T0));
+        assertEquals(T0.plusSeconds(600 + 45 * 60).toString(), parameter(after, "deadline"), "09:10 + 45 min");
+
+        flat.change(Occupancy.UNOCCUPIED, now); // someone left: that ends the count for good
+        assertEquals("", before.backupState().getOrDefault("watching.from", ""));
+    }
+
     private List<String> subjects() {
         return mail.sent.stream().map(m -> m.substring(0, m.indexOf('\n'))).toList();
     }

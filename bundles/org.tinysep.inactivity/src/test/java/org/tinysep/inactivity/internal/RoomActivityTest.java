@@ -33,23 +33,23 @@ class RoomActivityTest {
 
         RoomActivity restarted = new RoomActivity();
         List<String> problems = new ArrayList<>();
-        RoomActivity.Saved saved = restarted.restore(state, T.plusSeconds(60), problems);
+        RoomActivity.Saved saved = restarted.restore(state, problems);
         assertEquals(new RoomActivity.Saved(new Activity("bath-uid", "Bathroom",
                 "movement by Bath sensor (before restart)", T, Duration.ofMinutes(45)), T.minusSeconds(3600),
                 T.minusSeconds(600)), saved);
         assertEquals(rooms.describe(), restarted.describe());
         assertEquals(List.of(), problems);
-        assertNull(new RoomActivity().restore(Map.of(), T, problems).last());
+        assertNull(new RoomActivity().restore(Map.of(), problems).last());
     }
 
     @Test
-    void aTimeFromTheFutureIsTakenAsNowAndABadEntryIsSkippedWithAProblem() {
+    void aBadEntryIsSkippedWithAProblemAndFreshActivityReplacesATimeFromTheFuture() {
         RoomActivity rooms = new RoomActivity();
         List<String> problems = new ArrayList<>();
         RoomActivity.Saved saved = rooms.restore(Map.of("room.bath-uid", "2099-01-01T00:00:00Z",
                 "room.hall-uid", "yesterday", "last.at", "2099-01-01T00:00:00Z", "last.limitSeconds", "ninety"),
-                T, problems);
-        assertEquals("{bath-uid=" + T + "}", rooms.describe());
+                problems);
+        assertEquals("{bath-uid=2099-01-01T00:00:00Z}", rooms.describe(), "a record of what was seen, as saved");
         assertNull(saved.last());
         assertEquals(2, problems.size(), problems.toString());
         assertTrue(problems.get(0).contains("yesterday") || problems.get(1).contains("yesterday"), problems.toString());
