@@ -24,6 +24,27 @@ class LockStepTest {
     }
 
     @Test
+    void ticksAndByeAreSignedWithTheKeyForTheSessionOfWelcome(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path keyFile = dir.resolve("sync.key");
+        java.nio.file.Files.writeString(keyFile, "a-known-test-key-0123456789\n");
+        byte[] key = SyncClient.readKey(keyFile);
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL");
+                SyncClient c = new SyncClient(peer.address(), 2000, key)) {
+            c.hello();
+            c.tick(Instant.parse("2026-11-23T08:00:00Z"));
+            c.bye();
+            javax.crypto.Mac mac = javax.crypto.Mac.getInstance("HmacSHA256");
+            mac.init(new javax.crypto.spec.SecretKeySpec("a-known-test-key-0123456789".getBytes(), "HmacSHA256"));
+            String tick = "TICK 1 2026-11-23T08:00:00Z";
+            String expected = java.util.HexFormat.of().formatHex(
+                    mac.doFinal((FakeSynchroniserPeer.SESSION + " " + tick).getBytes()));
+            assertEquals(List.of("HELLO", tick + " " + expected, "BYE 2 " + java.util.HexFormat.of().formatHex(
+                    mac.doFinal((FakeSynchroniserPeer.SESSION + " BYE 2").getBytes()))), peer.requests);
+        }
+    }
+
+    @Test
     void theDriverTicksEverySecondInOrderAfterItsFrames() throws Exception {
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
             assertTrue(c.hello().external());
