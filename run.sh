@@ -32,7 +32,7 @@ if "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
   echo "  etc/org.tinysep.amica.busradio.serial-usb0.cfg). Simulator output: $demo/simulator.log"
   (
     if "$repo/scripts/demo-flat.sh" simulate "$PWD" "$demo" > "$demo/simulator.log" 2>&1; then
-      echo "DEMO: the simulated day is played; the clock follows real time again ($(tail -2 "$demo/simulator.log" | head -1))"
+      echo "DEMO: the simulated day is played; the clock follows real time again ($(grep -E "^done:" "$demo/simulator.log" | tail -1))"
     else
       echo "DEMO: the simulator FAILED (exit $?); the demo day did not run. Its last words ($demo/simulator.log):"
       tail -3 "$demo/simulator.log" | sed 's/^/  /'
