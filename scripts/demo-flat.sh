@@ -10,7 +10,8 @@
 #       <demo>/var   the demo's state folder: flat A's house plan, the synchroniser key sync.key (0600)
 #     start the platform with:  java -jar <dist>/tinysep.jar --home <demo>/home --var <demo>/var
 #   scripts/demo-flat.sh simulate <dist> <demo> runs the simulated day against that platform (waits for it first),
-#       then BYE returns the platform clock to real time (TINYSEP_DEMO_FROM / TINYSEP_DEMO_UNTIL: the span, HH:MM)
+#       (up to TINYSEP_DEMO_WAIT=60 s), then BYE returns the platform clock to real time (TINYSEP_DEMO_FROM /
+#       TINYSEP_DEMO_UNTIL: the span, HH:MM)
 #   scripts/demo-flat.sh forget-old-demo <dist> removes the etc/ files an older demo (before the demo had its own
 #       state) wrote into <dist>/etc: they froze the clock in EXTERNAL mode after the demo
 set -euo pipefail
@@ -97,7 +98,8 @@ case "$cmd" in
     [ -n "$jar" ] || { echo "demo flat: simulator jar missing (build first)" >&2; exit 1; }
     demo_etc="$demo/home/etc"
     sleep "${TINYSEP_DEMO_DELAY:-8}" # let the platform start and read its etc/
-    exec java -jar "$jar" --lockstep --from "${TINYSEP_DEMO_FROM:-06:30}" --until "${TINYSEP_DEMO_UNTIL:-23:00}" \
+    exec java -jar "$jar" --lockstep --wait-platform "${TINYSEP_DEMO_WAIT:-60}" \
+      --from "${TINYSEP_DEMO_FROM:-06:30}" --until "${TINYSEP_DEMO_UNTIL:-23:00}" \
       --progress 120 --release-clock --sync-key "$demo/var/sync.key" \
       --amica-port "$(cfg_value "$demo_etc/org.tinysep.amica.busradio.udp.cfg" port 47011)" \
       --sunspot-port "$(cfg_value "$demo_etc/org.tinysep.sunspot.busradio.cfg" udpPort 47012)" \

@@ -51,7 +51,7 @@ public final class Main {
         SyncClient sync = null;
         if (o.lockstep()) {
             sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000, o.syncKeyBytes());
-            Welcome w = sync.hello();
+            Welcome w = sync.hello(o.waitSeconds());
             System.out.println("platform time " + w.platformTime() + ", clock " + w.mode());
             if (!w.external()) {
                 sync.close();

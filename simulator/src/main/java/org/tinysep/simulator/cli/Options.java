@@ -10,7 +10,7 @@ import java.util.TreeMap;
 record Options(String flat, String scenario, String target, int amicaPort, int sunSpotPort, int syncPort,
         double speed, boolean lockstep, long seed, int fromSecond, int untilSecond, LocalDate date,
         int progressMinutes, int paceMillis, int jitter, double wander, String replay, String mapping,
-        boolean fullRate, String syncKey, boolean releaseClock) {
+        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds) {
 
     static final String USAGE = """
             usage: java -jar org.tinysep.simulator-<version>.jar [options]
@@ -23,6 +23,7 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
               --lockstep                   lock-step with the Time Controller (platform: tinysep:time external)
               --sync-key <file>            lock-step: the platform's synchroniser key (<state folder>/sync.key)
               --release-clock              lock-step: at the end, BYE returns the platform clock to REAL time
+              --wait-platform <seconds>    lock-step: keep asking a platform that does not answer yet (default 0)
               --speed <factor>             real-time mode: virtual seconds per wall second (default 1)
               --seed <n>                   random variations (default 1)
               --from <HH:MM> --until <HH:MM>  virtual day span (default 00:00 to 24:00)
@@ -63,7 +64,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                 second(m, "until", "24:00"), m.containsKey("date") ? date(take(m, "date", null)) : null,
                 (int) number(m, "progress", "60"), (int) number(m, "pace-ms", "5"), (int) number(m, "jitter", "90"),
                 number(m, "wander", "0.002"), take(m, "replay", null), take(m, "mapping", null),
-                rate(take(m, "rate", "full")), take(m, "sync-key", null), release);
+                rate(take(m, "rate", "full")), take(m, "sync-key", null), release,
+                (int) number(m, "wait-platform", "0"));
         if (!m.isEmpty()) {
             throw new IllegalArgumentException("unknown option(s) " + m.keySet());
         }

@@ -37,7 +37,7 @@ final class ReplayRunner {
         try {
             if (o.lockstep()) {
                 sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000, o.syncKeyBytes());
-                Welcome w = sync.hello();
+                Welcome w = sync.hello(o.waitSeconds());
                 if (!w.external()) {
                     throw new IllegalStateException("the platform clock is " + w.mode()
                             + ": switch it with 'tinysep:time external' in the platform shell, then start again");

@@ -47,6 +47,36 @@ public final class SyncClient implements AutoCloseable {
         socket.setSoTimeout(timeoutMillis);
     }
 
+    /**
+     * {@link #hello()}, asked again for up to {@code waitSeconds} while the platform does not answer or its clock is
+     * still REAL (a platform that is starting and has not yet read its configuration).
+     */
+    public Welcome hello(int waitSeconds) throws IOException {
+        long deadline = System.nanoTime() + waitSeconds * 1_000_000_000L;
+        while (true) {
+            try {
+                Welcome w = hello();
+                if (w.external() || System.nanoTime() >= deadline) {
+                    return w;
+                }
+                java.util.concurrent.locks.LockSupport.parkNanos(500_000_000L);
+            } catch (NoAnswer e) {
+                if (System.nanoTime() >= deadline) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    /** No answer after every try. */
+    static final class NoAnswer extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        NoAnswer(String message) {
+            super(message);
+        }
+    }
+
     public Welcome hello() throws IOException {
         String answer = ask("HELLO", "WELCOME ");
         String[] w = answer.split(" ");
@@ -115,7 +145,7 @@ public final class SyncClient implements AutoCloseable {
                 // retry
             }
         }
-        throw new IOException("no answer to '" + request + "' from the Time Controller at " + platform + " after "
+        throw new NoAnswer("no answer to '" + request + "' from the Time Controller at " + platform + " after "
                 + TRIES + " tries (is the platform running, with its time synchroniser on this port?)");
     }
 

@@ -87,6 +87,17 @@ class LockStepTest {
     }
 
     @Test
+    void helloWaitsForAPlatformThatIsStillStarting() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("REAL"); SyncClient c = new SyncClient(peer.address(), 300)) {
+            assertFalse(c.hello(0).external(), "no wait: the first answer");
+            long start = System.nanoTime();
+            assertFalse(c.hello(1).external(), "still REAL after the wait: the caller reports it");
+            assertTrue(System.nanoTime() - start >= 1_000_000_000L, "asked again for the whole second");
+            assertTrue(peer.requests.size() >= 3, "asked again: " + peer.requests);
+        }
+    }
+
+    @Test
     void noPeerGivesAClearMessage() throws Exception {
         java.net.InetSocketAddress nobody;
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
