@@ -9,6 +9,8 @@
 #                    flat A's room placements and the clock in EXTERNAL mode (the simulator drives it)
 #       <demo>/var   the demo's state folder: flat A's house plan, the synchroniser key sync.key (0600)
 #     start the platform with:  java -jar <dist>/tinysep.jar --home <demo>/home --var <demo>/var
+#     (a demo home, not a launcher option for another etc/: whatever finds etc/ through tinysep.home - FileInstall,
+#     tinysep:backup/restore, drivers-list paths - sees the demo's)
 #   scripts/demo-flat.sh simulate <dist> <demo> runs the simulated day against that platform (waits for it first),
 #       (up to TINYSEP_DEMO_WAIT=60 s), then BYE returns the platform clock to real time (TINYSEP_DEMO_FROM /
 #       TINYSEP_DEMO_UNTIL: the span, HH:MM)
