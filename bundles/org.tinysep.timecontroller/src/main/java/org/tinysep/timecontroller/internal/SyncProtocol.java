@@ -61,14 +61,15 @@ final class SyncProtocol implements SyncLink.Handler {
             return reject(e.code(), e.answer(), Arrays.copyOf(data, Math.min(length, data.length)), from);
         }
         if (message instanceof SyncMessage.Signed signed) {
-            SyncAuth.Refusal refusal = auth.check(signed, signed instanceof SyncMessage.Tick t ? t.at() : null);
+            SyncAuth.Refusal refusal = auth.check(signed, signed instanceof SyncMessage.Tick t ? t.at() : null,
+                    from);
             if (refusal != null) {
                 return reject(refusal.code(), SyncMessage.error(Long.toString(signed.seq()), refusal.code(),
                         refusal.text()), Arrays.copyOf(data, length), from);
             }
         }
         if (message instanceof SyncMessage.Bye b) {
-            auth.accepted(b.seq(), null);
+            auth.accepted(from, b.seq(), null);
             bye.run();
             return SyncMessage.done(b.seq(), target.now());
         }
@@ -76,7 +77,7 @@ final class SyncProtocol implements SyncLink.Handler {
             SyncClock.TickResult r = target.tick(tick.seq(), tick.at());
             return switch (r.outcome()) {
                 case ADVANCED, REPEATED -> {
-                    auth.accepted(tick.seq(), tick.at());
+                    auth.accepted(from, tick.seq(), tick.at());
                     ticks.incrementAndGet();
                     yield SyncMessage.done(tick.seq(), r.now());
                 }
@@ -87,7 +88,7 @@ final class SyncProtocol implements SyncLink.Handler {
                         Arrays.copyOf(data, length), from);
             };
         }
-        return SyncMessage.welcome(target.now(), target.mode(), auth.session());
+        return SyncMessage.welcome(target.now(), target.mode(), auth.hello(from));
     }
 
     private String reject(String code, String answer, byte[] datagram, InetSocketAddress from) {

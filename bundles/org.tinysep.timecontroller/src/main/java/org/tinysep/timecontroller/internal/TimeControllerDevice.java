@@ -66,7 +66,8 @@ final class TimeControllerDevice extends AbstractDevice {
     boolean switchTo(ClockMode mode, String why) {
         return clock.switchTo(mode, at -> {
             event("clock switched to " + mode + " (" + why + "), now " + at
-                    + (mode == ClockMode.EXTERNAL ? "; held until the synchroniser's first TICK" : ""));
+                    + (mode == ClockMode.EXTERNAL ? "; held until the synchroniser's first TICK" + (syncTimeout > 0
+                            ? ", back to REAL after " + syncTimeout + " s without one" : "") : ""));
             status(DeviceStatus.State.ONLINE, mode + " time");
         }).isPresent();
     }

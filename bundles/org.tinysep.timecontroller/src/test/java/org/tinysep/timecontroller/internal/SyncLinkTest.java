@@ -76,9 +76,19 @@ class SyncLinkTest {
         return new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
     }
 
-    /** @return {@code request} with the HMAC of the synchroniser that knows {@code key}, for this link's session */
-    private String signed(String request, byte[] key) {
-        return request + " " + SyncAuth.mac(key, auth.session(), request);
+    private String session;
+
+    /** @return this synchroniser socket's session, from a HELLO (sent once) */
+    private String session() throws IOException {
+        if (session == null) {
+            session = ask("HELLO").split(" ")[3];
+        }
+        return session;
+    }
+
+    /** @return {@code request} with the HMAC of a synchroniser that knows {@code key}, for this socket's session */
+    private String signed(String request, byte[] key) throws IOException {
+        return request + " " + SyncAuth.mac(key, session(), request);
     }
 
     /** Sends a request signed with the platform's key; the unsigned requests of this test are sent with ask. */
@@ -87,15 +97,27 @@ class SyncLinkTest {
     }
 
     @Test
-    void helloIsAnsweredWithTheClockModeAndSession() throws Exception {
-        assertEquals("WELCOME 2026-11-22T10:00:00Z EXTERNAL " + auth.session(), ask("HELLO"));
-        assertTrue(auth.session().matches("[0-9a-f]{16}"), auth.session());
-        assertEquals(1, protocol.received());
+    void helloIsAnsweredWithTheClockModeAndTheSendersSession() throws Exception {
+        String welcome = ask("HELLO");
+        assertTrue(welcome.matches("WELCOME 2026-11-22T10:00:00Z EXTERNAL [0-9a-f]{16}"), welcome);
+        assertEquals(welcome, ask("HELLO"), "the same session for the same sender");
+        try (DatagramSocket other = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            other.setSoTimeout(5000);
+            byte[] b = "HELLO".getBytes(StandardCharsets.US_ASCII);
+            other.send(new DatagramPacket(b, b.length, platform));
+            DatagramPacket in = new DatagramPacket(new byte[512], 512);
+            other.receive(in);
+            String theirs = new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+            assertTrue(!theirs.split(" ")[3].equals(welcome.split(" ")[3]), "another sender, another session");
+        }
+        assertEquals(3, protocol.received());
     }
 
     @Test
     void aTickFromASenderWithoutTheKeyIsRefused() throws Exception {
         byte[] otherKey = "not-the-platform-key-0123456789".getBytes(StandardCharsets.US_ASCII);
+        assertTrue(ask("TICK 0 2026-11-22T11:00:00Z " + "0".repeat(64)).startsWith(
+                "ERROR 0 unauthorized no session for 127.0.0.1:"), "no HELLO yet");
         assertTrue(ask("TICK 1 2026-11-22T11:00:00Z").startsWith("ERROR 1 unauthorized TICK without an HMAC"));
         assertTrue(ask(signed("TICK 2 2026-11-22T11:00:00Z", otherKey)).startsWith("ERROR 2 unauthorized wrong HMAC"));
         assertTrue(ask("TICK 3 2026-11-22T11:00:00Z " + "0".repeat(64)).startsWith("ERROR 3 unauthorized "));
@@ -103,7 +125,7 @@ class SyncLinkTest {
         assertEquals(T0, clock.now(), "the clock did not move");
         assertEquals(ClockMode.EXTERNAL, clock.mode());
         assertEquals(List.of(), advanced);
-        assertEquals(4, protocol.rejected("unauthorized"));
+        assertEquals(5, protocol.rejected("unauthorized"));
         assertEquals(1, logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM
                 && e.message().contains("unauthorized")).count(), "one PROBLEM, then only counted: " + logs.events());
         assertEquals("DONE 5 2026-11-22T11:00:00Z", askSigned("TICK 5 2026-11-22T11:00:00Z"), "the key holder is served");
@@ -118,11 +140,20 @@ class SyncLinkTest {
         assertTrue(ask(first).startsWith("ERROR 7 replayed sequence number 7 is not above the last accepted 8"));
         assertTrue(askSigned("TICK 8 2026-11-22T10:00:09Z").startsWith("ERROR 8 replayed "), "same seq, other time");
         assertEquals(List.of(T0.plusSeconds(1), T0.plusSeconds(5)), advanced);
-        SyncAuth otherSession = new SyncAuth(KEY, null);
-        String fromAnotherSession = "TICK 99 2026-11-22T10:00:10Z " + SyncAuth.mac(KEY, otherSession.session(),
-                "TICK 99 2026-11-22T10:00:10Z");
-        assertTrue(ask(fromAnotherSession).startsWith("ERROR 99 unauthorized wrong HMAC"),
-                "a TICK captured before a restart (another session) is worthless");
+        String captured = signed("TICK 99 2026-11-22T10:00:10Z", KEY);
+        try (DatagramSocket attacker = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            attacker.setSoTimeout(5000);
+            for (String request : List.of("HELLO", captured)) {
+                byte[] b = request.getBytes(StandardCharsets.US_ASCII);
+                attacker.send(new DatagramPacket(b, b.length, platform));
+                DatagramPacket in = new DatagramPacket(new byte[512], 512);
+                attacker.receive(in);
+                String answer = new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+                assertTrue(answer.startsWith(request.equals("HELLO") ? "WELCOME " : "ERROR 99 unauthorized wrong HMAC"),
+                        "a TICK signed for another sender's session is worthless from here: " + answer);
+            }
+        }
+        assertEquals(List.of(T0.plusSeconds(1), T0.plusSeconds(5)), advanced);
     }
 
     @Test
@@ -179,7 +210,7 @@ class SyncLinkTest {
         assertEquals(2, protocol.rejected("malformed"));
         assertEquals(1, protocol.rejected("unknown-command"));
         assertEquals(1, protocol.rejected("too-long"));
-        assertEquals(7, protocol.received());
+        assertEquals(8, protocol.received(), "7 requests and the HELLO for the session");
         long problems = logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM).count();
         assertEquals(4, problems, "the first of each code only: " + logs.events());
         assertEquals(5, logs.packets().size(), "every rejected datagram is in the packet log");
