@@ -10,7 +10,8 @@ import org.tinysep.api.device.Driver;
 /**
  * A platform driven by the real simulator (the {@code org.tinysep.simulator} bundle, which needs the Sun SPOT
  * protocol too) in lock-step: the Time Controller in EXTERNAL mode with its synchroniser on a free port of
- * 127.0.0.1 ({@link #syncPort()}) and the tests' key ({@link #syncKeyArgs()} for the simulator), Inactivity Recognition reading days in UTC like the simulator.
+ * 127.0.0.1 ({@link #syncPort()}) and the tests' key ({@link #syncKeyArgs()} for the simulator), Inactivity
+ * Recognition reading days in UTC like the simulator.
  */
 public abstract class LockStepTestSupport extends TinySepTestSupport {
 

@@ -16,8 +16,8 @@ import javax.crypto.spec.SecretKeySpec;
 /**
  * Authentication of the synchroniser's requests (docs/time-sync.md, "Authentication"). Every TICK and BYE carries
  * {@code hex(HMAC-SHA256(key, "<session> <request without the hmac>"))}. A session is a random value the platform
- * gives a sender address at its first HELLO (every later HELLO from it gets the same), kept while the link is open; so a
- * request captured from one synchroniser is worthless from any other address and after a restart. Within a session
+ * gives a sender address at its first HELLO (every later HELLO from it gets the same), kept while the link is open;
+ * so a request captured from one synchroniser is worthless from any other address and after a restart. Within a session
  * sequence numbers must increase: a request whose number is not above the last accepted one is refused as
  * {@code replayed}, except the exact resend of the last TICK (a lost DONE). Thread-safe.
  */

@@ -64,7 +64,8 @@ final class SyncKey {
                     PosixFilePermission.GROUP_WRITE, PosixFilePermission.OTHERS_WRITE);
             if (p.stream().anyMatch(others::contains)) {
                 return Optional.of("the time synchroniser key " + file + " can be read or written by other users ("
-                        + PosixFilePermissions.toString(p) + "): anyone who reads it can drive the clock; chmod 600 it");
+                        + PosixFilePermissions.toString(p)
+                        + "): anyone who reads it can drive the clock; chmod 600 it");
             }
         } catch (IOException | UnsupportedOperationException e) {
             // not POSIX, or gone: nothing to say
