@@ -27,18 +27,36 @@ repo=$(pwd)
 # State (drivers list, house, mail spool, framework cache) lives in <repo>/var, outside target/: `mvn clean` keeps it.
 # TINYSEP_VAR=<dir> puts it elsewhere.
 var="${TINYSEP_VAR:-$repo/var}"
-mkdir -p "$var"
 cd runtime/org.tinysep.launcher/target/tinysep
+# etc/ files an older demo wrote into the distribution (they froze the clock in EXTERNAL mode) are removed
+"$repo/scripts/demo-flat.sh" forget-old-demo "$PWD"
 # No hardware configured: the simulated demo flat runs against the platform (scripts/demo-flat.sh; TINYSEP_DEMO=0
-# turns it off). The simulator waits for the platform, plays one virtual day in lock-step, and then exits.
+# turns it off), in its own throwaway state: a demo home (its etc/) and state folder in TINYSEP_DEMO_DIR (default
+# <repo>/target/demo), re-created at every demo start. Neither var/ nor the distribution's etc/ is written.
+# The simulator waits for the platform, plays one virtual day in lock-step, returns the clock to real time and exits.
+launch=(--var "$var")
 if "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
-  "$repo/scripts/demo-flat.sh" prepare "$PWD" "$var"
-  echo "No hardware configured: the demo flat (simulator/, flat A) plays a virtual day 06:30-23:00 in a few seconds"
-  echo "once the platform is up; simulator output: $var/simulator.log. TINYSEP_DEMO=0 ./run.sh skips it."
-  "$repo/scripts/demo-flat.sh" simulate "$PWD" > "$var/simulator.log" 2>&1 &
+  demo="${TINYSEP_DEMO_DIR:-$repo/target/demo}"
+  "$repo/scripts/demo-flat.sh" prepare "$PWD" "$demo"
+  launch=(--home "$demo/home" --var "$demo/var")
+  echo "DEMO: no hardware is configured, so this is the demo flat (simulator/, flat A): a virtual day 06:30-23:00"
+  echo "  plays in a few seconds once the platform is up, then the clock returns to real time. The demo has its own"
+  echo "  state in $demo, thrown away at the next demo start; your state folder $var and"
+  echo "  the distribution's etc/ are not used. To run for real: TINYSEP_DEMO=0 ./run.sh (or configure hardware, e.g."
+  echo "  etc/org.tinysep.amica.busradio.serial-usb0.cfg). Simulator output: $demo/simulator.log"
+  (
+    if "$repo/scripts/demo-flat.sh" simulate "$PWD" "$demo" > "$demo/simulator.log" 2>&1; then
+      echo "DEMO: the simulated day is played; the clock follows real time again ($(grep -E "^done:" "$demo/simulator.log" | tail -1))"
+    else
+      echo "DEMO: the simulator FAILED (exit $?); the demo day did not run. Its last words ($demo/simulator.log):"
+      tail -3 "$demo/simulator.log" | sed 's/^/  /'
+    fi >&2
+  ) &
   # a simulated day makes tens of thousands of events in seconds: keep them off the console (they are in the event
-  # log: tinysep:events ..., var/log/events-*.log); warnings, the mail text and the rest of the log still show
+  # log: tinysep:events ..., the demo's log/); warnings, the mail text and the rest of the log still show
   demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn"
+else
+  mkdir -p "$var"
 fi
 # shellcheck disable=SC2086 # JAVA_OPTS is a list of options; given later, it wins over demo_opts
-exec java ${demo_opts:-} ${JAVA_OPTS:-} -jar tinysep.jar --var "$var" "$@"
+exec java ${demo_opts:-} ${JAVA_OPTS:-} -jar tinysep.jar "${launch[@]}" "$@"

@@ -10,7 +10,8 @@ import org.tinysep.api.device.Driver;
 /**
  * A platform driven by the real simulator (the {@code org.tinysep.simulator} bundle, which needs the Sun SPOT
  * protocol too) in lock-step: the Time Controller in EXTERNAL mode with its synchroniser on a free port of
- * 127.0.0.1 ({@link #syncPort()}), Inactivity Recognition reading days in UTC like the simulator.
+ * 127.0.0.1 ({@link #syncPort()}) and the tests' key ({@link #syncKeyArgs()} for the simulator), Inactivity
+ * Recognition reading days in UTC like the simulator.
  */
 public abstract class LockStepTestSupport extends TinySepTestSupport {
 
@@ -25,10 +26,14 @@ public abstract class LockStepTestSupport extends TinySepTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.timecontroller",
-                Map.of("mode", "EXTERNAL", "syncPort", "0", "syncBindAddress", "127.0.0.1"));
+        configs.put("org.tinysep.timecontroller", TestSyncKey.timeConfig("EXTERNAL"));
         configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
         return configs;
+    }
+
+    /** @return the simulator's option for the Time Controller's key: {@code --sync-key <file>} */
+    protected static String[] syncKeyArgs() {
+        return new String[] {"--sync-key", TestSyncKey.file().toString()};
     }
 
     /** @return the UDP port of the Time Controller's synchroniser (service property {@code tinysep.sync.port}) */

@@ -32,8 +32,7 @@ abstract class AalTestSupport extends TinySepTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.timecontroller",
-                Map.of("mode", "EXTERNAL", "syncPort", "0", "syncBindAddress", "127.0.0.1"));
+        configs.put("org.tinysep.timecontroller", org.tinysep.itests.TestSyncKey.timeConfig("EXTERNAL"));
         try {
             configs.put("org.tinysep.houseinformation", Map.of("file",
                     Files.createTempDirectory("tinysep-aal-house-").resolve("house.xml").toString()));

@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.tinysep.itests.TestSyncKey;
 
 /**
  * A distribution home set up for the simulated flat A (like {@code scripts/demo-flat.sh prepare}): free UDP ports
@@ -29,7 +30,8 @@ final class FlatHome {
         Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"),
                 "udpPort=" + sunSpotPort + "\nudpBindAddress=127.0.0.1\n");
         Files.writeString(etc.resolve("org.tinysep.timecontroller.cfg"),
-                "mode=EXTERNAL\nsyncPort=" + syncPort + "\nsyncBindAddress=127.0.0.1\n");
+                "mode=EXTERNAL\nsyncPort=" + syncPort + "\nsyncBindAddress=127.0.0.1\nsyncKeyFile="
+                + TestSyncKey.file() + "\nsyncTimeout=0\n");
         Files.writeString(etc.resolve("org.tinysep.houseinformation.placement.cfg"), "placements=" + placements()
                 + "\n");
         Files.createDirectories(home.resolve("var"));
@@ -52,7 +54,8 @@ final class FlatHome {
     /** The simulator's arguments for flat A in lock-step with this home's platform, {@code from}-{@code until}. */
     String[] simulatorArgs(String from, String until) {
         return new String[] {"--lockstep", "--amica-port", Integer.toString(amicaPort), "--sunspot-port",
-            Integer.toString(sunSpotPort), "--sync-port", Integer.toString(syncPort), "--flat", "flat-a",
+            Integer.toString(sunSpotPort), "--sync-port", Integer.toString(syncPort), "--sync-key",
+            TestSyncKey.file().toString(), "--flat", "flat-a",
             "--scenario", "demo-day", "--seed", "1", "--wander", "0", "--from", from, "--until", until,
             "--progress", "0"};
     }

@@ -87,10 +87,20 @@ final class PlatformProcess implements AutoCloseable {
 
     /** Starts the platform in {@code home} and waits until its shell answers. */
     static PlatformProcess start(Path home) throws IOException {
-        Path log = home.resolve("platform-" + (++launches) + ".log");
-        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-XX:TieredStopAtLevel=1", "-Dorg.slf4j.simpleLogger.defaultLogLevel=info", "-jar",
-                "tinysep.jar")
+        return start(home, home);
+    }
+
+    /**
+     * Starts {@code home}'s tinysep.jar with {@code launcherArgs} (e.g. {@code --home}, {@code --var}); its log goes
+     * to {@code logDir}.
+     */
+    static PlatformProcess start(Path home, Path logDir, String... launcherArgs) throws IOException {
+        Path log = logDir.resolve("platform-" + (++launches) + ".log");
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-XX:TieredStopAtLevel=1", "-Dorg.slf4j.simpleLogger.defaultLogLevel=info", "-jar",
+                "tinysep.jar"));
+        command.addAll(List.of(launcherArgs));
+        Process p = new ProcessBuilder(command)
                 .directory(home.toFile()).redirectError(ProcessBuilder.Redirect.appendTo(log.toFile())).start();
         PlatformProcess platform = new PlatformProcess(p);
         platform.command("echo ready", Duration.ofSeconds(60));

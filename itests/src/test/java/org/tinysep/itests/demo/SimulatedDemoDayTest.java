@@ -149,8 +149,8 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
             record = new PlatformRecord(context, house);
             List<String> common = List.of("--lockstep", "--amica-port", Integer.toString(udpPortOf("BusRadioAmicaUdp")),
                     "--sunspot-port", Integer.toString(udpPortOf("BusRadioSunSpot")), "--sync-port",
-                    Integer.toString(syncPort()), "--flat", "flat-a", "--scenario", "demo-day", "--seed", "1",
-                    "--wander", "0", "--progress", "120");
+                    Integer.toString(syncPort()), syncKeyArgs()[0], syncKeyArgs()[1], "--flat", "flat-a", "--scenario",
+                    "demo-day", "--seed", "1", "--wander", "0", "--progress", "120");
             long wall = System.nanoTime();
             // 06:00-06:05: every node's keep-alives; then wait (wall time) until every device is connected to its
             // consumers, however loaded the machine: lock-step plays 45 virtual minutes in about a second

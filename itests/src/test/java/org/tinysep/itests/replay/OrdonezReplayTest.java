@@ -88,7 +88,8 @@ public class OrdonezReplayTest extends LockStepTestSupport {
             long dropsBefore = kernelDrops(radioPort);
             String[] args = {"--replay", SENSORS.toString(), "--mapping", "ordonez-a", "--lockstep", "--rate", RATE,
                     "--amica-port", Integer.toString(radioPort),
-                    "--sync-port", Integer.toString(syncPort()), "--progress", "1440"};
+                    "--sync-port", Integer.toString(syncPort()), syncKeyArgs()[0], syncKeyArgs()[1],
+                    "--progress", "1440"};
             ReplayResult result = executor.submit(() -> Run.replay(args)).get(10, TimeUnit.MINUTES);
             long dropped = kernelDrops(radioPort) - dropsBefore;
             System.out.printf("OrdonezReplayTest: datagrams the kernel dropped at the AmICA radio's full socket "

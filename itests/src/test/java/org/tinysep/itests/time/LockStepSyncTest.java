@@ -41,7 +41,8 @@ public class LockStepSyncTest extends TimeTestSupport {
         List<Instant> heard = new CopyOnWriteArrayList<>();
         try (Connection c = clock.connect((source, now) -> heard.add(now)); SyncPeer sync = new SyncPeer(syncPort())) {
             Instant start = clock.now();
-            assertEquals("WELCOME " + start + " EXTERNAL", sync.ask("HELLO"));
+            String welcome = sync.ask("HELLO");
+            assertTrue(welcome, welcome.matches("WELCOME " + start + " EXTERNAL [0-9a-f]{16}"));
             Thread.sleep(1100); // a real second passes: the held clock does not move (a check, not a timing)
             assertEquals(start, clock.now());
             assertEquals(List.of(), heard);
@@ -62,12 +63,19 @@ public class LockStepSyncTest extends TimeTestSupport {
             assertEquals(22, heard.size());
             assertTrue(sync.tick(t).startsWith("ERROR " + 23 + " backwards "));
             assertTrue(sync.ask("garbage").startsWith("ERROR - unknown-command "));
+            // a local user without the key (issue 10.3): refused, the clock does not move
+            assertTrue(sync.ask("TICK 99 " + jump.plusSeconds(60)).startsWith("ERROR 99 unauthorized "));
+            assertTrue(sync.ask("TICK 100 " + jump.plusSeconds(60) + " " + "ab".repeat(32))
+                    .startsWith("ERROR 100 unauthorized wrong HMAC"));
+            assertEquals(jump, clock.now());
+            assertEquals(22, heard.size());
             sync.tickDone(jump.plusSeconds(1));
             assertEquals(jump.plusSeconds(1), clock.now());
 
             Driver driver = awaitService(Driver.class, "(tinysep.driver.name=TimeController)", TIMEOUT);
             assertEquals("1", parameter(driver, "rejected.backwards"));
             assertEquals("1", parameter(driver, "rejected.unknown-command"));
+            assertEquals("2", parameter(driver, "rejected.unauthorized"));
             assertEquals("23", parameter(driver, "ticks"));
         }
     }

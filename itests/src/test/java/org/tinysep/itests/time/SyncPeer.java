@@ -7,10 +7,12 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.time.Instant;
+import org.tinysep.itests.TestSyncKey;
 
 /**
  * A minimal time synchroniser (docs/time-sync.md) on its own UDP socket of 127.0.0.1: sends one request and waits
- * for the answer (5 s at most), i.e. lock-step.
+ * for the answer (5 s at most), i.e. lock-step. TICKs are signed with the tests' key ({@link TestSyncKey}) for the
+ * session of the last WELCOME (a HELLO is sent first when there was none).
  */
 final class SyncPeer implements AutoCloseable {
 
@@ -18,6 +20,7 @@ final class SyncPeer implements AutoCloseable {
     private final InetSocketAddress platform;
     private final byte[] buffer = new byte[512];
     private long seq;
+    private String session;
 
     SyncPeer(int platformPort) throws IOException {
         socket = new DatagramSocket(0, InetAddress.getLoopbackAddress());
@@ -25,18 +28,31 @@ final class SyncPeer implements AutoCloseable {
         platform = new InetSocketAddress(InetAddress.getLoopbackAddress(), platformPort);
     }
 
-    /** Sends one datagram and returns the answer. */
+    /** Sends one datagram as it is and returns the answer; a WELCOME's session is kept for signing. */
     String ask(String request) throws IOException {
         byte[] b = request.getBytes(StandardCharsets.US_ASCII);
         socket.send(new DatagramPacket(b, b.length, platform));
         DatagramPacket in = new DatagramPacket(buffer, buffer.length);
         socket.receive(in);
-        return new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+        String answer = new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+        String[] w = answer.split(" ");
+        if (w[0].equals("WELCOME") && w.length == 4) {
+            session = w[3];
+        }
+        return answer;
     }
 
-    /** {@code TICK <next seq> <at>}; returns the answer ({@code DONE ...} or {@code ERROR ...}). */
+    /** Sends {@code request} signed with the tests' key; returns the answer. */
+    String askSigned(String request) throws IOException {
+        if (session == null) {
+            ask("HELLO");
+        }
+        return ask(TestSyncKey.signed(session, request));
+    }
+
+    /** {@code TICK <next seq> <at> <hmac>}; returns the answer ({@code DONE ...} or {@code ERROR ...}). */
     String tick(Instant at) throws IOException {
-        return ask("TICK " + (++seq) + " " + at);
+        return askSigned("TICK " + (++seq) + " " + at);
     }
 
     /** Sends {@code TICK <next seq> <at>} and checks the answer is {@code DONE <seq> <at>}. */

@@ -76,7 +76,7 @@ public class TimeModeSwitchTest extends TimeTestSupport {
             await(TIMEOUT, () -> clock.mode() == ClockMode.EXTERNAL, "EXTERNAL after the configuration update");
             Instant held = clock.now();
             int ticksAtSwitch = ticks.size();
-            assertTrue(sync.ask("HELLO").equals("WELCOME " + held + " EXTERNAL"));
+            assertTrue(sync.ask("HELLO").startsWith("WELCOME " + held + " EXTERNAL "));
             Instant future = held.plus(Duration.ofDays(3));
             sync.tickDone(future);
             assertEquals(future, clock.now());
@@ -140,7 +140,7 @@ public class TimeModeSwitchTest extends TimeTestSupport {
         await(TIMEOUT, () -> syncPort() == port, "the Driver service to publish port " + port + " (was " + old + ")");
         TimeControllerProvider clock = clock();
         try (SyncPeer sync = new SyncPeer(port)) {
-            assertEquals("WELCOME " + clock.now() + " EXTERNAL", sync.ask("HELLO"));
+            assertTrue(sync.ask("HELLO").startsWith("WELCOME " + clock.now() + " EXTERNAL "));
         }
     }
 

@@ -6,6 +6,7 @@ import org.osgi.framework.ServiceReference;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.TestSyncKey;
 import org.tinysep.itests.TinySepTestSupport;
 
 /** Time Controller tests: its link on a free port of 127.0.0.1, starting in {@link #initialMode()}. */
@@ -20,13 +21,13 @@ abstract class TimeTestSupport extends TinySepTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put(TIME_PID, Map.of("mode", initialMode(), "syncPort", "0", "syncBindAddress", "127.0.0.1"));
+        configs.put(TIME_PID, TestSyncKey.timeConfig(initialMode()));
         return configs;
     }
 
     /** @return the configuration as first written, with another mode */
     static Map<String, Object> config(String mode) {
-        return Map.of("mode", mode, "syncPort", "0", "syncBindAddress", "127.0.0.1");
+        return Map.copyOf(TestSyncKey.timeConfig(mode));
     }
 
     /** @return the synchroniser port: the TimeController Driver service property */

@@ -50,8 +50,8 @@ public final class Main {
         LocalDate day = o.date() != null ? o.date() : LocalDate.now(ZoneOffset.UTC);
         SyncClient sync = null;
         if (o.lockstep()) {
-            sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000);
-            Welcome w = sync.hello();
+            sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000, o.syncKeyBytes());
+            Welcome w = sync.hello(o.waitSeconds());
             System.out.println("platform time " + w.platformTime() + ", clock " + w.mode());
             if (!w.external()) {
                 sync.close();
@@ -81,6 +81,10 @@ public final class Main {
             long wall = System.nanoTime();
             if (sync != null) {
                 new LockStepDriver(sync, clock, o.paceMillis() * 1_000_000L).run(from, until, progress.wrap(sim::step));
+                if (o.releaseClock()) {
+                    sync.bye();
+                    System.out.println("BYE: the platform clock follows real time again");
+                }
                 sync.close();
             } else {
                 new RealTimeDriver(clock, o.speed()).run(from, until, progress.wrap(sim::step));

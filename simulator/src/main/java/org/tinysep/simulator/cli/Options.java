@@ -10,7 +10,7 @@ import java.util.TreeMap;
 record Options(String flat, String scenario, String target, int amicaPort, int sunSpotPort, int syncPort,
         double speed, boolean lockstep, long seed, int fromSecond, int untilSecond, LocalDate date,
         int progressMinutes, int paceMillis, int jitter, double wander, String replay, String mapping,
-        boolean fullRate) {
+        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds) {
 
     static final String USAGE = """
             usage: java -jar org.tinysep.simulator-<version>.jar [options]
@@ -21,6 +21,9 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
               --sunspot-port <n>           Sun SPOT UDP bus radio port (default 47012)
               --sync-port <n>              Time Controller synchroniser port (default 47020)
               --lockstep                   lock-step with the Time Controller (platform: tinysep:time external)
+              --sync-key <file>            lock-step: the platform's synchroniser key (<state folder>/sync.key)
+              --release-clock              lock-step: at the end, BYE returns the platform clock to REAL time
+              --wait-platform <seconds>    lock-step: keep asking a platform that does not answer yet (default 0)
               --speed <factor>             real-time mode: virtual seconds per wall second (default 1)
               --seed <n>                   random variations (default 1)
               --from <HH:MM> --until <HH:MM>  virtual day span (default 00:00 to 24:00)
@@ -42,10 +45,13 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
     static Options parse(String[] args) {
         Map<String, String> m = new TreeMap<>();
         boolean lockstep = false;
+        boolean release = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--lockstep")) {
                 lockstep = true;
+            } else if (a.equals("--release-clock")) {
+                release = true;
             } else if (a.startsWith("--") && i + 1 < args.length) {
                 m.put(a.substring(2), args[++i]);
             } else {
@@ -58,7 +64,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                 second(m, "until", "24:00"), m.containsKey("date") ? date(take(m, "date", null)) : null,
                 (int) number(m, "progress", "60"), (int) number(m, "pace-ms", "5"), (int) number(m, "jitter", "90"),
                 number(m, "wander", "0.002"), take(m, "replay", null), take(m, "mapping", null),
-                rate(take(m, "rate", "full")));
+                rate(take(m, "rate", "full")), take(m, "sync-key", null), release,
+                (int) number(m, "wait-platform", "0"));
         if (!m.isEmpty()) {
             throw new IllegalArgumentException("unknown option(s) " + m.keySet());
         }
@@ -69,6 +76,19 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
             throw new IllegalArgumentException("--until must be after --from");
         }
         return o;
+    }
+
+    /** @return the synchroniser key of {@code --sync-key}, or null without the option */
+    byte[] syncKeyBytes() throws java.io.IOException {
+        if (syncKey == null) {
+            return null;
+        }
+        try {
+            return org.tinysep.simulator.time.SyncClient.readKey(java.nio.file.Path.of(syncKey));
+        } catch (java.io.IOException e) {
+            throw new java.io.IOException("--sync-key " + syncKey + ": cannot read the platform's synchroniser key ("
+                    + e + ")", e);
+        }
     }
 
     private static boolean rate(String v) {

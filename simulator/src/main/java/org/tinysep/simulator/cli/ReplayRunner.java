@@ -36,8 +36,8 @@ final class ReplayRunner {
         Instant notBefore = Instant.now();
         try {
             if (o.lockstep()) {
-                sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000);
-                Welcome w = sync.hello();
+                sync = new SyncClient(new InetSocketAddress(host, o.syncPort()), 2000, o.syncKeyBytes());
+                Welcome w = sync.hello(o.waitSeconds());
                 if (!w.external()) {
                     throw new IllegalStateException("the platform clock is " + w.mode()
                             + ": switch it with 'tinysep:time external' in the platform shell, then start again");
@@ -50,7 +50,11 @@ final class ReplayRunner {
                     + " events, " + plan.start() + " .. " + plan.end() + ") -> AmICA " + target.amica() + ", rate "
                     + (o.fullRate() ? "full" : "changes") + ", recorded day " + plan.start().toLocalDate()
                     + " = virtual " + firstDay);
-            return play(o, replay, target, sync);
+            ReplayResult result = play(o, replay, target, sync);
+            if (sync != null && o.releaseClock()) {
+                sync.bye();
+            }
+            return result;
         } finally {
             if (sync != null) {
                 sync.close();

@@ -6,12 +6,20 @@ import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.GeneralSecurityException;
 import java.time.Instant;
+import java.util.HexFormat;
+import javax.crypto.Mac;
+import javax.crypto.spec.SecretKeySpec;
 
 /**
- * The synchroniser side of docs/time-sync.md: {@code HELLO} -> {@code WELCOME}, {@code TICK <seq> <instant>} ->
- * {@code DONE <seq> <instant>}. A lost answer is retried with the same sequence number and instant (the platform
- * answers a retransmission without firing again).
+ * The synchroniser side of docs/time-sync.md: {@code HELLO} -> {@code WELCOME <instant> <mode> <session>},
+ * {@code TICK <seq> <instant> <hmac>} -> {@code DONE <seq> <instant>}, {@code BYE <seq> <hmac>} -> {@code DONE}. The
+ * HMAC-SHA256 (hex) of {@code "<session> TICK <seq> <instant>"} is made with the platform's key file
+ * ({@code --sync-key}). A lost answer is retried with the same sequence number and instant (the platform answers a
+ * retransmission without firing again).
  */
 public final class SyncClient implements AutoCloseable {
 
@@ -21,28 +29,97 @@ public final class SyncClient implements AutoCloseable {
     private final DatagramSocket socket;
     private final InetSocketAddress platform;
     private final byte[] buffer = new byte[512];
+    private final byte[] key;
+    private String session = "";
     private long seq;
 
+    /** A client without the key: the platform refuses its TICKs (only fakes in tests accept them). */
     public SyncClient(InetSocketAddress platform, int timeoutMillis) throws IOException {
+        this(platform, timeoutMillis, null);
+    }
+
+    /** @param key the platform's synchroniser key ({@link #readKey}), or null */
+    public SyncClient(InetSocketAddress platform, int timeoutMillis, byte[] key) throws IOException {
         this.platform = platform;
+        this.key = key == null ? null : key.clone();
         this.socket = new DatagramSocket(platform.getAddress().isLoopbackAddress()
                 ? new InetSocketAddress(platform.getAddress(), 0) : new InetSocketAddress(0));
         socket.setSoTimeout(timeoutMillis);
     }
 
+    /**
+     * {@link #hello()}, asked again for up to {@code waitSeconds} while the platform does not answer or its clock is
+     * still REAL (a platform that is starting and has not yet read its configuration).
+     */
+    public Welcome hello(int waitSeconds) throws IOException {
+        long deadline = System.nanoTime() + waitSeconds * 1_000_000_000L;
+        while (true) {
+            try {
+                Welcome w = hello();
+                if (w.external() || System.nanoTime() >= deadline) {
+                    return w;
+                }
+                java.util.concurrent.locks.LockSupport.parkNanos(500_000_000L);
+            } catch (NoAnswer e) {
+                if (System.nanoTime() >= deadline) {
+                    throw e;
+                }
+            }
+        }
+    }
+
+    /** No answer after every try. */
+    static final class NoAnswer extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        NoAnswer(String message) {
+            super(message);
+        }
+    }
+
     public Welcome hello() throws IOException {
         String answer = ask("HELLO", "WELCOME ");
         String[] w = answer.split(" ");
-        if (w.length != 3) {
+        if (w.length != 3 && w.length != 4) {
             throw new IOException("unexpected answer to HELLO: '" + answer + "'");
         }
+        session = w.length == 4 ? w[3] : "";
         return new Welcome(Instant.parse(w[1]), w[2]);
     }
 
     /** Sends one TICK and returns when the platform answered DONE; throws with the platform's ERROR text. */
     public void tick(Instant at) throws IOException {
         seq++;
-        ask("TICK " + seq + " " + at, "DONE " + seq + " ");
+        ask(signed("TICK " + seq + " " + at), "DONE " + seq + " ");
+    }
+
+    /** Tells the platform the synchronisation has finished: its clock returns to REAL time. */
+    public void bye() throws IOException {
+        seq++;
+        ask(signed("BYE " + seq), "DONE " + seq + " ");
+    }
+
+    /** The key as the platform reads it: the file's text without surrounding white space, US-ASCII. */
+    public static byte[] readKey(Path file) throws IOException {
+        String text = Files.readString(file, StandardCharsets.US_ASCII).strip();
+        if (text.isEmpty()) {
+            throw new IOException("the synchroniser key file " + file + " is empty");
+        }
+        return text.getBytes(StandardCharsets.US_ASCII);
+    }
+
+    private String signed(String request) {
+        if (key == null) {
+            return request;
+        }
+        try {
+            Mac mac = Mac.getInstance("HmacSHA256");
+            mac.init(new SecretKeySpec(key, "HmacSHA256"));
+            byte[] digest = mac.doFinal((session + " " + request).getBytes(StandardCharsets.US_ASCII));
+            return request + " " + HexFormat.of().formatHex(digest);
+        } catch (GeneralSecurityException e) {
+            throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
+        }
     }
 
     private String ask(String request, String expected) throws IOException {
@@ -58,7 +135,9 @@ public final class SyncClient implements AutoCloseable {
                         return answer;
                     }
                     if (answer.startsWith("ERROR " + seq + " ") || answer.startsWith("ERROR - ")) {
-                        throw new IOException("the platform refused '" + request + "': " + answer);
+                        throw new IOException("the platform refused '" + request + "': " + answer
+                                + (answer.contains(" unauthorized ") ? " (give --sync-key <the platform's state "
+                                + "folder>/sync.key, shown by tinysep:time)" : ""));
                     }
                     // a late answer to an earlier request: skip it
                 }
@@ -66,7 +145,7 @@ public final class SyncClient implements AutoCloseable {
                 // retry
             }
         }
-        throw new IOException("no answer to '" + request + "' from the Time Controller at " + platform + " after "
+        throw new NoAnswer("no answer to '" + request + "' from the Time Controller at " + platform + " after "
                 + TRIES + " tries (is the platform running, with its time synchroniser on this port?)");
     }
 

@@ -21,6 +21,8 @@ import java.util.concurrent.TimeUnit;
  */
 public final class FakeSynchroniserPeer implements AutoCloseable {
 
+    /** The session value this fake announces in WELCOME (the real platform's is random). */
+    public static final String SESSION = "5e55105e55105e55";
     private final DatagramSocket socket;
     private final ExecutorService executor = Executors.newSingleThreadExecutor();
     private final String mode;
@@ -54,8 +56,10 @@ public final class FakeSynchroniserPeer implements AutoCloseable {
                 requests.add(req);
                 String[] w = req.split(" ");
                 String answer;
-                if (w[0].equals("HELLO")) {
-                    answer = "WELCOME " + now + " " + mode;
+                if (w[0].equals("BYE")) {
+                    answer = "DONE " + w[1] + " " + now;
+                } else if (w[0].equals("HELLO")) {
+                    answer = "WELCOME " + now + " " + mode + " " + SESSION;
                 } else if (req.equals(last)) {
                     answer = "DONE " + w[1] + " " + w[2];
                 } else if (Instant.parse(w[2]).isBefore(now)) {

@@ -24,6 +24,27 @@ class LockStepTest {
     }
 
     @Test
+    void ticksAndByeAreSignedWithTheKeyForTheSessionOfWelcome(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path keyFile = dir.resolve("sync.key");
+        java.nio.file.Files.writeString(keyFile, "a-known-test-key-0123456789\n");
+        byte[] key = SyncClient.readKey(keyFile);
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL");
+                SyncClient c = new SyncClient(peer.address(), 2000, key)) {
+            c.hello();
+            c.tick(Instant.parse("2026-11-23T08:00:00Z"));
+            c.bye();
+            javax.crypto.Mac mac = javax.crypto.Mac.getInstance("HmacSHA256");
+            mac.init(new javax.crypto.spec.SecretKeySpec("a-known-test-key-0123456789".getBytes(), "HmacSHA256"));
+            String tick = "TICK 1 2026-11-23T08:00:00Z";
+            String expected = java.util.HexFormat.of().formatHex(
+                    mac.doFinal((FakeSynchroniserPeer.SESSION + " " + tick).getBytes()));
+            assertEquals(List.of("HELLO", tick + " " + expected, "BYE 2 " + java.util.HexFormat.of().formatHex(
+                    mac.doFinal((FakeSynchroniserPeer.SESSION + " BYE 2").getBytes()))), peer.requests);
+        }
+    }
+
+    @Test
     void theDriverTicksEverySecondInOrderAfterItsFrames() throws Exception {
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
             assertTrue(c.hello().external());
@@ -62,6 +83,17 @@ class LockStepTest {
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
             IOException e = assertThrows(IOException.class, () -> c.tick(Instant.parse("2020-01-01T00:00:00Z")));
             assertTrue(e.getMessage().contains("backwards"), e.getMessage());
+        }
+    }
+
+    @Test
+    void helloWaitsForAPlatformThatIsStillStarting() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("REAL"); SyncClient c = new SyncClient(peer.address(), 300)) {
+            assertFalse(c.hello(0).external(), "no wait: the first answer");
+            long start = System.nanoTime();
+            assertFalse(c.hello(1).external(), "still REAL after the wait: the caller reports it");
+            assertTrue(System.nanoTime() - start >= 1_000_000_000L, "asked again for the whole second");
+            assertTrue(peer.requests.size() >= 3, "asked again: " + peer.requests);
         }
     }
 

@@ -3,6 +3,7 @@ package org.tinysep.timecontroller.internal;
 import java.time.Instant;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerListener;
@@ -21,11 +22,30 @@ final class ClockService implements TimeControllerProvider, SyncProtocol.Target 
     private final SyncClock clock;
     private final Listeners<TimeControllerListener> listeners;
     private final Object fireLock = new Object();
+    private final LongSupplier nanos;
+    /** {@link #nanos} when the synchroniser last moved the clock, or the clock last switched to EXTERNAL. */
+    private volatile long lastSync;
 
     ClockService(String deviceUid, SyncClock clock) {
+        this(deviceUid, clock, System::nanoTime);
+    }
+
+    /** @param nanos a monotonic clock in nanoseconds (a test's hand-moved one) for {@link #silentFor} */
+    ClockService(String deviceUid, SyncClock clock, LongSupplier nanos) {
         this.deviceUid = deviceUid;
         this.clock = clock;
         this.listeners = new Listeners<>(deviceUid);
+        this.nanos = nanos;
+        this.lastSync = nanos.getAsLong();
+    }
+
+    /**
+     * @return true when the clock is EXTERNAL and neither a TICK nor the switch to EXTERNAL happened for at least
+     *         {@code seconds} (&gt; 0): the synchroniser has finished or gone
+     */
+    boolean silentFor(long seconds) {
+        return seconds > 0 && clock.mode() == ClockMode.EXTERNAL
+                && nanos.getAsLong() - lastSync >= seconds * 1_000_000_000L;
     }
 
     /** One tick of real time: fires {@code timeAdvanced(now)} while in REAL mode, nothing otherwise. */
@@ -42,6 +62,9 @@ final class ClockService implements TimeControllerProvider, SyncProtocol.Target 
     public SyncClock.TickResult tick(long seq, Instant at) {
         synchronized (fireLock) {
             SyncClock.TickResult r = clock.tick(seq, at);
+            if (r.outcome() == SyncClock.Outcome.ADVANCED || r.outcome() == SyncClock.Outcome.REPEATED) {
+                lastSync = nanos.getAsLong();
+            }
             if (r.outcome() == SyncClock.Outcome.ADVANCED) {
                 listeners.fire(l -> l.timeAdvanced(this, r.now()));
             }
@@ -58,6 +81,9 @@ final class ClockService implements TimeControllerProvider, SyncProtocol.Target 
     Optional<Instant> switchTo(ClockMode mode, Consumer<Instant> before) {
         synchronized (fireLock) {
             Optional<Instant> at = clock.switchTo(mode);
+            if (mode == ClockMode.EXTERNAL) {
+                lastSync = nanos.getAsLong();
+            }
             at.ifPresent(t -> {
                 before.accept(t);
                 listeners.fire(l -> l.modeChanged(this, mode, t));

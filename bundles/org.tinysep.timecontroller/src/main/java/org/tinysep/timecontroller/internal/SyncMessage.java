@@ -9,8 +9,9 @@ import org.tinysep.api.service.ClockMode;
 
 /**
  * The time synchroniser wire format (docs/time-sync.md): one ASCII line per UDP datagram, tokens separated by
- * spaces. Requests: {@code HELLO}, {@code TICK <seq> <instant>}. Answers: {@code WELCOME <instant> <mode>},
- * {@code DONE <seq> <instant>}, {@code ERROR <seq|-> <code> <text>}. Pure parsing and formatting.
+ * spaces. Requests: {@code HELLO}, {@code TICK <seq> <instant> <hmac>}, {@code BYE <seq> <hmac>}. Answers:
+ * {@code WELCOME <instant> <mode> <session>}, {@code DONE <seq> <instant>}, {@code ERROR <seq|-> <code> <text>}.
+ * Pure parsing and formatting; the HMAC is checked by {@link SyncAuth}.
  */
 sealed interface SyncMessage {
 
@@ -21,8 +22,24 @@ sealed interface SyncMessage {
     record Hello() implements SyncMessage {
     }
 
-    /** {@code TICK <seq> <instant>}: set the clock to {@code at}, run every listener, answer {@code DONE}. */
-    record Tick(long seq, Instant at) implements SyncMessage {
+    /** A request that must carry an HMAC: {@code signed} is its text without the HMAC, {@code mac} null if absent. */
+    sealed interface Signed extends SyncMessage {
+        long seq();
+
+        String signed();
+
+        String mac();
+    }
+
+    /**
+     * {@code TICK <seq> <instant> <hmac>}: set the clock to {@code at}, run every listener, answer {@code DONE}.
+     * {@code signed} is {@code TICK <seq> <instant>} with the tokens as sent.
+     */
+    record Tick(long seq, Instant at, String signed, String mac) implements Signed {
+    }
+
+    /** {@code BYE <seq> <hmac>}: the synchroniser has finished; the clock returns to REAL. */
+    record Bye(long seq, String signed, String mac) implements Signed {
     }
 
     /** A datagram that is not a valid request; {@code seq} is {@code -} when it could not be read. */
@@ -80,18 +97,37 @@ sealed interface SyncMessage {
                     throw new Invalid("-", "malformed", "HELLO takes no arguments");
                 }
                 return new Hello();
-            case "TICK":
-                String seq = t.length > 1 && t[1].matches("\\d{1,18}") ? t[1] : "-";
-                if (t.length != 3) {
-                    throw new Invalid(seq, "malformed", "expected TICK <seq> <ISO-8601 instant>");
+            case "TICK": {
+                String seq = seq(t);
+                if (t.length != 3 && t.length != 4) {
+                    throw new Invalid(seq, "malformed", "expected TICK <seq> <ISO-8601 instant> <hmac>");
                 }
-                if ("-".equals(seq)) {
-                    throw new Invalid(seq, "malformed", "sequence number '" + t[1] + "' is not 0..18 decimal digits");
+                checkSeq(seq, t[1]);
+                return new Tick(Long.parseLong(seq), instant(seq, t[2]), "TICK " + t[1] + " " + t[2],
+                        t.length == 4 ? t[3] : null);
+            }
+            case "BYE": {
+                String seq = seq(t);
+                if (t.length != 2 && t.length != 3) {
+                    throw new Invalid(seq, "malformed", "expected BYE <seq> <hmac>");
                 }
-                return new Tick(Long.parseLong(seq), instant(seq, t[2]));
+                checkSeq(seq, t[1]);
+                return new Bye(Long.parseLong(seq), "BYE " + t[1], t.length == 3 ? t[2] : null);
+            }
             default:
                 throw new Invalid("-", "unknown-command", "unknown command '" + abbreviate(t[0])
-                        + "'; expected HELLO or TICK");
+                        + "'; expected HELLO, TICK or BYE");
+        }
+    }
+
+    private static String seq(String[] t) {
+        return t.length > 1 && t[1].matches("\\d{1,18}") ? t[1] : "-";
+    }
+
+    private static void checkSeq(String seq, String token) throws Invalid {
+        if ("-".equals(seq)) {
+            throw new Invalid(seq, "malformed", "sequence number '" + abbreviate(token)
+                    + "' is not 0..18 decimal digits");
         }
     }
 
@@ -112,8 +148,8 @@ sealed interface SyncMessage {
         return s.length() <= 40 ? s : s.substring(0, 40) + "...";
     }
 
-    static String welcome(Instant now, ClockMode mode) {
-        return "WELCOME " + now + " " + mode;
+    static String welcome(Instant now, ClockMode mode, String session) {
+        return "WELCOME " + now + " " + mode + " " + session;
     }
 
     static String done(long seq, Instant at) {

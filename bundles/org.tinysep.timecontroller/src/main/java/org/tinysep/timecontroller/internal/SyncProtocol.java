@@ -15,8 +15,9 @@ import org.tinysep.api.service.ClockMode;
 import org.tinysep.device.support.DriverContext;
 
 /**
- * The platform side of the synchroniser protocol: one datagram in, one answer out. Rejections are counted per
- * code; the first of each code goes to the event log, every rejected datagram to the packet log.
+ * The platform side of the synchroniser protocol: one datagram in, one answer out. TICK and BYE must be signed
+ * ({@link SyncAuth}). Rejections are counted per code; the first of each code goes to the event log (a PROBLEM),
+ * every rejected datagram to the packet log.
  */
 final class SyncProtocol implements SyncLink.Handler {
 
@@ -30,17 +31,23 @@ final class SyncProtocol implements SyncLink.Handler {
         SyncClock.TickResult tick(long seq, Instant at);
     }
 
-    static final List<String> CODES = List.of("malformed", "unknown-command", "too-long", "backwards", "not-external");
+    static final List<String> CODES = List.of("malformed", "unknown-command", "too-long", "backwards", "not-external",
+            "unauthorized", "replayed");
 
     private final DriverContext context;
     private final Target target;
+    private final SyncAuth auth;
+    private final Runnable bye;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong ticks = new AtomicLong();
     private final Map<String, AtomicLong> rejected = new LinkedHashMap<>();
 
-    SyncProtocol(DriverContext context, Target target) {
+    /** @param bye what an authenticated {@code BYE} does: the clock returns to REAL time */
+    SyncProtocol(DriverContext context, Target target, SyncAuth auth, Runnable bye) {
         this.context = context;
         this.target = target;
+        this.auth = auth;
+        this.bye = bye;
         CODES.forEach(c -> rejected.put(c, new AtomicLong()));
     }
 
@@ -53,10 +60,24 @@ final class SyncProtocol implements SyncLink.Handler {
         } catch (SyncMessage.Invalid e) {
             return reject(e.code(), e.answer(), Arrays.copyOf(data, Math.min(length, data.length)), from);
         }
+        if (message instanceof SyncMessage.Signed signed) {
+            SyncAuth.Refusal refusal = auth.check(signed, signed instanceof SyncMessage.Tick t ? t.at() : null,
+                    from);
+            if (refusal != null) {
+                return reject(refusal.code(), SyncMessage.error(Long.toString(signed.seq()), refusal.code(),
+                        refusal.text()), Arrays.copyOf(data, length), from);
+            }
+        }
+        if (message instanceof SyncMessage.Bye b) {
+            auth.accepted(from, b.seq(), null);
+            bye.run();
+            return SyncMessage.done(b.seq(), target.now());
+        }
         if (message instanceof SyncMessage.Tick tick) {
             SyncClock.TickResult r = target.tick(tick.seq(), tick.at());
             return switch (r.outcome()) {
                 case ADVANCED, REPEATED -> {
+                    auth.accepted(from, tick.seq(), tick.at());
                     ticks.incrementAndGet();
                     yield SyncMessage.done(tick.seq(), r.now());
                 }
@@ -67,7 +88,7 @@ final class SyncProtocol implements SyncLink.Handler {
                         Arrays.copyOf(data, length), from);
             };
         }
-        return SyncMessage.welcome(target.now(), target.mode());
+        return SyncMessage.welcome(target.now(), target.mode(), auth.hello(from));
     }
 
     private String reject(String code, String answer, byte[] datagram, InetSocketAddress from) {

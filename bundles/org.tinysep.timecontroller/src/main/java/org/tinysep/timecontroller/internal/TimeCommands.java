@@ -17,7 +17,8 @@ public final class TimeCommands {
     public String time() {
         ClockService clock = driver.clock();
         return "now        " + clock.now() + "\nmode       " + clock.mode() + "\nsync port  " + driver.syncPort()
-                + " (" + driver.linkState() + ")";
+                + " (" + driver.linkState() + ")\nsync key   " + driver.keyFile()
+                + " (the synchroniser signs its TICKs with it: docs/time-sync.md)";
     }
 
     /** {@code time real|external}: switches, then shows the state. */

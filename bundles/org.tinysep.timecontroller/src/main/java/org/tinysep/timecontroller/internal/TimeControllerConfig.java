@@ -21,4 +21,12 @@ public @interface TimeControllerConfig {
     @AttributeDefinition(description = "Local address the synchroniser link binds to; 0.0.0.0 listens on every "
             + "interface")
     String syncBindAddress() default "127.0.0.1";
+
+    @AttributeDefinition(description = "File with the synchroniser's shared secret (TICK and BYE carry an HMAC made "
+            + "with it). Empty: ${tinysep.var}/sync.key. A missing file is created with a random key, mode 0600.")
+    String syncKeyFile() default "";
+
+    @AttributeDefinition(description = "Seconds EXTERNAL time may go without a TICK before the clock returns to "
+            + "REAL (the synchroniser has finished or gone); 0 never returns", min = "0")
+    long syncTimeout() default 120;
 }

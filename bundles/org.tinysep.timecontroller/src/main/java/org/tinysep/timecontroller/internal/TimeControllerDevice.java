@@ -25,6 +25,7 @@ final class TimeControllerDevice extends AbstractDevice {
     private final Consumer<ClockMode> modeRequests;
     private final ScheduledExecutorService realTicks;
     private volatile String link = "";
+    private volatile long syncTimeout;
 
     /** @param modeRequests handles a user's request to switch (parameter {@code mode}): switches and persists */
     TimeControllerDevice(DriverContext context, SyncClock clock, Consumer<ClockMode> modeRequests) {
@@ -38,7 +39,7 @@ final class TimeControllerDevice extends AbstractDevice {
     @Override
     protected void onRegistered() {
         long toNextSecond = 1000 - System.currentTimeMillis() % 1000;
-        realTicks.scheduleAtFixedRate(clock::realTick, toNextSecond, 1000, TimeUnit.MILLISECONDS);
+        realTicks.scheduleAtFixedRate(this::second, toNextSecond, 1000, TimeUnit.MILLISECONDS);
         status(DeviceStatus.State.ONLINE, clock.mode() + " time");
     }
 
@@ -46,11 +47,27 @@ final class TimeControllerDevice extends AbstractDevice {
         return clock;
     }
 
+    /** @param seconds how long EXTERNAL may go without a TICK before the clock returns to REAL; 0: forever */
+    void syncTimeout(long seconds) {
+        syncTimeout = seconds;
+    }
+
+    /** Every real second: the real-time tick, and the end of EXTERNAL time when the synchroniser has gone silent. */
+    private void second() {
+        clock.realTick();
+        long timeout = syncTimeout;
+        if (clock.silentFor(timeout)) {
+            switchTo(ClockMode.REAL, "no TICK from the time synchroniser for " + timeout + " s (syncTimeout): it "
+                    + "has finished or gone, so the platform follows the system clock again");
+        }
+    }
+
     /** Switches the clock; a switch is logged and announced to the listeners. */
     boolean switchTo(ClockMode mode, String why) {
         return clock.switchTo(mode, at -> {
             event("clock switched to " + mode + " (" + why + "), now " + at
-                    + (mode == ClockMode.EXTERNAL ? "; held until the synchroniser's first TICK" : ""));
+                    + (mode == ClockMode.EXTERNAL ? "; held until the synchroniser's first TICK" + (syncTimeout > 0
+                            ? ", back to REAL after " + syncTimeout + " s without one" : "") : ""));
             status(DeviceStatus.State.ONLINE, mode + " time");
         }).isPresent();
     }

@@ -1,6 +1,7 @@
 package org.tinysep.timecontroller.internal;
 
 import java.io.IOException;
+import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Dictionary;
@@ -25,6 +26,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.StateFolder;
 
 /**
  * Time Controller driver (thesis 4.4.3.4): creates its single device at once, opens the synchroniser link and
@@ -51,6 +53,7 @@ public final class TimeControllerDriver extends AbstractDriver {
     private volatile SyncProtocol protocol;
     private volatile SyncLink link;
     private volatile String linkState = "";
+    private volatile Path keyFile;
     private ServiceRegistration<TimeCommands> commands;
 
     public TimeControllerDriver() {
@@ -74,7 +77,9 @@ public final class TimeControllerDriver extends AbstractDriver {
         ClockMode mode = configuredMode(config, ClockMode.REAL);
         device = addDevice(new TimeControllerDevice(context(), new SyncClock(Instant::now, mode), this::request));
         device.link(linkState);
-        protocol = new SyncProtocol(context(), device.clock());
+        device.syncTimeout(config.syncTimeout());
+        protocol = new SyncProtocol(context(), device.clock(), auth(config), () -> device.switchTo(ClockMode.REAL,
+                "the time synchroniser said BYE: it has finished, so the platform follows the system clock again"));
         if (link != null) {
             link.start(protocol);
             LOG.info("{} in {} mode; time synchroniser link {}", NAME, mode, linkState);
@@ -90,14 +95,16 @@ public final class TimeControllerDriver extends AbstractDriver {
 
     @Modified
     synchronized void modified(TimeControllerConfig next) {
-        if (next.syncPort() != config.syncPort() || !next.syncBindAddress().equals(config.syncBindAddress())) {
-            LOG.info("{}: synchroniser link moves to {}:{}; the device is re-created", NAME, next.syncBindAddress(),
-                    next.syncPort());
+        if (next.syncPort() != config.syncPort() || !next.syncBindAddress().equals(config.syncBindAddress())
+                || !next.syncKeyFile().equals(config.syncKeyFile())) {
+            LOG.info("{}: synchroniser link moves to {}:{} (key {}); the device is re-created", NAME,
+                    next.syncBindAddress(), next.syncPort(), next.syncKeyFile());
             deactivate();
             activate(bundleContext, next);
             return;
         }
         config = next;
+        device.syncTimeout(next.syncTimeout());
         device.switchTo(configuredMode(next, device.clock().mode()), "configuration " + PID);
     }
 
@@ -108,6 +115,25 @@ public final class TimeControllerDriver extends AbstractDriver {
             link.close();
         }
         stop();
+    }
+
+    /** The synchroniser key: loaded, or created at first use; without one every TICK is refused (a PROBLEM). */
+    private SyncAuth auth(TimeControllerConfig c) {
+        keyFile = StateFolder.resolveOrDataArea(c.syncKeyFile(), bundleContext, "sync.key");
+        if (keyFile == null) {
+            context().event(EventKind.PROBLEM, "no folder for the time synchroniser key (set syncKeyFile): every "
+                    + "TICK is refused");
+            return new SyncAuth(null, "no key file");
+        }
+        try {
+            byte[] key = SyncKey.loadOrCreate(keyFile);
+            SyncKey.exposure(keyFile).ifPresent(w -> context().event(EventKind.PROBLEM, w));
+            return new SyncAuth(key, null);
+        } catch (IOException | RuntimeException e) {
+            String why = "cannot read or create " + keyFile + ": " + e.getMessage();
+            context().event(EventKind.PROBLEM, "time synchroniser key: " + why + "; every TICK is refused");
+            return new SyncAuth(null, why);
+        }
     }
 
     private ClockMode configuredMode(TimeControllerConfig c, ClockMode fallback) {
@@ -152,6 +178,12 @@ public final class TimeControllerDriver extends AbstractDriver {
 
     String linkState() {
         return linkState;
+    }
+
+    /** @return the synchroniser key file, or {@code -} */
+    String keyFile() {
+        Path k = keyFile;
+        return k == null ? "-" : k.toString();
     }
 
     @Override

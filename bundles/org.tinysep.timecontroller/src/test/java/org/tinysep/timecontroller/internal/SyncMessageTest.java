@@ -23,19 +23,24 @@ class SyncMessageTest {
     @Test
     void parsesTheDocumentedRequests() throws Exception {
         assertInstanceOf(SyncMessage.Hello.class, parse("HELLO"));
-        assertEquals(new SyncMessage.Tick(1, Instant.parse("2026-11-22T10:00:00Z")),
-                parse("TICK 1 2026-11-22T10:00:00Z"));
-        assertEquals(new SyncMessage.Tick(42, Instant.parse("2026-11-22T09:00:01.250Z")),
-                parse("tick  42\t2026-11-22T10:00:01.25+01:00\r\n"), "case, white space, offset and line end");
-        assertEquals(new SyncMessage.Tick(999999999999999999L, Instant.parse("2026-11-22T10:00:00Z")),
-                parse("TICK 999999999999999999 2026-11-22T10:00:00Z"));
+        assertEquals(new SyncMessage.Tick(1, Instant.parse("2026-11-22T10:00:00Z"), "TICK 1 2026-11-22T10:00:00Z",
+                "ab12"), parse("TICK 1 2026-11-22T10:00:00Z ab12"));
+        assertEquals(new SyncMessage.Tick(42, Instant.parse("2026-11-22T09:00:01.250Z"),
+                "TICK 42 2026-11-22T10:00:01.25+01:00", "CD"),
+                parse("tick  42\t2026-11-22T10:00:01.25+01:00 CD\r\n"), "case, white space, offset and line end");
+        assertEquals(new SyncMessage.Tick(999999999999999999L, Instant.parse("2026-11-22T10:00:00Z"),
+                "TICK 999999999999999999 2026-11-22T10:00:00Z", null),
+                parse("TICK 999999999999999999 2026-11-22T10:00:00Z"), "no HMAC: parsed, refused by SyncAuth");
+        assertEquals(new SyncMessage.Bye(3, "BYE 3", "ef"), parse("bye 3 ef"));
+        assertEquals(new SyncMessage.Bye(4, "BYE 4", null), parse("BYE 4"));
     }
 
     @Test
     void formatsTheDocumentedAnswers() {
         Instant t = Instant.parse("2026-11-22T10:00:01Z");
         assertEquals("DONE 7 2026-11-22T10:00:01Z", SyncMessage.done(7, t));
-        assertEquals("WELCOME 2026-11-22T10:00:01Z EXTERNAL", SyncMessage.welcome(t, ClockMode.EXTERNAL));
+        assertEquals("WELCOME 2026-11-22T10:00:01Z EXTERNAL 0011223344556677",
+                SyncMessage.welcome(t, ClockMode.EXTERNAL, "0011223344556677"));
         assertEquals("ERROR 7 backwards text", SyncMessage.error("7", "backwards", "text"));
     }
 
@@ -49,7 +54,10 @@ class SyncMessageTest {
         "TICK x 2026-11-22T10:00:00Z             | -  | malformed",
         "TICK -1 2026-11-22T10:00:00Z            | -  | malformed",
         "TICK 1234567890123456789 2026-11-22T10:00:00Z | - | malformed",
-        "TICK 5 2026-11-22T10:00:00Z extra       | 5  | malformed",
+        "TICK 5 2026-11-22T10:00:00Z mac extra   | 5  | malformed",
+        "BYE                                     | -  | malformed",
+        "BYE x                                   | -  | malformed",
+        "BYE 5 mac extra                         | 5  | malformed",
         "TICK 5 yesterday                        | 5  | malformed",
         "TICK 5 2026-11-22 10:00:00              | 5  | malformed",
         "TICK 5 2026-13-22T10:00:00Z             | 5  | malformed",
