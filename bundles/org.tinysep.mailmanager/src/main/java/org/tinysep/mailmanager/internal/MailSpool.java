@@ -44,7 +44,7 @@ final class MailSpool {
         p.setProperty("subject", m.subject());
         p.setProperty("body", m.body());
         Path tmp = dir.resolve(m.id() + SUFFIX + ".tmp");
-        try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
+        try (Writer w = Files.newBufferedWriter(org.tinysep.device.support.AtomicFiles.createPrivateFile(tmp), StandardCharsets.UTF_8)) {
             p.store(w, "TinySEP mail spool");
         }
         try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
