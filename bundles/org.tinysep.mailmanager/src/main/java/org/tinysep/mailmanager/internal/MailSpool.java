@@ -37,7 +37,7 @@ final class MailSpool {
 
     /** Writes one message durably. */
     void write(MailMessage m) throws IOException {
-        Files.createDirectories(dir);
+        org.tinysep.device.support.AtomicFiles.createPrivateDirectories(dir);
         Properties p = new Properties();
         p.setProperty("id", Long.toString(m.id()));
         p.setProperty("queuedAt", m.queuedAt().toString());

@@ -51,7 +51,8 @@ final class OwnedConfig {
      */
     static boolean keptOnRestore(String fileName, String key) {
         return secret(key) || (fileName.equals(TIME_CONTROLLER) && key.equals("mode")) || key.equals("file")
-                || key.equals("folder") || key.endsWith("File") || key.endsWith("Folder") || key.endsWith("Path");
+                || key.equals("folder") || key.endsWith("File") || key.endsWith("Folder") || key.endsWith("Path")
+                || key.endsWith("Dir") || key.endsWith("Directory");
     }
 
     /** @return {@code cfg} without its secret keys (what {@code tinysep:backup} puts into an archive) */
