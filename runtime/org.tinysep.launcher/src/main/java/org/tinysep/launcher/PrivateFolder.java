@@ -28,8 +28,13 @@ final class PrivateFolder {
      *         file systems without POSIX modes)
      */
     static Optional<String> tighten(Path dir) throws IOException {
+        boolean existed = Files.isDirectory(dir);
         Files.createDirectories(dir);
         if (!Files.getFileStore(dir).supportsFileAttributeView("posix")) {
+            return Optional.empty();
+        }
+        if (!existed) { // new: made private before anything is in it, nothing to warn about
+            Files.setPosixFilePermissions(dir, EnumSet.copyOf(PRIVATE));
             return Optional.empty();
         }
         Set<PosixFilePermission> before = Files.getPosixFilePermissions(dir);

@@ -56,6 +56,10 @@ class LauncherTest {
         Files.setPosixFilePermissions(var, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-x---"));
         String warning = PrivateFolder.tighten(var).orElseThrow();
         assertTrue(warning.contains("could be read by other users") && warning.contains("rwxr-x---"), warning);
+        Path fresh = home.resolve("fresh/var");
+        assertEquals(java.util.Optional.empty(), PrivateFolder.tighten(fresh), "a new folder: no warning");
+        assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(fresh)));
     }
 
     @Test
