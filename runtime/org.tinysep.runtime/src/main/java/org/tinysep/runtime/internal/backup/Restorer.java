@@ -3,9 +3,6 @@ package org.tinysep.runtime.internal.backup;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Instant;
-import java.time.ZoneOffset;
-import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -36,9 +33,8 @@ final class Restorer {
         void startApplications(List<String> problems);
     }
 
-    static final int COPIES_KEPT = 5;
-    private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd'T'HHmmss.SSS'Z'")
-            .withZone(ZoneOffset.UTC);
+    /** One restore at a time (two shell sessions share the staging folder and the applications). */
+    private static final Object RUNNING = new Object();
 
     private final StateFiles files;
     private final BackupCodec codec;
@@ -59,12 +55,18 @@ final class Restorer {
 
     /** Brings back the state the last restore (or undo) replaced. */
     String undo() throws IOException {
-        Path copy = newestCopy().orElseThrow(() -> new IllegalStateException(
+        Path copy = new UndoCopies(files).newest().orElseThrow(() -> new IllegalStateException(
                 "nothing to undo: no restore has kept a copy in " + files.undoFolder()));
         return run(copy, false, true);
     }
 
     private String run(Path archive, boolean force, boolean undo) throws IOException {
+        synchronized (RUNNING) {
+            return runAlone(archive, force, undo);
+        }
+    }
+
+    private String runAlone(Path archive, boolean force, boolean undo) throws IOException {
         Path staging = files.var().resolve("restore.staging");
         deleteTree(staging);
         try {
@@ -91,7 +93,7 @@ final class Restorer {
             if (!problems.isEmpty()) {
                 throw refused(archive, problems);
             }
-            Path copy = keepCopy();
+            Path copy = new UndoCopies(files).keep();
             String result;
             try {
                 result = replace(staging, staged.names(), undo, notes);
@@ -152,38 +154,6 @@ final class Restorer {
                 // left for the next restore, which deletes it first
             }
         }
-    }
-
-    /** Writes the complete current state, signed, to {@code before-restore/}; keeps the newest {@value #COPIES_KEPT}. */
-    private Path keepCopy() throws IOException {
-        Path copy = files.undoFolder().resolve("previous-" + STAMP.format(Instant.now()) + ".zip");
-        try {
-            BackupArchive.write(copy, files.collect(false, true), ArchiveSignature.loadOrCreate(files.keyFile()));
-        } catch (IOException e) {
-            throw new IllegalStateException("cannot keep a copy of the current state in " + copy + " (" + e.getMessage()
-                    + "); nothing changed");
-        }
-        try (Stream<Path> list = Files.list(files.undoFolder())) {
-            List<Path> copies = list.filter(Restorer::isCopy).sorted(Comparator.reverseOrder()).toList();
-            for (Path p : copies.subList(Math.min(COPIES_KEPT, copies.size()), copies.size())) {
-                AtomicFiles.delete(p);
-            }
-        }
-        return copy;
-    }
-
-    private Optional<Path> newestCopy() throws IOException {
-        if (!Files.isDirectory(files.undoFolder())) {
-            return Optional.empty();
-        }
-        try (Stream<Path> list = Files.list(files.undoFolder())) {
-            return list.filter(Restorer::isCopy).max(Comparator.naturalOrder());
-        }
-    }
-
-    private static boolean isCopy(Path p) {
-        String n = p.getFileName().toString();
-        return n.startsWith("previous-") && n.endsWith(".zip");
     }
 
     private static IllegalArgumentException refused(Path archive, List<String> problems) {
