@@ -14,9 +14,10 @@ import org.tinysep.device.support.AtomicFiles;
 /**
  * {@code tinysep:restore} without OSGi (docs/backup.md § Restore): all or nothing. The archive is streamed into a
  * staging folder within the limits, its signature checked and every file validated; any problem refuses it and
- * nothing changes. Then a complete copy of the current state is kept ({@code before-restore/previous-<time>.zip},
- * signed), the applications are stopped, the backup folder swapped and the other files replaced atomically, and
- * the applications started again. {@link #undo} restores the newest copy the same way.
+ * nothing changes. Then the applications are stopped, a complete copy of the current state is kept
+ * ({@code before-restore/previous-<time>.zip}, signed), the backup folder swapped and the other files replaced
+ * atomically (on a failure the copy is put back), and the applications started again. {@link #undo} restores the
+ * newest copy the same way.
  */
 final class Restorer {
 
@@ -93,16 +94,25 @@ final class Restorer {
             if (!problems.isEmpty()) {
                 throw refused(archive, problems);
             }
-            Path copy = new UndoCopies(files).keep();
-            String result;
+            List<String> trouble = new ArrayList<>();
+            int apps = platform.stopApplications(trouble);
+            Path copy;
             try {
-                result = replace(staging, staged.names(), undo, notes);
-            } catch (IOException | RuntimeException e) {
-                throw new IllegalStateException("the restore failed while replacing files (" + e.getMessage() + "); "
-                        + putBack(copy), e);
+                platform.flushStore(); // the devices' last states are in the copy too
+                copy = new UndoCopies(files).keep();
+                try {
+                    swapAndApply(staging, staged.names(), undo, notes);
+                } catch (IOException | RuntimeException e) {
+                    throw new IllegalStateException("the restore failed while replacing files (" + e.getMessage()
+                            + "); " + putBack(copy), e);
+                }
+            } finally {
+                platform.startApplications(trouble);
             }
             return (undo ? "undone: brought back " : "restored ") + staged.names().size() + " files from " + archive
-                    + "; " + result + "; the state before is kept in " + files.var().relativize(copy)
+                    + "; restarted " + apps + " application bundles"
+                    + (trouble.isEmpty() ? "" : "; problems: " + String.join("; ", trouble))
+                    + "; the state before is kept in " + files.var().relativize(copy)
                     + " (tinysep:restore --undo brings it back)"
                     + (notes.isEmpty() ? "" : "\n" + String.join("\n", notes));
         } finally {
@@ -110,31 +120,24 @@ final class Restorer {
         }
     }
 
-    private String replace(Path staging, List<String> names, boolean exact, List<String> notes) throws IOException {
-        List<String> problems = new ArrayList<>();
-        int apps = platform.stopApplications(problems);
-        try {
-            platform.flushStore();
-            Path root = files.backupRoot();
-            Path stagedRoot = staging.resolve("backup");
-            AtomicFiles.createPrivateDirectories(stagedRoot);
-            Path old = root.resolveSibling(root.getFileName() + ".replaced");
-            deleteTree(old);
-            if (Files.exists(root)) {
-                AtomicFiles.move(root, old);
-            }
-            AtomicFiles.move(stagedRoot, root);
-            if (Files.isDirectory(old.resolve(BackupLayout.DAMAGED))) {
-                AtomicFiles.move(old.resolve(BackupLayout.DAMAGED), root.resolve(BackupLayout.DAMAGED));
-            }
-            deleteTree(old); // its files are in the copy kept
-            platform.reloadStore();
-            notes.addAll(files.apply(staging, names, exact));
-        } finally {
-            platform.startApplications(problems);
+    /** Swaps the staged backup folder in, has the store read it, and writes the other staged files. */
+    private void swapAndApply(Path staging, List<String> names, boolean exact, List<String> notes)
+            throws IOException {
+        Path root = files.backupRoot();
+        Path stagedRoot = staging.resolve("backup");
+        AtomicFiles.createPrivateDirectories(stagedRoot);
+        Path old = root.resolveSibling(root.getFileName() + ".replaced");
+        deleteTree(old);
+        if (Files.exists(root)) {
+            AtomicFiles.move(root, old);
         }
-        return "restarted " + apps + " application bundles"
-                + (problems.isEmpty() ? "" : "; problems: " + String.join("; ", problems));
+        AtomicFiles.move(stagedRoot, root);
+        if (Files.isDirectory(old.resolve(BackupLayout.DAMAGED))) {
+            AtomicFiles.move(old.resolve(BackupLayout.DAMAGED), root.resolve(BackupLayout.DAMAGED));
+        }
+        deleteTree(old); // its files are in the copy kept
+        platform.reloadStore();
+        notes.addAll(files.apply(staging, names, exact));
     }
 
     /** After a failed replace: the copy kept before goes back in place; @return what happened, in words */
@@ -143,7 +146,7 @@ final class Restorer {
         try {
             deleteTree(staging);
             ArchiveUnpacker.Unpacked staged = ArchiveUnpacker.unpack(copy, staging, limits, null);
-            replace(staging, staged.names(), true, new ArrayList<>());
+            swapAndApply(staging, staged.names(), true, new ArrayList<>());
             return "the previous state was put back";
         } catch (IOException | RuntimeException e) {
             return "putting the previous state back failed too (" + e.getMessage() + "): run tinysep:restore --undo";
