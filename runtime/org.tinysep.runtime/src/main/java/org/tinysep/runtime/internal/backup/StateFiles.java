@@ -105,15 +105,15 @@ final class StateFiles {
             }
             byte[] bytes = Files.readAllBytes(staged.resolve(name));
             if (VAR_FILES.contains(name)) {
-                AtomicFiles.write(var.resolve(name), bytes);
+                writeIfChanged(var.resolve(name), bytes);
             } else if (name.startsWith("etc/") && etc != null) {
                 Path target = etc.resolve(name.substring(4));
                 OwnedConfig.Merged m = OwnedConfig.forRestore(target.getFileName().toString(), bytes,
                         Files.isRegularFile(target) ? Files.readAllBytes(target) : null);
-                AtomicFiles.write(target, m.content());
+                writeIfChanged(target, m.content());
                 notes.addAll(m.notes());
             } else if (name.startsWith("secrets/")) {
-                AtomicFiles.write(secrets().resolve(name.substring(8)), bytes);
+                writeIfChanged(secrets().resolve(name.substring(8)), bytes);
             }
         }
         if (exact) {
@@ -134,6 +134,13 @@ final class StateFiles {
             }
         }
         return notes;
+    }
+
+    /** Files already as wanted are not touched (FileInstall sees no change; a put-back writes only what moved). */
+    private static void writeIfChanged(Path target, byte[] bytes) throws IOException {
+        if (!Files.isRegularFile(target) || !java.util.Arrays.equals(Files.readAllBytes(target), bytes)) {
+            AtomicFiles.write(target, bytes);
+        }
     }
 
     private List<Path> ownedCfgs() throws IOException {

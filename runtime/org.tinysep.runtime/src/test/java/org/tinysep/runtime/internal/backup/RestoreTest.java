@@ -281,6 +281,25 @@ class RestoreTest {
     }
 
     @Test
+    void aFailureWhileReplacingPutsThePreviousStateBack() throws Exception {
+        Path zip = signedWith(Map.of("house.xml", HOUSE.replace("Bathroom", "Bath"),
+                "etc/org.tinysep.inactivity.cfg", "limitMinutes=30\n"));
+        // the cfg cannot be written: a folder (not empty) stands where the file goes
+        Files.createDirectories(etc.resolve("org.tinysep.inactivity.cfg/in-the-way"));
+        store.save(BackupStoreServiceTest.device("u-2", "New", "r-2", Instant.parse("2026-11-23T10:00:00Z")));
+        assertTrue(store.flush(java.time.Duration.ofSeconds(5)));
+        Map<String, byte[]> before = snapshot();
+        IllegalStateException e = assertThrows(IllegalStateException.class, () -> restorer().restore(zip, false));
+        assertTrue(e.getMessage().startsWith("the restore failed while replacing files (")
+                && e.getMessage().endsWith("the previous state was put back"), e.getMessage());
+        Map<String, byte[]> after = snapshot();
+        assertEquals(before.keySet(), after.keySet());
+        before.forEach((k, v) -> assertArrayEquals(v, after.get(k), k));
+        assertEquals("New", store.find("u-2").orElseThrow().name(), "the store reads the folder put back");
+        assertEquals(List.of("stop", "flush", "reload", "reload", "start"), calls);
+    }
+
+    @Test
     void aRestoreNeverChangesTheTimeControllersModeAndSaysSo() throws Exception {
         Path zip = signedWith(Map.of("etc/org.tinysep.timecontroller.cfg", "mode=EXTERNAL\nsyncPort=47200\n"));
         String out = restorer().restore(zip, false);
