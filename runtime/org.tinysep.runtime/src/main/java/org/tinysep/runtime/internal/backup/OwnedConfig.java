@@ -39,9 +39,10 @@ final class OwnedConfig {
                 && pid.length() > f.length() + 1);
     }
 
-    /** A key no backup holds: secrets. */
+    /** A key no backup holds: any whose name contains {@code password} or {@code secret} (any case). */
     static boolean secret(String key) {
-        return key.equalsIgnoreCase("password");
+        String k = key.toLowerCase(java.util.Locale.ROOT);
+        return k.contains("password") || k.contains("secret");
     }
 
     /**

@@ -24,7 +24,8 @@ class OwnedConfigTest {
 
     @Test
     void passwordsAreLeftOutOfBackupsWhateverTheirSpelling() {
-        String cfg = "# mail\nhost=127.0.0.1\npassword = very\\\n    long\\\\\nPassword:x\nuser=anna\\\n  b\n";
+        String cfg = "# mail\nhost=127.0.0.1\npassword = very\\\n    long\\\\\nPassword:x\nuser=anna\\\n  b\n"
+                + "syncSecret=abc\npasswordFile=/x\n";
         assertEquals("# mail\nhost=127.0.0.1\nuser=anna\\\n  b\n", text(OwnedConfig.forBackup(bytes(cfg))));
     }
 
