@@ -123,6 +123,14 @@ public class CraftedArchiveTest {
             assertTrue(rooms, rooms.contains("Attic") && !rooms.contains("Pantry"));
             assertTrue("house as before the restore",
                     java.util.Arrays.equals(beforeRestore, Files.readAllBytes(var.resolve("house.xml"))));
+
+            // an unsigned archive: refused, saying why; restored with --force after every other check
+            Map<String, byte[]> unsigned = new LinkedHashMap<>(archive);
+            unsigned.remove("tinysep-signature.txt");
+            Path plain = write(home.resolve("unsigned.zip"), unsigned);
+            refused(p, plain, "the archive is not signed");
+            expect(p, "tinysep:restore --force " + plain, "restored although the archive is not signed");
+            expect(p, "tinysep:rooms", "Pantry");
             assertEquals(0, p.stop(Duration.ofSeconds(60)));
         }
     }
