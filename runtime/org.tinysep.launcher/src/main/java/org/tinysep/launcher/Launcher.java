@@ -70,7 +70,7 @@ public final class Launcher {
         int level = BundleLayout.maxStartLevel(groups);
         Files.createDirectories(home.resolve("deploy"));
         Files.createDirectories(home.resolve("etc"));
-        Files.createDirectories(options.var());
+        PrivateFolder.tighten(options.var()).ifPresent(LOG::warn); // state folder rwx------ (docs/backup.md)
         LOG.info("Starting TinySEP from {}, state in {} ({} bundle groups, {})", home, options.var(), groups.size(),
                 options.daemon() ? "daemon" : "interactive");
 

@@ -43,6 +43,25 @@ class LauncherTest {
         }
     }
 
+    /** Issue 10 item 6: the state folder holds alert texts and settings; the launcher makes it private. */
+    @Test
+    void theStateFolderIsMadePrivateToItsOwnerAtStart() throws Exception {
+        Path var = Files.createDirectories(home.resolve("var"));
+        Files.setPosixFilePermissions(var, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-xr-x"));
+        launcher = new Launcher(new Options(true, home, false));
+        launcher.start();
+        assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(var)));
+        assertEquals(java.util.Optional.empty(), PrivateFolder.tighten(var), "no warning once private");
+        Files.setPosixFilePermissions(var, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-x---"));
+        String warning = PrivateFolder.tighten(var).orElseThrow();
+        assertTrue(warning.contains("could be read by other users") && warning.contains("rwxr-x---"), warning);
+        Path fresh = home.resolve("fresh/var");
+        assertEquals(java.util.Optional.empty(), PrivateFolder.tighten(fresh), "a new folder: no warning");
+        assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(fresh)));
+    }
+
     @Test
     void daemonInstallsByGroupAndReportsTheBrokenBundle() throws Exception {
         launcher = new Launcher(new Options(true, home, false));

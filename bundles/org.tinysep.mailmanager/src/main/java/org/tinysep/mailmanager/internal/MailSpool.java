@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
-import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
@@ -40,7 +39,7 @@ final class MailSpool {
 
     /** Writes one message durably. */
     void write(MailMessage m) throws IOException {
-        createOwnerOnly(dir);
+        AtomicFiles.createPrivateDirectories(dir);
         Properties p = new Properties();
         p.setProperty("id", Long.toString(m.id()));
         p.setProperty("queuedAt", m.queuedAt().toString());
@@ -56,8 +55,7 @@ final class MailSpool {
             p.setProperty("firstFailure", m.firstFailure().toString());
         }
         Path tmp = dir.resolve(m.id() + SUFFIX + ".tmp");
-        try (Writer w = Files.newBufferedWriter(tmp, StandardCharsets.UTF_8)) {
-            ownerOnly(tmp); // alert texts: readable by the platform's user only (issue 10, item 6)
+        try (Writer w = Files.newBufferedWriter(AtomicFiles.createPrivateFile(tmp), StandardCharsets.UTF_8)) {
             p.store(w, "TinySEP mail spool");
         }
         try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
@@ -153,7 +151,7 @@ final class MailSpool {
             Files.deleteIfExists(f);
             return;
         }
-        createOwnerOnly(dir);
+        AtomicFiles.createPrivateDirectories(dir);
         AtomicFiles.write(f, notice.getBytes(StandardCharsets.UTF_8)); // its temporary file is owner-only
     }
 
@@ -182,24 +180,6 @@ final class MailSpool {
             Files.deleteIfExists(f);
         } catch (IOException e) {
             problems.accept("cannot delete left-over " + f + ": " + e.getMessage());
-        }
-    }
-
-    /** Creates a folder (and its parents) if missing; a folder created here is owner-only on POSIX. */
-    private static void createOwnerOnly(Path folder) throws IOException {
-        if (!Files.isDirectory(folder)) {
-            Files.createDirectories(folder);
-            ownerOnly(folder);
-        }
-    }
-
-    /** rw------- (rwx------ for a folder) on POSIX file systems; elsewhere nothing. */
-    private static void ownerOnly(Path p) throws IOException {
-        try {
-            Files.setPosixFilePermissions(p, PosixFilePermissions.fromString(Files.isDirectory(p) ? "rwx------"
-                    : "rw-------"));
-        } catch (UnsupportedOperationException e) {
-            // not POSIX (Windows): the folder's ACL applies
         }
     }
 

@@ -7,7 +7,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileAttribute;
+import java.nio.file.attribute.PosixFilePermission;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Instant;
+import java.util.Set;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
 
@@ -15,6 +19,10 @@ import java.time.format.DateTimeFormatter;
  * Crash-safe file replacement, shared by everything that keeps state on disk (House Information, the backup
  * store, the drivers list): a temp file in the same folder is written and forced to disk, atomically renamed over the target, and
  * the folder is synced, so after a crash the target holds either the old or the new content, never a mix.
+ * <p>
+ * State is private (docs/backup.md): on POSIX file systems the files it writes are {@code rw-------} (the temp file
+ * is created so and keeps its mode through the rename) and the folders it creates {@code rwx------}; the logs and
+ * the mail spool create their files with {@link #createPrivateFile}.
  */
 public final class AtomicFiles {
 
@@ -22,6 +30,43 @@ public final class AtomicFiles {
             .withZone(ZoneOffset.UTC);
 
     private AtomicFiles() {
+    }
+
+    /** POSIX mode of the state files TinySEP writes: only the owner may read them. */
+    public static final Set<PosixFilePermission> PRIVATE_FILE = PosixFilePermissions.fromString("rw-------");
+    /** POSIX mode of the state folders TinySEP creates. */
+    public static final Set<PosixFilePermission> PRIVATE_FOLDER = PosixFilePermissions.fromString("rwx------");
+
+    /** Creates {@code dir} and its missing parents as {@code rwx------} (on POSIX); existing folders are left alone. */
+    public static Path createPrivateDirectories(Path dir) throws IOException {
+        Path abs = dir.toAbsolutePath();
+        if (Files.isDirectory(abs)) {
+            return abs;
+        }
+        if (abs.getParent() != null) {
+            createPrivateDirectories(abs.getParent());
+        }
+        try {
+            return Files.createDirectories(abs, posix() ? new FileAttribute<?>[] {
+                PosixFilePermissions.asFileAttribute(PRIVATE_FOLDER)} : new FileAttribute<?>[0]);
+        } catch (java.nio.file.FileAlreadyExistsException raced) {
+            return abs;
+        }
+    }
+
+    /** Creates {@code file} empty as {@code rw-------} (on POSIX) unless it exists; @return the file */
+    public static Path createPrivateFile(Path file) throws IOException {
+        createPrivateDirectories(file.toAbsolutePath().getParent());
+        try {
+            return Files.createFile(file, posix() ? new FileAttribute<?>[] {
+                PosixFilePermissions.asFileAttribute(PRIVATE_FILE)} : new FileAttribute<?>[0]);
+        } catch (java.nio.file.FileAlreadyExistsException exists) {
+            return file;
+        }
+    }
+
+    private static boolean posix() {
+        return java.nio.file.FileSystems.getDefault().supportedFileAttributeViews().contains("posix");
     }
 
     /** Writes {@code bytes} to {@code target} atomically (creating its folder). */
@@ -35,7 +80,7 @@ public final class AtomicFiles {
      */
     public static void write(Path target, byte[] bytes, Runnable beforeRename) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
-        Files.createDirectories(dir);
+        createPrivateDirectories(dir);
         Path tmp = Files.createTempFile(dir, target.getFileName() + ".", ".tmp");
         try {
             try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE,
@@ -56,7 +101,7 @@ public final class AtomicFiles {
 
     /** Moves {@code from} to {@code to} atomically (same file system) and syncs both folders. */
     public static void move(Path from, Path to) throws IOException {
-        Files.createDirectories(to.toAbsolutePath().getParent());
+        createPrivateDirectories(to.toAbsolutePath().getParent());
         Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         syncDirectory(to.toAbsolutePath().getParent());
         syncDirectory(from.toAbsolutePath().getParent());

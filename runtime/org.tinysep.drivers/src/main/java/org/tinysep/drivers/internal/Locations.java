@@ -7,7 +7,8 @@ import java.util.regex.Pattern;
 
 /**
  * Maps a drivers-list {@code FILE_PATH} to a bundle location and back: a path is relative to {@code tinysep.home}
- * (or absolute), anything with a URL scheme ({@code file:}, {@code http:}, …) is used as it is.
+ * (or absolute), a URL is used as it is — only {@code file:} and {@code https:} URLs are installed
+ * ({@link #refusal}): a plain {@code http:} download can be changed on its way, other schemes are not checked.
  */
 final class Locations {
 
@@ -18,6 +19,16 @@ final class Locations {
     /** @param home {@code tinysep.home}, or null (paths are then relative to the working directory) */
     Locations(Path home) {
         this.home = (home == null ? Path.of("") : home).toAbsolutePath().normalize();
+    }
+
+    /** @return why {@code filePath} is not installed (a URL that is neither file: nor https:), or empty */
+    Optional<String> refusal(String filePath) {
+        if (!URL.matcher(filePath).matches()) {
+            return Optional.empty();
+        }
+        String scheme = filePath.substring(0, filePath.indexOf(':')).toLowerCase(java.util.Locale.ROOT);
+        return scheme.equals("file") || scheme.equals("https") ? Optional.empty()
+                : Optional.of(scheme + ": URLs are not installed, only file: and https: (docs/runtime-changes.md)");
     }
 
     /** @return the bundle location (URL) for {@code filePath} */

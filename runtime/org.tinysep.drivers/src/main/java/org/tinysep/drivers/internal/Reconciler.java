@@ -75,6 +75,11 @@ final class Reconciler {
         if (id >= 0) {
             return e.withStatus("");
         }
+        Optional<String> refused = locations.refusal(e.location());
+        if (refused.isPresent()) {
+            changes.add("cannot install " + e.key() + ": " + refused.get());
+            return e.withStatus(Status.failed(refused.get()));
+        }
         Optional<Path> file = locations.file(e.location());
         if (file.isPresent() && !Files.isRegularFile(file.get())) {
             changes.add("missing " + e.key() + ": no file " + file.get());

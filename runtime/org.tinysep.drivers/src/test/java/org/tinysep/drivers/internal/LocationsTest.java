@@ -25,7 +25,8 @@ class LocationsTest {
     void pathsAreRelativeToHomeAndUrlsStayAsTheyAre() {
         assertEquals("file:///opt/tinysep/bundles/5-apps/a.jar", locations.url("bundles/5-apps/a.jar"));
         assertEquals("file:///srv/b.jar", locations.url("/srv/b.jar"));
-        assertEquals("mvn:org.x/y/1.0", locations.url("mvn:org.x/y/1.0"));
+        assertEquals("https://example.org/y.jar", locations.url("https://example.org/y.jar"));
+        assertTrue(locations.refusal("mvn:org.x/y/1.0").isPresent(), "only file: and https: are installed");
         assertEquals(Path.of("/srv/b.jar"), locations.file("file:/srv/b.jar").orElseThrow());
         assertTrue(locations.file("http://example.org/c.jar").isEmpty());
     }

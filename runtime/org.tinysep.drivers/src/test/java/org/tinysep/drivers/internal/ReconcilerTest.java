@@ -87,6 +87,22 @@ class ReconcilerTest {
         assertEquals(Status.ACTIVE, r.entries().get(2).status(), "one bad entry never stops the others");
     }
 
+    /** Issue 10 item 4: a drivers-list URL is installed only when it is file: or https:. */
+    @Test
+    void anHttpOrOtherUrlIsNotInstalled() {
+        Reconciler.Result r = reconciler.apply(List.of(new DriverEntry("http://example.org/evil.jar", "", true, ""),
+                new DriverEntry("mvn:org.x/y/1.0", "", true, ""), entry("a", true)));
+        assertEquals("FAILED: http: URLs are not installed, only file: and https: (docs/runtime-changes.md)",
+                r.entries().get(0).status());
+        assertTrue(r.entries().get(1).status().startsWith("FAILED: mvn: URLs are not installed"));
+        assertTrue(fw.calls.stream().noneMatch(c -> c.contains("example.org") || c.contains("mvn:")), fw.calls.toString());
+        assertEquals(Status.ACTIVE, r.entries().get(2).status());
+        Locations l = new Locations(home);
+        assertTrue(l.refusal("https://example.org/a.jar").isEmpty());
+        assertTrue(l.refusal("file:/srv/a.jar").isEmpty());
+        assertTrue(l.refusal("apps/a.jar").isEmpty());
+    }
+
     @Test
     void aShellUninstallIsReportedOnceAndOwnUninstallsNot() {
         List<DriverEntry> first = reconciler.apply(List.of(entry("a", true), entry("b", true))).entries();

@@ -37,7 +37,7 @@ final class LogFileWriter<E> implements AutoCloseable {
         this.codec = codec;
         this.settings = settings;
         this.clock = clock;
-        Files.createDirectories(folder.folder());
+        org.tinysep.device.support.AtomicFiles.createPrivateDirectories(folder.folder());
         List<Path> files = folder.files();
         if (!files.isEmpty()) {
             Path last = files.get(files.size() - 1);
@@ -106,7 +106,7 @@ final class LogFileWriter<E> implements AutoCloseable {
     }
 
     private void open(Path path) throws IOException {
-        file = new FileOutputStream(path.toFile(), true);
+        file = new FileOutputStream(org.tinysep.device.support.AtomicFiles.createPrivateFile(path).toFile(), true);
         out = new BufferedOutputStream(file, 64 * 1024);
         current = path;
         size = Files.size(path);

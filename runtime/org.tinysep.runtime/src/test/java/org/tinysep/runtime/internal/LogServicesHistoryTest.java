@@ -59,6 +59,23 @@ class LogServicesHistoryTest {
         second.persist(null);
     }
 
+    /** Issue 10 item 6: the event log holds alert texts; its folder and files are private to the owner. */
+    @Test
+    void logFilesAndTheirFolderArePrivateToTheOwner() throws IOException {
+        Path folder = dir.resolve("var/log"); // not the test's own temp folder, which is private already
+        EventLogService log = new EventLogService(clock);
+        log.configure(() -> 10);
+        log.persist(LogSettings.in(folder));
+        log.start(() -> 10, Runnable::run, e -> { });
+        log.record(EventKind.PROBLEM, "Inactivity", "no activity in Bathroom since 14:01");
+        log.persist(null);
+        Path file = new LogFolder(folder, "events").files().get(0);
+        assertEquals("rw-------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(file)), file.toString());
+        assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(file.getParent())), file.getParent().toString());
+    }
+
     @Test
     void damagedLinesFoundOnStartAreReportedInTheEventLog() throws IOException {
         EventLogService first = events(10);

@@ -1,20 +1,18 @@
 package org.tinysep.runtime.internal.backup;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
-import java.util.stream.Stream;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -22,15 +20,13 @@ import org.osgi.service.component.annotations.Reference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Driver;
-import org.tinysep.device.support.AtomicFiles;
 import org.tinysep.device.support.StateFolder;
 
 /**
- * {@code tinysep:backup [file]} writes the whole configuration as one zip archive; {@code tinysep:restore <file>}
- * validates an archive completely, then stops the application bundles that run drivers (transiently), replaces
- * the backup folder (the old one is kept as {@code backup.before-restore-<timestamp>}), writes house.xml,
- * drivers.xml and etc/*.cfg, reloads the store and starts those bundles again, which re-create their devices from
- * the restored backups (docs/backup.md).
+ * {@code tinysep:backup [--with-secrets] [file]} writes the configuration as one signed zip archive;
+ * {@code tinysep:restore [--force] <file>} validates an archive completely and replaces the state with it, keeping a
+ * copy of what it replaces; {@code tinysep:restore --undo} brings that copy back ({@link Restorer},
+ * docs/backup.md).
  */
 @Component(service = BackupCommands.class, property = {
     "osgi.command.scope=tinysep",
@@ -39,6 +35,9 @@ import org.tinysep.device.support.StateFolder;
 })
 public final class BackupCommands {
 
+    static final String WITH_SECRETS = "--with-secrets";
+    static final String FORCE = "--force";
+    static final String UNDO = "--undo";
     private static final Logger LOG = LoggerFactory.getLogger(BackupCommands.class);
     private static final DateTimeFormatter STAMP = DateTimeFormatter.ofPattern("yyyyMMdd'T'HHmmss'Z'")
             .withZone(ZoneOffset.UTC);
@@ -56,91 +55,108 @@ public final class BackupCommands {
 
     /** {@code backup}: the archive goes to the state folder as {@code tinysep-backup-<UTC time>.zip}. */
     public String backup() {
-        return backup(var().resolve("tinysep-backup-" + STAMP.format(Instant.now()) + ".zip").toString());
+        return write(null, false);
     }
 
-    /** {@code backup <file>}: writes the archive to that file (replacing it atomically). */
-    public String backup(String file) {
-        Path target = Path.of(file).toAbsolutePath();
-        if (!store.flush(java.time.Duration.ofSeconds(10))) {
+    /** {@code backup <file>} or {@code backup --with-secrets}. */
+    public String backup(String fileOrFlag) {
+        return WITH_SECRETS.equals(fileOrFlag) ? write(null, true) : write(option(fileOrFlag), false);
+    }
+
+    /** {@code backup --with-secrets <file>}. */
+    public String backup(String flag, String file) {
+        if (!WITH_SECRETS.equals(flag)) {
+            throw new IllegalArgumentException("usage: tinysep:backup [--with-secrets] [file]");
+        }
+        return write(option(file), true);
+    }
+
+    /** {@code restore <file>}, or {@code restore --undo}. */
+    public String restore(String fileOrFlag) throws IOException {
+        if (UNDO.equals(fileOrFlag)) {
+            String out = restorer().undo();
+            LOG.info("{}", out);
+            return out;
+        }
+        return restore(option(fileOrFlag), false);
+    }
+
+    /** {@code restore --force <file>}: also an unsigned or foreign archive (still fully validated). */
+    public String restore(String flag, String file) throws IOException {
+        if (!FORCE.equals(flag)) {
+            throw new IllegalArgumentException("usage: tinysep:restore [--force] <file> | tinysep:restore --undo");
+        }
+        return restore(option(file), true);
+    }
+
+    private String restore(String file, boolean force) throws IOException {
+        String out = restorer().restore(Path.of(file).toAbsolutePath(), force);
+        LOG.info("{}", out);
+        return out;
+    }
+
+    private String write(String file, boolean withSecrets) {
+        StateFiles files = files();
+        Path target = file == null ? files.var().resolve("tinysep-backup-" + STAMP.format(Instant.now()) + ".zip")
+                : Path.of(file).toAbsolutePath();
+        if (!store.flush(Duration.ofSeconds(10))) {
             throw new IllegalStateException("the backup store did not finish writing within 10 s; try again");
         }
         try {
-            int n = BackupArchive.write(target, store.root(), var(), etc());
-            return "wrote " + n + " files to " + target;
+            int n = BackupArchive.write(target, files.collect(true, withSecrets),
+                    ArchiveSignature.loadOrCreate(files.keyFile()));
+            return "wrote " + n + " files to " + target + (withSecrets ? " (with the secrets folder: keep it safe)"
+                    : " (signed; passwords and the secrets folder left out)");
         } catch (IOException e) {
             throw new IllegalStateException("cannot write " + target + ": " + e.getMessage());
         }
     }
 
-    /** {@code restore <file>}: validates, then imports and re-applies the archive. */
-    public String restore(String file) {
-        Path archive = Path.of(file).toAbsolutePath();
-        Map<String, byte[]> content = BackupArchive.read(archive, codec); // throws before anything changes
-        List<Bundle> apps = driverBundles();
-        List<String> problems = new ArrayList<>();
-        for (Bundle b : apps) {
-            try {
-                b.stop(Bundle.STOP_TRANSIENT);
-            } catch (Exception e) {
-                problems.add("stop " + b.getSymbolicName() + ": " + e.getMessage());
-            }
+    private static String option(String file) {
+        if (file.startsWith("--")) {
+            throw new IllegalArgumentException("unknown option " + file
+                    + "; usage: tinysep:backup [--with-secrets] [file], tinysep:restore [--force] <file> | --undo");
         }
-        String kept;
-        try {
-            store.flush(java.time.Duration.ofSeconds(10));
-            kept = replaceFolder(content);
-            store.reload();
-            for (Map.Entry<String, byte[]> e : content.entrySet()) {
-                if (e.getKey().equals("house.xml") || e.getKey().equals("drivers.xml")) {
-                    AtomicFiles.write(var().resolve(e.getKey()), e.getValue());
-                } else if (e.getKey().startsWith("etc/") && etc() != null) {
-                    AtomicFiles.write(etc().resolve(e.getKey().substring(4)), e.getValue());
-                }
-            }
-        } catch (IOException e) {
-            problems.add("import: " + e.getMessage());
-            kept = "?";
-        } finally {
-            for (Bundle b : apps) {
-                try {
-                    b.start(Bundle.START_TRANSIENT);
-                } catch (Exception e) {
-                    problems.add("start " + b.getSymbolicName() + ": " + e.getMessage());
-                }
-            }
-        }
-        LOG.info("Restored {} ({} files); previous backup folder kept as {}", archive, content.size(), kept);
-        return "restored " + content.size() + " files from " + archive + "; restarted " + apps.size()
-                + " application bundles; previous backup folder kept as " + kept
-                + (problems.isEmpty() ? "" : "; problems: " + String.join("; ", problems));
+        return file;
     }
 
-    private String replaceFolder(Map<String, byte[]> content) throws IOException {
-        Path root = store.root();
-        Path staging = root.resolveSibling(root.getFileName() + ".restoring");
-        deleteTree(staging);
-        for (Map.Entry<String, byte[]> e : content.entrySet()) {
-            if (e.getKey().startsWith("backup/")) {
-                AtomicFiles.write(staging.resolve(e.getKey().substring("backup/".length())), e.getValue());
-            }
-        }
-        Path old = root.resolveSibling(root.getFileName() + ".before-restore-" + STAMP.format(Instant.now()));
-        if (Files.exists(root)) {
-            AtomicFiles.move(root, old);
-        }
-        AtomicFiles.move(staging, root);
-        return old.getFileName().toString();
-    }
+    private Restorer restorer() {
+        return new Restorer(files(), codec, store.limits(), new Restorer.Platform() {
+            private final List<Bundle> apps = driverBundles();
 
-    private static void deleteTree(Path dir) throws IOException {
-        if (Files.exists(dir)) {
-            try (Stream<Path> walk = Files.walk(dir)) {
-                for (Path p : walk.sorted(Comparator.reverseOrder()).toList()) {
-                    Files.delete(p);
+            @Override
+            public int stopApplications(List<String> problems) {
+                for (Bundle b : apps) {
+                    try {
+                        b.stop(Bundle.STOP_TRANSIENT);
+                    } catch (Exception e) {
+                        problems.add("stop " + b.getSymbolicName() + ": " + e.getMessage());
+                    }
+                }
+                return apps.size();
+            }
+
+            @Override
+            public void flushStore() {
+                store.flush(Duration.ofSeconds(10));
+            }
+
+            @Override
+            public void reloadStore() {
+                store.reload();
+            }
+
+            @Override
+            public void startApplications(List<String> problems) {
+                for (Bundle b : apps) {
+                    try {
+                        b.start(Bundle.START_TRANSIENT);
+                    } catch (Exception e) {
+                        problems.add("start " + b.getSymbolicName() + ": " + e.getMessage());
+                    }
                 }
             }
-        }
+        });
     }
 
     /** @return the bundles (other than the device manager) that registered a Driver service */
@@ -154,18 +170,15 @@ public final class BackupCommands {
                     out.add(b);
                 }
             }
-        } catch (org.osgi.framework.InvalidSyntaxException e) {
+        } catch (InvalidSyntaxException e) {
             throw new IllegalStateException(e);
         }
         return new ArrayList<>(out);
     }
 
-    private Path var() {
-        return store.root().getParent();
-    }
-
-    private Path etc() {
+    private StateFiles files() {
         String home = context.getProperty(StateFolder.HOME);
-        return home == null || home.isBlank() ? null : Path.of(home.strip(), "etc");
+        return new StateFiles(store.root(), store.root().getParent(),
+                home == null || home.isBlank() ? null : Path.of(home.strip(), "etc"));
     }
 }

@@ -15,4 +15,15 @@ public @interface BackupConfig {
             + "in milliseconds (saves of one component in that time become one write); BackupStore.flush, "
             + "which the shell's set waits for, writes at once")
     long writeDelayMillis() default 500;
+
+    @AttributeDefinition(description = "tinysep:restore refuses an archive that expands to more than this many bytes "
+            + "(counted while it is read; default 64 MiB)")
+    long restoreMaxBytes() default 64L << 20;
+
+    @AttributeDefinition(description = "tinysep:restore refuses an archive with one file larger than this (bytes, "
+            + "default 8 MiB)")
+    long restoreMaxFileBytes() default 8L << 20;
+
+    @AttributeDefinition(description = "tinysep:restore refuses an archive with more files than this")
+    int restoreMaxFiles() default 10_000;
 }

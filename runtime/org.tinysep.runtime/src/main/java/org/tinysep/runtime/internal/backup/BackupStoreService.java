@@ -49,11 +49,29 @@ public final class BackupStoreService implements BackupStore {
     private final BackupFiles files;
     private final ScheduledExecutorService executor;
     private final BackupWriter writer;
+    private volatile ArchiveUnpacker.Limits limits = DEFAULT_LIMITS;
+    static final ArchiveUnpacker.Limits DEFAULT_LIMITS = new ArchiveUnpacker.Limits(64L << 20, 8L << 20, 10_000);
 
     @Activate
     public BackupStoreService(BundleContext context, BackupConfig config,
             @Reference(name = "eventLog") EventLog events) {
         this(StateFolder.resolveOrDataArea(config.folder(), context, "backup"), Math.max(0, config.writeDelayMillis()), events);
+        this.limits = new ArchiveUnpacker.Limits(positive(config.restoreMaxBytes(), DEFAULT_LIMITS.maxTotalBytes()),
+                positive(config.restoreMaxFileBytes(), DEFAULT_LIMITS.maxEntryBytes()),
+                (int) positive(config.restoreMaxFiles(), DEFAULT_LIMITS.maxEntries()));
+    }
+
+    private static long positive(long value, long otherwise) {
+        if (value > 0) {
+            return value;
+        }
+        LOG.warn("Backup store: a restore limit of {} is not positive; using {}", value, otherwise);
+        return otherwise;
+    }
+
+    /** @return the bounds on what {@code tinysep:restore} reads (config keys restoreMax*) */
+    ArchiveUnpacker.Limits limits() {
+        return limits;
     }
 
     BackupStoreService(Path root, long writeDelayMillis, EventLog events) {
