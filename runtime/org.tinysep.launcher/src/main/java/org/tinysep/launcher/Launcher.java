@@ -111,6 +111,14 @@ public final class Launcher {
         return report(Duration.ofNanos(System.nanoTime() - t0), level);
     }
 
+    /**
+     * @param wait how long to wait for the Mail Manager to come up
+     * @return the banner's line on where alerts go ({@code WARNING: …} when they reach nobody)
+     */
+    public String alertsLine(Duration wait) throws InterruptedException {
+        return AlertRoute.line(framework.getBundleContext(), wait);
+    }
+
     /** Starts the interactive Gogo shell, when it was installed (interactive mode). */
     public void startShell() throws BundleException {
         if (shell != null) {

@@ -14,6 +14,8 @@ import org.slf4j.LoggerFactory;
 public final class Main {
 
     private static final Duration STOP_TIMEOUT = Duration.ofSeconds(30);
+    /** How long the banner waits for the Mail Manager (started by the drivers list) to say where alerts go. */
+    private static final Duration ALERTS_WAIT = Duration.ofSeconds(5);
 
     private Main() {
     }
@@ -51,6 +53,7 @@ public final class Main {
         try {
             StartReport report = launcher.start();
             report.lines().forEach(System.out::println);
+            System.out.println(launcher.alertsLine(ALERTS_WAIT));
             System.out.flush();
             launcher.startShell();
             return launcher.awaitStop();

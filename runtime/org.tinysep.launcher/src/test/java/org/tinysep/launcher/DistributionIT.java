@@ -59,6 +59,12 @@ class DistributionIT {
     }
 
     @Test
+    void theBannerSaysPlainlyThatAlertsGoOnlyToTheLogWithoutAnSmtpHost() throws Exception {
+        String line = launcher.alertsLine(Duration.ofSeconds(20));
+        assertEquals("WARNING: alerts: no SMTP host configured: alerts are only written to the log", line);
+    }
+
+    @Test
     void slf4jInsideTheFrameworkIsBoundToSimpleLogger() throws Exception {
         Class<?> factory = bundle("slf4j.api").loadClass("org.slf4j.LoggerFactory");
         Object loggerFactory = factory.getMethod("getILoggerFactory").invoke(null);
