@@ -44,7 +44,7 @@ public class RestartRestoresEverythingTest {
             door = uidOf(placed, "AmicaDoor");
             String movement = uidOf(placed, "AmicaMovement");
             configure(p, "tinysep:set " + movement + " room Kitchen", "room=Kitchen");
-            configure(p, "tinysep:room-add Pantry storage", "added Pantry");
+            configure(p, "tinysep:room-add Pantry storage --new-type", "added Pantry");
             configure(p, "tinysep:set " + uidOf(placed, "AmicaWindow") + " room Pantry", "room=Pantry");
             configure(p, "tinysep:set " + door + " kind INNER", "kind=INNER");
             configure(p, "tinysep:set " + door + " name \"Front door (tested)\"", "Front door (tested)");
