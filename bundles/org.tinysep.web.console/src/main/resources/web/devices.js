@@ -2,6 +2,7 @@
 // Devices: every device with its status, room and connections; a settings form for the one chosen
 // (#<uid> in the address), generated from its writable parameters, the room as a list of House Information's rooms.
 let rooms = [];
+let settingsShown = 0;
 
 function stateCell(status) {
   return Tiny.el('td', {title: status.detail || ''},
@@ -22,7 +23,7 @@ async function load() {
         + (c.vital ? ' (vital)' : ' (optional)'))))));
   }
   document.getElementById('devices-box').dataset.count = devices.length;
-  settings();
+  await settings();
 }
 
 function field(d, p) {
@@ -38,12 +39,14 @@ function field(d, p) {
 }
 
 async function settings() {
+  const generation = ++settingsShown; // a form asked for while another is being fetched replaces it
   const box = document.getElementById('settings');
   const uid = decodeURIComponent(location.hash.substring(1));
   if (!uid) { box.hidden = true; return; }
   let d;
   try {
     d = await Tiny.api('GET', 'devices/' + encodeURIComponent(uid));
+    if (generation !== settingsShown) return;
   } catch (e) {
     box.hidden = false; Tiny.fail('settings', e); return;
   }
@@ -80,9 +83,10 @@ async function save(uid, key, input, error) {
   error.textContent = '';
   try {
     const d = await Tiny.api('PUT', 'devices/' + encodeURIComponent(uid) + '/parameters/' + encodeURIComponent(key), {value: input.value});
-    error.className = 'ok';
-    error.textContent = d.saved === false ? 'changed (not yet in the system backup)' : 'saved';
-    await load();
+    await load(); // the list and the form again, as the device now reports them
+    const shown = document.getElementById('error-' + key) || error;
+    shown.className = 'ok';
+    shown.textContent = d.saved === false ? 'saved (not yet in the system backup: the disk did not answer)' : 'saved';
   } catch (e) {
     error.className = 'field-error';
     error.textContent = e.message;

@@ -14,8 +14,6 @@ import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.junit.Before;
 import org.junit.Test;
 import org.junit.runner.RunWith;
@@ -218,29 +216,5 @@ public class WebApiTest extends WebTestSupport {
         assertEquals(404, again.statusCode());
         assertTrue(again.body(), again.body().contains("no room with UID"));
         assertEquals(404, call("GET", "/api/nothing-here", null, login, false).statusCode());
-    }
-
-    /** Waits until the API lists a device of {@code type} for node {@code address}; @return its UID */
-    protected String awaitDevice(Login login, String type, String address) {
-        Pattern p = Pattern.compile("\\{\"uid\":\"([^\"]+)\",\"name\":\"[^\"]*\",\"type\":\"" + type
-                + "\",[^{]*\\{[^}]*\\},[^}]*?\"nodeAddress\":\"" + Pattern.quote(address) + "\"");
-        String[] uid = new String[1];
-        await(Duration.ofSeconds(20), () -> {
-            Matcher m = p.matcher(call("GET", "/api/devices", null, login, false).body());
-            if (m.find()) {
-                uid[0] = m.group(1);
-                return true;
-            }
-            return false;
-        }, type + " device of node " + address + " in GET /api/devices");
-        return uid[0];
-    }
-
-    static String field(String json, String name) {
-        Matcher m = Pattern.compile("\"" + name + "\":\"([^\"]*)\"").matcher(json);
-        if (!m.find()) {
-            throw new AssertionError("no " + name + " in " + json);
-        }
-        return m.group(1);
     }
 }

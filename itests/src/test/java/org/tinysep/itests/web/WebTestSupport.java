@@ -144,4 +144,28 @@ public abstract class WebTestSupport extends TinySepTestSupport {
     private static int status(HttpResponse<?> r) {
         return r == null ? -1 : r.statusCode();
     }
+
+    /** Waits until the API lists a device of {@code type} for node {@code address}; @return its UID */
+    protected String awaitDevice(Login login, String type, String address) {
+        Pattern p = Pattern.compile("\\{\"uid\":\"([^\"]+)\",\"name\":\"[^\"]*\",\"type\":\"" + type
+                + "\",[^{]*\\{[^}]*\\},[^}]*?\"nodeAddress\":\"" + Pattern.quote(address) + "\"");
+        String[] uid = new String[1];
+        await(Duration.ofSeconds(20), () -> {
+            Matcher m = p.matcher(call("GET", "/api/devices", null, login, false).body());
+            if (m.find()) {
+                uid[0] = m.group(1);
+                return true;
+            }
+            return false;
+        }, type + " device of node " + address + " in GET /api/devices");
+        return uid[0];
+    }
+
+    protected static String field(String json, String name) {
+        Matcher m = Pattern.compile("\"" + name + "\":\"([^\"]*)\"").matcher(json);
+        if (!m.find()) {
+            throw new AssertionError("no " + name + " in " + json);
+        }
+        return m.group(1);
+    }
 }
