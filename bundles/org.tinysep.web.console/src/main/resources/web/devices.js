@@ -58,12 +58,13 @@ async function settings() {
   for (const p of d.parameters) {
     const input = field(d, p);
     const error = Tiny.el('div', {class: 'field-error', id: 'error-' + p.key});
-    const dd = Tiny.el('dd', {}, input, ' ', Tiny.el('span', {class: 'muted'}, p.description), error);
+    const dd = Tiny.el('dd', {}, input);
     if (p.writable && installer) {
       dd.append(Tiny.el('button', {type: 'button', id: 'save-' + p.key, onclick: () => save(d.uid, p.key, input, error)}, 'Save'));
     } else if (p.writable) {
       input.disabled = true;
     }
+    dd.append(Tiny.el('span', {class: 'muted'}, p.description), error);
     list.append(Tiny.el('dt', {}, p.key), dd);
   }
   box.append(list);

@@ -18,7 +18,7 @@ import org.tinysep.itests.AmicaNode;
 /**
  * The console in a real browser (Debian's headless Chromium over the DevTools protocol) against the real platform
  * with a small flat of real UDP nodes: log in through the form, the event log page, a live event appearing without
- * reload after a UDP frame, the devices list, a device named with HTML shown as text, the room chosen from the
+ * reload after a UDP frame, the devices list, the packet log, a device named with HTML shown as text, the room chosen from the
  * drop-down and saved, the caregiver view. Screenshots of each page go to {@code target/web-screenshots/} (and to
  * {@code docs/images/} with {@code -Dtinysep.web.screenshots=docs}); on failure, a screenshot of the failing page.
  * Every step waits on a condition in the page, never a fixed time.
@@ -106,6 +106,12 @@ public class WebBrowserTest extends WebTestSupport {
                 HttpResponse<String> device = call("GET", "/api/devices/" + cookerUid, null, api, false);
                 assertTrue(device.body(), device.body().contains("\"room\":{\"uid\":\"" + kitchen + "\",\"name\":\"Kitchen\"}"));
                 shot(browser, "device-settings");
+
+                step = "packet log";
+                browser.navigate(base + "/packets.html");
+                browser.waitFor("Array.from(document.querySelectorAll('#packets tr')).some(r => r.textContent.includes('node 1.18'))",
+                        WAIT, "the packets of node 1.18 in the packet log");
+                shot(browser, "packets");
 
                 step = "caregiver view";
                 cooker.motion(true);
