@@ -113,7 +113,10 @@ public final class DevicesApi {
         if (ref.room().isEmpty()) {
             m.put("room", null);
         } else {
-            m.put("room", Map.of("uid", ref.room(), "name", rooms.getOrDefault(ref.room(), ref.room())));
+            Map<String, Object> room = new LinkedHashMap<>(); // keys in a fixed order, like every answer
+            room.put("uid", ref.room());
+            room.put("name", rooms.getOrDefault(ref.room(), ref.room()));
+            m.put("room", room);
         }
         m.put("nodeAddress", ref.nodeAddress());
         m.put("nodeTypes", ref.nodeTypes());
@@ -121,7 +124,10 @@ public final class DevicesApi {
         m.put("parameters", parameters(Safe.get(d::parameters, List.of())));
         List<Object> functions = new ArrayList<>();
         for (DeviceFunction f : Safe.get(d::functions, List.<DeviceFunction>of())) {
-            functions.add(Map.of("name", f.name(), "description", f.description()));
+            Map<String, Object> fm = new LinkedHashMap<>();
+            fm.put("name", f.name());
+            fm.put("description", f.description());
+            functions.add(fm);
         }
         m.put("functions", functions);
         List<Object> connections = new ArrayList<>();
