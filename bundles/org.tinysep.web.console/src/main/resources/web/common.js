@@ -59,7 +59,7 @@ const Tiny = {
   async start(active) {
     Tiny.session = await Tiny.api('GET', 'session');
     const nav = document.getElementById('nav');
-    const pages = [['index.html', 'Event log'], ['devices.html', 'Devices'], ['packets.html', 'Packet log'],
+    const pages = [['index.html', 'Event log'], ['devices.html', 'Devices'], ['graph.html', 'Connections'], ['packets.html', 'Packet log'],
       ['caregiver.html', 'Caregiver view']];
     for (const [href, label] of pages) {
       nav.append(Tiny.el('a', {href, class: href === active ? 'active' : null}, label));

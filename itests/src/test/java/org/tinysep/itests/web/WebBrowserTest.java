@@ -18,7 +18,7 @@ import org.tinysep.itests.AmicaNode;
 /**
  * The console in a real browser (Debian's headless Chromium over the DevTools protocol) against the real platform
  * with a small flat of real UDP nodes: log in through the form, the event log page, a live event appearing without
- * reload after a UDP frame, the devices list, the packet log, a device named with HTML shown as text, the room chosen from the
+ * reload after a UDP frame, the devices list, the connection graph, the packet log, a device named with HTML shown as text, the room chosen from the
  * drop-down and saved, the caregiver view. Screenshots of each page go to {@code target/web-screenshots/} (and to
  * {@code docs/images/} with {@code -Dtinysep.web.screenshots=docs}); on failure, a screenshot of the failing page.
  * Every step waits on a condition in the page, never a fixed time.
@@ -106,6 +106,12 @@ public class WebBrowserTest extends WebTestSupport {
                 HttpResponse<String> device = call("GET", "/api/devices/" + cookerUid, null, api, false);
                 assertTrue(device.body(), device.body().contains("\"room\":{\"uid\":\"" + kitchen + "\",\"name\":\"Kitchen\"}"));
                 shot(browser, "device-settings");
+
+                step = "connection graph";
+                browser.navigate(base + "/graph.html");
+                browser.waitFor("document.querySelectorAll('#graph .node').length >= 6 && document.querySelectorAll('#graph path.edge.vital').length >= 3",
+                        WAIT, "the connection graph with its vital connections");
+                shot(browser, "graph");
 
                 step = "packet log";
                 browser.navigate(base + "/packets.html");
