@@ -2,11 +2,14 @@
 # Installs what the build and tests need beyond the JDK and Maven. Idempotent; safe to run on every build.
 #   java, maven  - build
 #   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
+#   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
 set -euo pipefail
 need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v mvn >/dev/null || need+=(maven)
 command -v socat >/dev/null || need+=(socat)
+command -v chromium >/dev/null || need+=(chromium)
+command -v chromedriver >/dev/null || need+=(chromium-driver)
 if [ ${#need[@]} -gt 0 ]; then
   if [ "$(id -u)" -ne 0 ]; then
     echo "Missing packages: ${need[*]} - install them (apt-get update && apt-get install ${need[*]}) and run again." >&2

@@ -62,6 +62,10 @@ public final class FrameworkConfig {
         p.put("felix.fileinstall.noInitialDelay", "true");
         p.put("felix.fileinstall.log.level", "2");
         p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
+        // the web console's HTTP service: this machine only, from its first moment (etc/org.apache.felix.http.cfg
+        // changes it once FileInstall has read it; docs/web-api.md)
+        p.put("org.apache.felix.http.host", "127.0.0.1");
+        p.put("org.osgi.service.http.port", "8080");
         if (daemon) {
             p.put("gosh.args", "--nointeractive");
         }

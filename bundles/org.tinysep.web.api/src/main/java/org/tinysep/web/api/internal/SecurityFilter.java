@@ -1,0 +1,121 @@
+package org.tinysep.web.api.internal;
+
+import jakarta.servlet.Filter;
+import jakarta.servlet.FilterChain;
+import jakarta.servlet.ServletException;
+import jakarta.servlet.ServletRequest;
+import jakarta.servlet.ServletResponse;
+import jakarta.servlet.http.HttpServletRequest;
+import jakarta.servlet.http.HttpServletResponse;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Reference;
+import org.tinysep.web.api.internal.Sessions.Session;
+
+/**
+ * Guards every page and API call of the HTTP service's default context: without a session, API calls get 401 and
+ * pages a redirect to the login page; a state-changing call (anything but GET/HEAD) needs the session's CSRF token
+ * in header {@value #CSRF_HEADER} and, when the browser sends an Origin, the same origin, else 403; the caregiver
+ * may only read (403). Every answer gets the security headers (CSP without inline script, no framing, no sniffing).
+ */
+@Component(service = Filter.class, property = {
+    "osgi.http.whiteboard.filter.pattern=/*",
+    "osgi.http.whiteboard.filter.name=tinysep-web-security"
+})
+public final class SecurityFilter implements Filter {
+
+    /** Header carrying the CSRF token on state-changing calls. */
+    public static final String CSRF_HEADER = "X-CSRF-Token";
+    /** What may be fetched before logging in: the login page and what it needs. */
+    static final Set<String> PUBLIC = Set.of("/login.html", "/login.js", "/console.css", "/favicon.svg");
+    static final String CSP = "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
+            + "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'";
+
+    private final WebSecurity security;
+
+    @Activate
+    public SecurityFilter(@Reference WebSecurity security) {
+        this.security = security;
+    }
+
+    @Override
+    public void doFilter(ServletRequest request, ServletResponse response, FilterChain chain)
+            throws IOException, ServletException {
+        HttpServletRequest req = (HttpServletRequest) request;
+        HttpServletResponse resp = (HttpServletResponse) response;
+        headers(resp);
+        String path = req.getRequestURI() == null ? "/" : req.getRequestURI();
+        String method = req.getMethod();
+        boolean api = path.startsWith("/api/") || path.equals("/api");
+        boolean reads = method.equals("GET") || method.equals("HEAD");
+        if (PUBLIC.contains(path) && reads) {
+            chain.doFilter(req, resp);
+            return;
+        }
+        if (path.equals("/api/session") && method.equals("POST")) { // logging in: no session yet
+            if (!sameOrigin(req)) {
+                deny(resp, 403, "cross-site request refused");
+                return;
+            }
+            chain.doFilter(req, resp);
+            return;
+        }
+        Optional<Session> session = security.sessions().find(SessionApi.token(req));
+        if (session.isEmpty()) {
+            if (api) {
+                deny(resp, 401, "log in first");
+            } else {
+                resp.setStatus(302);
+                resp.setHeader("Location", "/login.html");
+            }
+            return;
+        }
+        Session s = session.get();
+        if (!reads) {
+            if (!sameOrigin(req) || !csrfMatches(req.getHeader(CSRF_HEADER), s.csrf())) {
+                deny(resp, 403, "missing or wrong CSRF token (header " + CSRF_HEADER + ")");
+                return;
+            }
+            boolean logout = path.equals("/api/session") && method.equals("DELETE");
+            if (s.role() != Role.INSTALLER && !logout) {
+                deny(resp, 403, "the " + s.role().id() + " may look but not change anything: log in as installer");
+                return;
+            }
+        }
+        req.setAttribute(SessionApi.SESSION_ATTRIBUTE, s);
+        req.setAttribute(SessionApi.ROLE_ATTRIBUTE, s.role().id());
+        chain.doFilter(req, resp);
+    }
+
+    static void headers(HttpServletResponse resp) {
+        resp.setHeader("Content-Security-Policy", CSP);
+        resp.setHeader("X-Content-Type-Options", "nosniff");
+        resp.setHeader("X-Frame-Options", "DENY");
+        resp.setHeader("Referrer-Policy", "no-referrer");
+    }
+
+    /** @return false when the browser says the request comes from another site */
+    static boolean sameOrigin(HttpServletRequest req) {
+        String origin = req.getHeader("Origin");
+        if (origin == null || origin.isEmpty()) {
+            return true; // not a browser, or a same-origin GET; SameSite=Strict keeps the cookie off cross-site requests
+        }
+        String host = req.getHeader("Host");
+        return host != null && (origin.equals("http://" + host) || origin.equals("https://" + host));
+    }
+
+    private static boolean csrfMatches(String given, String expected) {
+        return given != null && MessageDigest.isEqual(given.getBytes(StandardCharsets.UTF_8),
+                expected.getBytes(StandardCharsets.UTF_8));
+    }
+
+    private static void deny(HttpServletResponse resp, int status, String message) throws IOException {
+        ApiServlet.send(resp, status, Map.of("error", message));
+    }
+}

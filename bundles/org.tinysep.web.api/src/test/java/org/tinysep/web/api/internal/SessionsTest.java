@@ -1,0 +1,33 @@
+package org.tinysep.web.api.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import org.junit.jupiter.api.Test;
+import org.tinysep.web.api.internal.Sessions.Session;
+
+class SessionsTest {
+
+    private final LoginLimiterTest.MutableClock clock = new LoginLimiterTest.MutableClock();
+
+    @Test
+    void aSessionEndsAfterItsIdleTimeOrOnLogout() {
+        Sessions sessions = new Sessions(Duration.ofMinutes(10), clock);
+        Session s = sessions.open(Role.CAREGIVER);
+        assertNotEquals(s.token(), s.csrf());
+        assertTrue(s.token().length() >= 43, "256 random bits");
+        clock.advance(Duration.ofMinutes(9));
+        assertEquals(Role.CAREGIVER, sessions.find(s.token()).orElseThrow().role());
+        clock.advance(Duration.ofMinutes(9)); // used 9 min ago: still alive
+        assertTrue(sessions.find(s.token()).isPresent());
+        clock.advance(Duration.ofMinutes(11));
+        assertTrue(sessions.find(s.token()).isEmpty());
+        Session t = sessions.open(Role.INSTALLER);
+        sessions.close(t.token());
+        assertTrue(sessions.find(t.token()).isEmpty());
+        assertTrue(sessions.find(null).isEmpty());
+        assertTrue(sessions.find("guessed").isEmpty());
+    }
+}

@@ -1,0 +1,183 @@
+package org.tinysep.itests.web;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.net.http.HttpResponse;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.ops4j.pax.exam.junit.PaxExam;
+import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
+import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.itests.AmicaNode;
+
+/**
+ * The console in a real browser (Debian's headless Chromium over the DevTools protocol) against the real platform
+ * with a small flat of real UDP nodes: log in through the form, the event log page, a live event appearing without
+ * reload after a UDP frame, the devices list, the connection graph, the packet log, a device named with HTML shown as text, the room chosen from the
+ * drop-down and saved, the caregiver view. Screenshots of each page go to {@code target/web-screenshots/} (and to
+ * {@code docs/images/} with {@code -Dtinysep.web.screenshots=docs}); on failure, a screenshot of the failing page.
+ * Every step waits on a condition in the page, never a fixed time.
+ */
+@RunWith(PaxExam.class)
+@ExamReactorStrategy(PerClass.class)
+public class WebBrowserTest extends WebTestSupport {
+
+    private static final Duration WAIT = Duration.ofSeconds(30);
+    private static final String XSS = "<img src=x onerror=\"window.xssFired=1\"><script>window.xssFired=1</script>";
+
+    @Test
+    public void theConsoleWorksInARealBrowser() throws Exception {
+        setPasswords();
+        String base = base();
+        Login api = login("installer", INSTALLER_PASSWORD);
+        int port = udpPortOf("BusRadioAmicaUdp");
+        String living = room(api, "Living room", "LivingRoom");
+        String kitchen = room(api, "Kitchen", "Kitchen");
+        room(api, "Bathroom", "Bathroom");
+        try (AmicaNode sofa = new AmicaNode(1, 17, port, AmicaNodeType.MOVEMENT);
+                AmicaNode cooker = new AmicaNode(1, 18, port, AmicaNodeType.MOVEMENT);
+                AmicaNode front = new AmicaNode(1, 20, port, AmicaNodeType.DOOR);
+                Chromium browser = Chromium.start(WAIT)) {
+            sofa.keepAlive();
+            cooker.keepAlive();
+            front.keepAlive();
+            String sofaUid = awaitDevice(api, "AmicaMovement", "1.17");
+            String cookerUid = awaitDevice(api, "AmicaMovement", "1.18");
+            String doorUid = awaitDevice(api, "AmicaDoor", "1.20");
+            put(api, sofaUid, "room", living);
+            put(api, doorUid, "room", living);
+            sofa.motion(true);
+            front.door(true);
+            front.door(false);
+            String step = "login page";
+            try {
+                browser.navigate(base + "/");
+                browser.waitFor("location.pathname === '/login.html' && document.readyState === 'complete'", WAIT, "the login page");
+                shot(browser, "login");
+                step = "wrong password";
+                browser.eval("(document.getElementById('password').value = 'wrong-password', document.getElementById('submit').click(), 1)");
+                browser.waitFor("document.getElementById('message').textContent.includes('wrong user name or password')", WAIT,
+                        "the refusal of a wrong password");
+                step = "login";
+                browser.eval("(document.getElementById('password').value = " + Chromium.quote(INSTALLER_PASSWORD)
+                        + ", document.getElementById('submit').click(), 1)");
+                browser.waitFor("location.pathname === '/index.html' && document.querySelectorAll('#events tr').length > 0", WAIT,
+                        "the event log after logging in");
+                browser.waitFor("performance.getEntriesByName('events-shown').length > 0", WAIT, "the event log's first rows");
+                metrics(browser);
+
+                step = "live event";
+                browser.waitFor("document.getElementById('live-status').textContent === 'live'", WAIT, "the live stream");
+                browser.eval("(window.notReloaded = true)");
+                String before = browser.eval("Array.from(document.querySelectorAll('#events tr')).filter(r => r.textContent.includes('Movement sensor 1.18') && r.textContent.includes('movement detected')).length");
+                assertEquals("0", before);
+                cooker.motion(true);
+                browser.waitFor("Array.from(document.querySelectorAll('#events tr')).some(r => r.textContent.includes('Movement sensor 1.18') && r.textContent.includes('movement detected'))",
+                        WAIT, "the movement of node 1.18 in the event log, live");
+                assertEquals("the page was not reloaded", "true", browser.eval("window.notReloaded === true"));
+                browser.waitFor("Array.from(document.querySelectorAll('#live li')).some(r => r.textContent.includes('movement detected'))",
+                        WAIT, "the movement in the live side panel");
+                shot(browser, "events");
+
+                step = "devices";
+                browser.eval("Tiny.api('PUT', 'devices/" + cookerUid + "/parameters/name', {value: " + Chromium.quote(XSS) + "}).then(() => 1)");
+                browser.navigate(base + "/devices.html");
+                browser.waitFor("document.querySelectorAll('#devices tr[data-uid]').length >= 6", WAIT, "the devices list");
+                browser.waitFor("Array.from(document.querySelectorAll('#devices a')).some(a => a.textContent === " + Chromium.quote(XSS) + ")",
+                        WAIT, "the device named with HTML, shown as text");
+                assertEquals("no element made from a device name", "0", browser.eval("document.querySelectorAll('#main img, #main script').length"));
+                assertEquals("no script from a device name ran", "false", browser.eval("window.xssFired === 1"));
+                shot(browser, "devices");
+                browser.eval("Tiny.api('PUT', 'devices/" + cookerUid + "/parameters/name', {value: 'Kitchen movement'}).then(() => 1)");
+
+                step = "device settings";
+                browser.eval("(location.hash = " + Chromium.quote(cookerUid) + ", 1)");
+                browser.waitFor("document.getElementById('param-room') !== null", WAIT, "the settings form with the room drop-down");
+                String options = browser.eval("Array.from(document.querySelectorAll('#param-room option')).map(o => o.textContent).join('|')");
+                assertTrue(options, options.contains("Kitchen (Kitchen)") && options.contains("Living room (LivingRoom)"));
+                browser.eval("(document.getElementById('param-room').value = " + Chromium.quote(kitchen)
+                        + ", document.getElementById('save-room').click(), 1)");
+                browser.waitFor("document.getElementById('error-room').textContent.startsWith('saved')", WAIT, "the room saved");
+                HttpResponse<String> device = call("GET", "/api/devices/" + cookerUid, null, api, false);
+                assertTrue(device.body(), device.body().contains("\"room\":{\"uid\":\"" + kitchen + "\",\"name\":\"Kitchen\"}"));
+                shot(browser, "device-settings");
+
+                step = "connection graph";
+                browser.navigate(base + "/graph.html");
+                browser.waitFor("document.querySelectorAll('#graph .node').length >= 6 && document.querySelectorAll('#graph path.edge.vital').length >= 3",
+                        WAIT, "the connection graph with its vital connections");
+                shot(browser, "graph");
+
+                step = "packet log";
+                browser.navigate(base + "/packets.html");
+                browser.waitFor("Array.from(document.querySelectorAll('#packets tr')).some(r => r.textContent.includes('node 1.18'))",
+                        WAIT, "the packets of node 1.18 in the packet log");
+                shot(browser, "packets");
+
+                step = "caregiver view";
+                cooker.motion(true);
+                browser.navigate(base + "/caregiver.html");
+                browser.waitFor("document.querySelectorAll('#rooms tr').length === 3 && document.getElementById('occupancy').textContent !== '…'",
+                        WAIT, "the caregiver view");
+                browser.waitFor("document.getElementById('last-activity').textContent === 'Kitchen' || document.getElementById('last-activity').textContent === 'Living room'",
+                        WAIT, "the last activity's room");
+                shot(browser, "caregiver");
+            } catch (AssertionError | RuntimeException e) {
+                Path file = Path.of("target", "web-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
+                try {
+                    browser.screenshot(file);
+                    log.error("Browser test failed at '{}'; screenshot: {}", step, file);
+                } catch (AssertionError | RuntimeException ignored) {
+                    log.error("Browser test failed at '{}'; no screenshot could be taken", step);
+                }
+                throw e;
+            }
+        }
+    }
+
+    /** Logs the event log page's weight and time to first render (written to target/web-metrics.txt too). */
+    private void metrics(Chromium browser) throws Exception {
+        String json = browser.eval("(() => { const n = performance.getEntriesByType('navigation')[0];"
+                + " const r = performance.getEntriesByType('resource');"
+                + " const stat = r.filter(e => !e.name.includes('/api/'));"
+                + " const api = r.filter(e => e.name.includes('/api/') && !e.name.includes('/api/stream/'));"
+                + " const paint = performance.getEntriesByName('first-contentful-paint')[0];"
+                + " const shown = performance.getEntriesByName('events-shown')[0];"
+                + " return {pageBytes: n.transferSize + stat.reduce((s, e) => s + e.transferSize, 0),"
+                + " pageFiles: 1 + stat.length, apiBytes: api.reduce((s, e) => s + e.transferSize, 0),"
+                + " firstContentfulPaintMs: paint ? Math.round(paint.startTime) : null,"
+                + " eventsShownMs: shown ? Math.round(shown.startTime) : null,"
+                + " domContentLoadedMs: Math.round(n.domContentLoadedEventEnd)}; })()");
+        log.info("Event log page: {}", json);
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target", "web-metrics.txt"), json + "\n");
+        assertTrue(json, json.contains("\"firstContentfulPaintMs\":"));
+    }
+
+    private void shot(Chromium browser, String page) throws Exception {
+        browser.waitFor("document.readyState === 'complete'", WAIT, "the page loaded");
+        browser.screenshot(Path.of("target", "web-screenshots", page + ".png").toAbsolutePath());
+        String target = System.getProperty("tinysep.web.screenshots", "");
+        String docs = System.getProperty("tinysep.docs.images", "");
+        if (target.equals("docs") && !docs.isEmpty() && !docs.startsWith("${")) {
+            browser.screenshot(Path.of(docs, "web-" + page + ".png"));
+        }
+    }
+
+    private String room(Login login, String name, String type) {
+        HttpResponse<String> r = call("POST", "/api/rooms", "{\"name\":\"" + name + "\",\"type\":\"" + type + "\"}", login, true);
+        assertEquals(r.body(), 200, r.statusCode());
+        return field(r.body(), "uid");
+    }
+
+    private void put(Login login, String uid, String key, String value) {
+        HttpResponse<String> r = call("PUT", "/api/devices/" + uid + "/parameters/" + key, "{\"value\":\"" + value + "\"}", login, true);
+        assertEquals(r.body(), 200, r.statusCode());
+    }
+
+}
