@@ -24,6 +24,9 @@ if [[ "${SKIP_BUILD:-0}" != "1" ]]; then
   echo "Built in $((SECONDS - build_start)) s"
 fi
 repo=$(pwd)
+# TinySEP's state (house plan, alert texts, settings, secrets) is for this user only: folders rwx------, files
+# rw------- (docs/backup.md, "File modes"), also those the framework and the demo create
+umask 077
 # State (drivers list, house, mail spool, framework cache) lives in <repo>/var, outside target/: `mvn clean` keeps it.
 # TINYSEP_VAR=<dir> puts it elsewhere.
 var="${TINYSEP_VAR:-$repo/var}"

@@ -48,7 +48,7 @@ public class CraftedArchiveTest {
                 log = Files.readString(list.filter(f -> f.getFileName().toString().startsWith("platform-"))
                         .findFirst().orElseThrow());
             }
-            assertTrue("a plain warning", log.contains("could be read by other users"));
+            assertTrue("a plain warning", log.contains("was open to other users"));
             assertEquals("house.xml", "rw-------", mode(var.resolve("house.xml")));
             assertEquals("backup archive", "rw-------", mode(zip));
             for (Path f : files(var.resolve("backup"))) {

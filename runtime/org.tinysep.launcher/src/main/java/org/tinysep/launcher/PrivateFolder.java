@@ -49,9 +49,7 @@ final class PrivateFolder {
         if (open.isEmpty()) {
             return Optional.empty();
         }
-        return Optional.of("The state folder " + dir + " could be read by other users of this computer ("
-                + PosixFilePermissions.toString(before) + "); it holds the house plan, alert texts and settings. "
-                + "It is now private to its owner (" + PosixFilePermissions.toString(PRIVATE) + "). If a mail "
-                + "password was stored in it, consider changing that password.");
+        return Optional.of("State folder " + dir + " was open to other users (" + PosixFilePermissions.toString(before)
+                + "), now private (" + PosixFilePermissions.toString(PRIVATE) + "); change any password kept in it");
     }
 }

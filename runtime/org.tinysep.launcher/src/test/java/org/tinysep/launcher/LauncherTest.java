@@ -55,7 +55,7 @@ class LauncherTest {
         assertEquals(java.util.Optional.empty(), PrivateFolder.tighten(var), "no warning once private");
         Files.setPosixFilePermissions(var, java.nio.file.attribute.PosixFilePermissions.fromString("rwxr-x---"));
         String warning = PrivateFolder.tighten(var).orElseThrow();
-        assertTrue(warning.contains("could be read by other users") && warning.contains("rwxr-x---"), warning);
+        assertTrue(warning.contains("was open to other users") && warning.contains("rwxr-x---"), warning);
         Path fresh = home.resolve("fresh/var");
         assertEquals(java.util.Optional.empty(), PrivateFolder.tighten(fresh), "a new folder: no warning");
         assertEquals("rwx------", java.nio.file.attribute.PosixFilePermissions.toString(
