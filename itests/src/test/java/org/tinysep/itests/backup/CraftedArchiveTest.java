@@ -114,7 +114,7 @@ public class CraftedArchiveTest {
 
             // item 4: a restore keeps the state it replaces; --undo brings it back
             expect(p, "tinysep:room-remove Pantry", "");
-            expect(p, "tinysep:room-add Attic storage", "added Attic");
+            expect(p, "tinysep:room-add Attic storage --new-type", "added Attic");
             byte[] beforeRestore = Files.readAllBytes(var.resolve("house.xml"));
             expect(p, "tinysep:restore " + zip, "restored ");
             assertTrue("Pantry back", String.join("\n", p.command("tinysep:rooms")).contains("Pantry"));
@@ -151,7 +151,7 @@ public class CraftedArchiveTest {
         try {
             RestartRestoresEverythingTest.await(p, () -> p.command("tinysep:drivers").toString(),
                     s -> s.contains("TimeController") && s.contains("HouseInformation"), "drivers up");
-            expect(p, "tinysep:room-add Pantry storage", "added Pantry");
+            expect(p, "tinysep:room-add Pantry storage --new-type", "added Pantry");
             return p;
         } catch (Exception | AssertionError e) {
             p.close();

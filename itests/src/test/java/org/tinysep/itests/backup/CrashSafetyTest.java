@@ -3,7 +3,11 @@ package org.tinysep.itests.backup;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
+import java.io.FileNotFoundException;
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -161,13 +165,31 @@ public class CrashSafetyTest {
         seenPending.forEach(c -> acked.put(c.uid() + "/" + c.key(), c));
         var parser = DocumentBuilderFactory.newInstance();
         parser.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-        try (Stream<Path> files = Files.walk(home.resolve("var"))) {
-            for (Path f : files.filter(x -> x.toString().endsWith(".xml")).toList()) {
+        for (Path f : xmlFiles(home.resolve("var"))) {
+            try {
                 parser.newDocumentBuilder().parse(f.toFile()); // throws on a torn file
+            } catch (FileNotFoundException replaced) {
+                // replaced by its next version (temp file renamed over it) between the listing and the parse
             }
         }
         Path damaged = home.resolve("var/backup/damaged");
         assertTrue("round " + round + ": damaged files " + damaged, !Files.exists(damaged)
                 || Files.list(damaged).findAny().isEmpty());
+    }
+
+    /**
+     * The XML files under {@code var}; the platform keeps writing (temp file, rename) while the folder is walked,
+     * so a walk that meets a vanished temp file is done again.
+     */
+    private static List<Path> xmlFiles(Path var) throws IOException {
+        for (int attempt = 1; ; attempt++) {
+            try (Stream<Path> files = Files.walk(var)) {
+                return files.filter(x -> x.toString().endsWith(".xml")).toList();
+            } catch (UncheckedIOException e) {
+                if (!(e.getCause() instanceof NoSuchFileException) || attempt == 5) {
+                    throw e;
+                }
+            }
+        }
     }
 }

@@ -34,6 +34,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.TestSyncKey;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
@@ -46,8 +47,7 @@ import org.tinysep.itests.TinySepTestSupport;
 @ExamReactorStrategy(PerMethod.class)
 public class ClockJumpTest extends TinySepTestSupport {
 
-    private static final Map<String, String> EXTERNAL = Map.of("mode", "EXTERNAL", "syncPort", "0",
-            "syncBindAddress", "127.0.0.1");
+    private static final Map<String, String> EXTERNAL = TestSyncKey.timeConfig("EXTERNAL");
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
@@ -83,8 +83,7 @@ public class ClockJumpTest extends TinySepTestSupport {
             assertEquals(future.plus(Duration.ofMinutes(45)).toString(), parameter(device, "deadline"));
             assertEquals(Occupancy.OCCUPIED, flat.occupancy());
 
-            configure("org.tinysep.timecontroller", Map.of("mode", "REAL", "syncPort", "0",
-                    "syncBindAddress", "127.0.0.1")); // what tinysep:time real does
+            configure("org.tinysep.timecontroller", TestSyncKey.timeConfig("REAL")); // what tinysep:time real does
             await(TIMEOUT, () -> clock.mode() == ClockMode.REAL, "the clock back in real time");
             Instant realLimit = Instant.now().plus(Duration.ofMinutes(46));
             await(TIMEOUT, () -> Instant.parse(parameter(device, "deadline")).isBefore(realLimit),
@@ -105,8 +104,8 @@ public class ClockJumpTest extends TinySepTestSupport {
     }
 
     /**
-     * The one place that speaks the time synchroniser's protocol ({@code docs/time-sync.md}): {@code TICK <seq>
-     * <at>}, answered {@code DONE <seq> <at>}. Should the protocol gain a key, only this method changes.
+     * The one place that speaks the time synchroniser's protocol ({@code docs/time-sync.md}): {@code HELLO} for the
+     * session, then {@code TICK <seq> <at> <hmac>} signed with the tests' key, answered {@code DONE <seq> <at>}.
      */
     private void tick(Instant at) throws IOException {
         String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
@@ -120,15 +119,20 @@ public class ClockJumpTest extends TinySepTestSupport {
         int port = ((Number) ref.getProperty("tinysep.sync.port")).intValue();
         try (DatagramSocket socket = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             socket.setSoTimeout(5000);
-            byte[] out = ("TICK 1 " + at).getBytes(StandardCharsets.US_ASCII);
-            socket.send(new DatagramPacket(out, out.length, new InetSocketAddress(InetAddress.getLoopbackAddress(),
-                    port)));
-            byte[] in = new byte[512];
-            DatagramPacket answer = new DatagramPacket(in, in.length);
-            socket.receive(answer);
-            String text = new String(in, 0, answer.getLength(), StandardCharsets.US_ASCII);
-            assertEquals("DONE 1 " + at, text);
+            InetSocketAddress platform = new InetSocketAddress(InetAddress.getLoopbackAddress(), port);
+            String[] welcome = ask(socket, platform, "HELLO").split(" ");
+            assertEquals("WELCOME <instant> <mode> <session>", 4, welcome.length);
+            assertEquals("DONE 1 " + at, ask(socket, platform, TestSyncKey.signed(welcome[3], "TICK 1 " + at)));
         }
+    }
+
+    private static String ask(DatagramSocket socket, InetSocketAddress platform, String request) throws IOException {
+        byte[] out = request.getBytes(StandardCharsets.US_ASCII);
+        socket.send(new DatagramPacket(out, out.length, platform));
+        byte[] in = new byte[512];
+        DatagramPacket answer = new DatagramPacket(in, in.length);
+        socket.receive(answer);
+        return new String(in, 0, answer.getLength(), StandardCharsets.US_ASCII);
     }
 
     private void placeInBathroom(AmicaNode node) throws IOException {

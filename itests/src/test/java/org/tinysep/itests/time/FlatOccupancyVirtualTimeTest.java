@@ -10,6 +10,8 @@ import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.ClockMode;
@@ -76,6 +78,11 @@ public class FlatOccupancyVirtualTimeTest extends TimeTestSupport {
             await(TIMEOUT, () -> flat.occupancy() == Occupancy.OCCUPIED, "OCCUPIED");
             door.door(false);
             await(TIMEOUT, () -> doorProvider.state() == OpenState.CLOSED, "the door close to be processed");
+            // the door's state changes before its listeners run: wait until Flat Occupancy has started its check
+            Device flatDevice = awaitService(Device.class, "(" + DeviceProperties.DEVICE_UID + "=" + flat.deviceUid()
+                    + ")", TIMEOUT);
+            await(TIMEOUT, () -> flatDevice.parameters().stream().anyMatch(p -> p.key().equals("leaveCheckUntil")
+                    && !String.valueOf(p.value()).isEmpty()), "Flat Occupancy's leave check to start");
 
             Instant later = t.plusSeconds(2 * 3600);
             sync.tickDone(later); // one timeAdvanced for two virtual hours

@@ -10,6 +10,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import org.apache.felix.service.command.Descriptor;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
@@ -54,17 +55,21 @@ public final class BackupCommands {
     }
 
     /** {@code backup}: the archive goes to the state folder as {@code tinysep-backup-<UTC time>.zip}. */
+    @Descriptor("writes the system backup (settings, rooms, drivers list, TinySEP's etc/ files; no passwords) to a signed"
+            + " zip archive tinysep-backup-<UTC time>.zip in the state folder")
     public String backup() {
         return write(null, false);
     }
 
     /** {@code backup <file>} or {@code backup --with-secrets}. */
-    public String backup(String fileOrFlag) {
+    @Descriptor("writes the system backup to the given file, or with --with-secrets also the state folder's secrets/")
+    public String backup(@Descriptor("the archive file to write, or --with-secrets") String fileOrFlag) {
         return WITH_SECRETS.equals(fileOrFlag) ? write(null, true) : write(option(fileOrFlag), false);
     }
 
     /** {@code backup --with-secrets <file>}. */
-    public String backup(String flag, String file) {
+    @Descriptor("writes the system backup with the state folder's secrets/ (not the signing key) to the given file")
+    public String backup(@Descriptor("--with-secrets") String flag, @Descriptor("the archive file to write") String file) {
         if (!WITH_SECRETS.equals(flag)) {
             throw new IllegalArgumentException("usage: tinysep:backup [--with-secrets] [file]");
         }
@@ -72,7 +77,9 @@ public final class BackupCommands {
     }
 
     /** {@code restore <file>}, or {@code restore --undo}. */
-    public String restore(String fileOrFlag) throws IOException {
+    @Descriptor("restores a signed backup archive after checking every file in it (only TinySEP's own settings; the"
+            + " clock mode is kept); a copy of the state it replaces is kept, and --undo brings that copy back")
+    public String restore(@Descriptor("the archive file, or --undo") String fileOrFlag) throws IOException {
         if (UNDO.equals(fileOrFlag)) {
             String out = restorer().undo();
             LOG.info("{}", out);
@@ -82,11 +89,19 @@ public final class BackupCommands {
     }
 
     /** {@code restore --force <file>}: also an unsigned or foreign archive (still fully validated). */
-    public String restore(String flag, String file) throws IOException {
+    @Descriptor("restores an unsigned or foreign archive as well (every other check still applies)")
+    public String restore(@Descriptor("--force") String flag, @Descriptor("the archive file") String file)
+            throws IOException {
         if (!FORCE.equals(flag)) {
             throw new IllegalArgumentException("usage: tinysep:restore [--force] <file> | tinysep:restore --undo");
         }
         return restore(option(file), true);
+    }
+
+    @Descriptor("with no argument: prints the usage")
+    public String restore() {
+        throw new IllegalArgumentException("missing arguments; usage: tinysep:restore [--force] <file> | tinysep:restore"
+                + " --undo (help tinysep:restore explains them)");
     }
 
     private String restore(String file, boolean force) throws IOException {
