@@ -156,8 +156,10 @@ class MailManagerDeviceTest {
         assertTrue(h.stderr().contains("WARN"));
         assertTrue(h.stderr().contains("Help needed"));
         assertEquals(MailStatus.NOT_CONFIGURED, mail.status());
+        // the status follows on the mail thread, after the log line
+        MailHarness.await("the status says why", () -> device.status().detail()
+                .equals("no SMTP host configured: alerts are only written to the log"));
         assertEquals(DeviceStatus.State.UNKNOWN, device.status().state());
-        assertEquals("no SMTP host configured: alerts are only written to the log", device.status().detail());
         assertEquals("none", device.health().delivery());
         assertTrue(device.parameters().stream().anyMatch(p -> p.key().equals("delivery")
                 && p.value().equals("no SMTP host configured: alerts are only written to the log")));
