@@ -62,6 +62,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         }
         publish(provider, MailManagerProvider.class);
         this.outbox = new Outbox(settings, transport, this, context::now, wall);
+        showHealth(); // from the start: the outbox only reports changes, and "no SMTP host" may never change
     }
 
     /** Applies a changed configuration without replacing the device (its consumers stay connected). */

@@ -49,8 +49,9 @@ class MailboxFullTest {
                             + RefusingSmtpServer.FULL + " to RCPT), retrying at ")));
             assertTrue(h.eventTexts().contains("mail \"Inactivity alert\" queued for full@care.test"), h.eventTexts()
                     .toString());
-            assertEquals(MailStatus.RETRYING, mail.status());
-            assertEquals(DeviceStatus.State.OFFLINE, device.status().state());
+            // the entry is written during the attempt, the status (and the device's) right after it
+            MailHarness.await("RETRYING", () -> mail.status() == MailStatus.RETRYING
+                    && device.status().state() == DeviceStatus.State.OFFLINE);
             assertTrue(device.status().detail().contains("not delivered yet to full@care.test"), device.status()
                     .toString());
             assertTrue(h.logs.events().stream().noneMatch(e -> e.kind() == EventKind.PROBLEM), "not given up");
