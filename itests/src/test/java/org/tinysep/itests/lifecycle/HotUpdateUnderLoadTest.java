@@ -41,6 +41,7 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
     private static final int NODES = 8;
     private static final int FRAMES_PER_SECOND = 5000;
     private static final int SWAPS = 3;
+    private static final Duration GRAPH_BACK = Duration.ofSeconds(60);
     private static final Duration AFTER_SWAP = Duration.ofMillis(1500);
     private static final List<String> CONSUMERS = List.of("FlatOccupancy", "FollowMeLight", "InactivityRecognition");
 
@@ -84,9 +85,12 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
         long t0 = System.nanoTime();
         movement.update(new ByteArrayInputStream(build));
         long returned = System.nanoTime();
-        while (!Topology.of(context).equals(graphBefore)) {
-            assertTrue("device graph back within 10 s after update()", System.nanoTime() - t0 < 10_000_000_000L);
-            Thread.onSpinWait();
+        for (Set<String> now = Topology.of(context); !now.equals(graphBefore); now = Topology.of(context)) {
+            // a generous bound, not a speed assertion: the swap time is a reported figure (a CI run once failed a
+            // 10 s bound); polling every 2 ms leaves the CPUs to the swap itself
+            assertTrue("device graph back within 60 s after update(); missing " + minus(graphBefore, now)
+                    + ", extra " + minus(now, graphBefore), System.nanoTime() - t0 < GRAPH_BACK.toNanos());
+            Thread.sleep(2);
         }
         long done = System.nanoTime();
         long radioAtDone = ledger.radioCount();
@@ -121,6 +125,12 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
         assertEquals("frames received during the swap but not delivered (the bus devices hold them for the new "
                 + "AmicaMovement devices): " + line, 0, dropped.size());
         return line;
+    }
+
+    private static Set<String> minus(Set<String> a, Set<String> b) {
+        Set<String> d = new TreeSet<>(a);
+        d.removeAll(b);
+        return d;
     }
 
     /** @return whether {@code consumer} is connected to the movement provider of every flooding node */
