@@ -2,7 +2,7 @@
  * Intermediate and AAL service interfaces: flat occupancy, house information, mail, time, inactivity recognition.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.api.service;
 
 import org.osgi.annotation.bundle.Export;

@@ -1,5 +1,6 @@
 package org.tinysep.inactivity.internal;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
@@ -7,6 +8,9 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.function.Supplier;
+import org.tinysep.inactivity.internal.learn.Limit;
+import org.tinysep.inactivity.internal.learn.Sighting;
 import java.util.stream.Collectors;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
@@ -29,14 +33,27 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
 
     private final Placements directory;
     private final LimitTable limits;
+    private final LimitPolicy policy;
+    private final Supplier<Instant> clock;
     private final Consumer<Activity> sink;
     private final ContactStates contacts = new ContactStates();
     private volatile Map<String, Room> rooms = Map.of();
 
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
+        this(directory, limits, LimitPolicy.thesis(), Instant::now, sink);
+    }
+
+    /**
+     * @param policy sets each activity's limit (fixed or learned) from the room's fixed limit
+     * @param clock  the platform's time
+     */
+    ActivityFactory(Placements directory, LimitTable limits, LimitPolicy policy, Supplier<Instant> clock,
+            Consumer<Activity> sink) {
         this.directory = directory;
         this.limits = limits;
+        this.policy = policy;
+        this.clock = clock;
         this.sink = sink;
     }
 
@@ -82,16 +99,32 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private Activity of(String deviceUid, Function<String, String> what, Instant at) {
         String name = directory.nameOf(deviceUid);
         String description = what.apply(name);
+        Placed p = placed(deviceUid);
+        Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), false), p.fixed(), clock.get());
+        return new Activity(p.uid(), p.name(), description, at, l.limit(), l.explanation());
+    }
+
+    /** A device's room now: UID (empty if unplaced), name, type and fixed limit. */
+    record Placed(String uid, String name, String type, Duration fixed) {
+    }
+
+    Placed placed(String deviceUid) {
         Optional<String> roomUid = directory.roomOf(deviceUid);
         if (roomUid.isEmpty()) {
-            return new Activity("", "unknown room (device " + name + ")", description, at, limits.defaultLimit());
+            return new Placed("", "unknown room (device " + directory.nameOf(deviceUid) + ")", "",
+                    limits.defaultLimit());
         }
         Room room = rooms.get(roomUid.get());
         if (room == null) {
-            return new Activity(roomUid.get(), "room " + roomUid.get(), description, at,
-                    limits.limitForUnknownRoom(roomUid.get()));
+            return new Placed(roomUid.get(), "room " + roomUid.get(), "", limits.limitForUnknownRoom(roomUid.get()));
         }
-        return new Activity(room.uid(), room.name(), description, at, limits.limitFor(room));
+        return new Placed(room.uid(), room.name(), room.type(), limits.limitFor(room));
+    }
+
+    /** @return the type of a room House Information knows, else empty */
+    String typeOf(String roomUid) {
+        Room r = rooms.get(roomUid);
+        return r == null ? "" : r.type();
     }
 
     int knownRooms() {

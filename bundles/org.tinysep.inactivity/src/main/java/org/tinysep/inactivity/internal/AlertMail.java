@@ -1,9 +1,11 @@
 package org.tinysep.inactivity.internal;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 import org.tinysep.api.service.InactivityAlert;
+import org.tinysep.inactivity.internal.learn.Words;
 
 /** The words of the help call: subject and body of the alert mail. */
 final class AlertMail {
@@ -48,12 +50,24 @@ final class AlertMail {
                 + full.format(outage.to()) + "): this alert is late.\n\nPlease check");
     }
 
+    /** @return for the event log: "; quiet for 1 h 10 min; usually at most ..." (empty without explanation) */
+    String why(InactivityAlert alert) {
+        return alert.explanation().isEmpty() ? ""
+                : "; quiet for " + quiet(alert) + " after " + alert.lastActivity() + "; " + alert.explanation();
+    }
+
+    private static String quiet(InactivityAlert alert) {
+        return Words.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt()));
+    }
+
     String body(InactivityAlert alert) {
         return "Inactivity Recognition raised an alert: nobody has been active for longer than the limit of "
                 + alert.roomName() + ".\n\n"
                 + "Room: " + alert.roomName() + (alert.roomUid().isEmpty() ? "" : " (" + alert.roomUid() + ")") + "\n"
                 + "Last activity: " + alert.lastActivity() + "\n"
                 + "Last activity at: " + full.format(alert.lastActivityAt()) + "\n"
+                + "Quiet for: " + quiet(alert) + "\n"
+                + (alert.explanation().isEmpty() ? "" : "Why this is unusual: " + alert.explanation() + "\n")
                 + "Alert raised at: " + full.format(alert.raisedAt()) + "\n\n"
                 + "Please check on the person. The alert clears by itself with the next activity in the flat.\n";
     }

@@ -19,7 +19,28 @@ public @interface InactivityConfig {
             + "e.g. 'Bathroom=30, 6f1c...=20'")
     String roomLimits() default "";
 
+    @AttributeDefinition(description = "LEARNED: limits learned per room, time of day and sleep from the home's "
+            + "own history (the fixed limits until enough history); THESIS: the thesis's fixed per-room limits")
+    Detector detector() default Detector.LEARNED;
+
+    @AttributeDefinition(description = "LEARNED: days with quiet periods a room and time window needs before its "
+            + "limit is learned", min = "1")
+    int learnMinDays() default 7;
+
+    @AttributeDefinition(description = "LEARNED: days of history learned from", min = "1")
+    int learnHistoryDays() default 28;
+
+    @AttributeDefinition(description = "LEARNED: a learned limit is never shorter (minutes)", min = "1")
+    int learnFloorMinutes() default 20;
+
+    @AttributeDefinition(description = "LEARNED: the night (sleep in a bedroom) begins at this hour", min = "0",
+            max = "23")
+    int nightStartHour() default 21;
+
+    @AttributeDefinition(description = "LEARNED: the night ends at this hour", min = "0", max = "23")
+    int nightEndHour() default 7;
+
     @AttributeDefinition(description = "Time zone for the times in alert mails, e.g. 'Europe/Berlin'; empty for "
-            + "the system's")
+            + "the system's (also the zone of the learned hours of the day)")
     String timeZone() default "";
 }

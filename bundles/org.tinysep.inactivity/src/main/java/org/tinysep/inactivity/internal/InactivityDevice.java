@@ -5,6 +5,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import org.tinysep.api.sensor.MovementLocation;
+import org.tinysep.inactivity.internal.learn.Sighting;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
@@ -45,12 +49,28 @@ final class InactivityDevice extends AbstractDevice
     private volatile String occupancySource;
     private volatile long lastHeartbeat = System.nanoTime();
     private final RoomActivity rooms = new RoomActivity();
+    private final LimitPolicy policy;
+    private final HistoryFromLog fromLog;
+    /** The activity sources connected so far (devices whose logged entries count as history). */
+    private final Set<String> sources = ConcurrentHashMap.newKeySet();
+    private volatile long lastResolve;
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
+        this(context, directory, limits, words, LimitPolicy.thesis(), null);
+    }
+
+    /**
+     * @param policy  fixed (THESIS) or learned (LEARNED) limits
+     * @param fromLog the LEARNED detector's entries from the event log's history waiting for their devices, or null
+     */
+    InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words,
+            LimitPolicy policy, HistoryFromLog fromLog) {
         super(context, Uids.of(context.driverName(), "inactivity"), context.driverName(), "Inactivity recognition");
         this.listeners = new Listeners<>(uid());
         this.logic = new InactivityLogic(limits.defaultLimit(), context.now());
-        this.activities = new ActivityFactory(directory, limits, this::activity);
+        this.policy = policy;
+        this.fromLog = fromLog;
+        this.activities = new ActivityFactory(directory, limits, policy, this::now, this::activity);
         this.help = new HelpCall(words);
         this.words = words;
         limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
@@ -60,16 +80,45 @@ final class InactivityDevice extends AbstractDevice
 
     void watch(MovementProvider p) {
         connect(p, MovementProvider.class, activities, true);
+        if (p.location() == MovementLocation.INSIDE) {
+            sources.add(p.deviceUid());
+        }
     }
 
     void watch(DoorProvider p) {
         connect(p, DoorProvider.class, activities, true);
         activities.contactConnected(p.deviceUid(), p.state());
+        sources.add(p.deviceUid());
     }
 
     void watch(WindowProvider p) {
         connect(p, WindowProvider.class, activities, true);
         activities.contactConnected(p.deviceUid(), p.state());
+        sources.add(p.deviceUid());
+    }
+
+    /** @return the room type of a room House Information knows, else empty (for the learner's sleep rule) */
+    String roomType(String roomUid) {
+        return activities.typeOf(roomUid);
+    }
+
+    /** Hands logged history of devices that are now sources to the learner (at most once a minute). */
+    private void resolveHistory() {
+        long wall = System.nanoTime();
+        if (fromLog == null || wall - lastResolve < HEARTBEAT_NANOS || !fromLog.hasPending()) {
+            return;
+        }
+        lastResolve = wall;
+        int n = fromLog.resolve(raw -> {
+            if (!sources.contains(raw.device())) {
+                return Optional.empty();
+            }
+            ActivityFactory.Placed p = activities.placed(raw.device());
+            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), false));
+        });
+        if (n > 0) {
+            event("learning: " + n + " logged activities of connected sensors added to the history");
+        }
     }
 
     void use(FlatOccupancyProvider p) {
@@ -127,6 +176,9 @@ final class InactivityDevice extends AbstractDevice
     }
 
     private void occupancy(Occupancy occupancy, Instant at) {
+        if (occupancy != Occupancy.UNKNOWN) {
+            policy.occupancy(occupancy == Occupancy.UNOCCUPIED, at);
+        }
         Optional<InactivityState> change;
         synchronized (logic) {
             change = logic.occupancy(occupancy, at);
@@ -144,6 +196,7 @@ final class InactivityDevice extends AbstractDevice
         }
         wentBack.ifPresent(from -> clockWentBack(from, now));
         announce(change, now, "limit reached");
+        resolveHistory();
         long wall = System.nanoTime();
         if (wall - lastHeartbeat >= HEARTBEAT_NANOS) {
             lastHeartbeat = wall;
@@ -153,7 +206,8 @@ final class InactivityDevice extends AbstractDevice
 
     private void announce(Optional<InactivityState> change, Instant at, String reason) {
         change.ifPresent(s -> {
-            String detail = s == InactivityState.ALERT ? alert().map(help::subject).orElse("") : "";
+            String detail = s == InactivityState.ALERT ? alert().map(a -> help.subject(a) + words.why(a)).orElse("")
+                    : "";
             event("inactivity " + lower(s) + " (" + reason + ")" + (detail.isEmpty() ? "" : ": " + detail));
             listeners.fire(l -> l.inactivityStateChanged(this, s, at));
             saveBackup(); // whether (since when) the flat is watched survives a crash
@@ -228,6 +282,8 @@ final class InactivityDevice extends AbstractDevice
                     Parameter.readOnly("lastActivity", logic.lastActivity()
                             .map(a -> a.description() + " in " + a.roomName() + " at " + a.at()).orElse(""),
                             "the last activity seen"),
+                    Parameter.readOnly("limitReason", logic.lastActivity().map(Activity::explanation).orElse(""),
+                            "why the deadline is what it is (detector " + policy.name() + ")"),
                     Parameter.readOnly("alert", logic.alert().map(help::subject).orElse(""), "the raised alert"),
                     Parameter.readOnly("lastActivityPerRoom", rooms.describe(), "room uid = last activity there"),
                     Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"));

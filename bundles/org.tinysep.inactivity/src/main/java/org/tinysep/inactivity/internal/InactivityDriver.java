@@ -1,6 +1,19 @@
 package org.tinysep.inactivity.internal;
 
+import java.time.Duration;
 import java.time.ZoneId;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+import org.tinysep.inactivity.internal.learn.HistoryLearner;
+import org.tinysep.inactivity.internal.learn.LearnedLimits;
+import org.tinysep.inactivity.internal.learn.LearningSettings;
+import org.tinysep.inactivity.internal.learn.SleepRule;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -43,6 +56,14 @@ public final class InactivityDriver extends AbstractDriver {
     private AlertMail words;
     private TrackedPlacements directory;
     private PlatformTicker ticker;
+    private LimitPolicy policy;
+    private HistoryLearner learner;
+    private HistoryFromLog fromLog;
+    private ExecutorService loader;
+
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    private volatile EventLog eventLog;
 
     public InactivityDriver() {
         super(NAME);
@@ -51,8 +72,10 @@ public final class InactivityDriver extends AbstractDriver {
     @Activate
     void activate(BundleContext bundleContext, InactivityConfig config) {
         limits = LimitTable.parse(config.defaultLimitMinutes(), config.typeLimits(), config.roomLimits());
-        words = new AlertMail(zone(config.timeZone()));
+        ZoneId zone = zone(config.timeZone());
+        words = new AlertMail(zone);
         start(bundleContext);
+        policy = policy(config, zone);
         directory = new TrackedPlacements(bundleContext);
         track(bundleContext, FlatOccupancyProvider.class);
         track(bundleContext, MailManagerProvider.class);
@@ -61,10 +84,61 @@ public final class InactivityDriver extends AbstractDriver {
         source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
         source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
         ticker = new PlatformTicker(bundleContext, "inactivity", now -> current().forEach(d -> d.tick(now)));
+        if (fromLog != null) {
+            int days = learner.settings().historyDays();
+            loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "inactivity-history"));
+            loader.execute(() -> loadHistory(days));
+        }
+    }
+
+    /** THESIS: fixed limits. LEARNED: a learner fed from the event log's history and live activity. */
+    private LimitPolicy policy(InactivityConfig config, ZoneId zone) {
+        Detector d = config.detector() == null ? Detector.LEARNED : config.detector();
+        if (d == Detector.THESIS) {
+            return LimitPolicy.thesis();
+        }
+        LearningSettings defaults = LearningSettings.defaults();
+        LearningSettings settings;
+        SleepRule sleep;
+        try {
+            settings = new LearningSettings(config.learnMinDays(), Math.max(config.learnMinDays(),
+                    config.learnHistoryDays()), defaults.margin(), defaults.pad(),
+                    Duration.ofMinutes(config.learnFloorMinutes()), defaults.ceiling(), defaults.halfWindow());
+            sleep = new SleepRule(config.nightStartHour(), config.nightEndHour(), zone);
+        } catch (IllegalArgumentException e) {
+            LOG.warn("learning configuration not usable ({}); using the defaults", e.getMessage());
+            context().event(EventKind.PROBLEM, "learning configuration not usable (" + e.getMessage()
+                    + "); using the defaults");
+            settings = defaults;
+            sleep = new SleepRule(21, 7, zone);
+        }
+        learner = new HistoryLearner(zone, sleep, settings);
+        fromLog = new HistoryFromLog(learner);
+        return LimitPolicy.learned(new LearnedLimits(learner));
+    }
+
+    private void loadHistory(int days) {
+        EventLog log = eventLog;
+        if (log == null) {
+            LOG.info("no event log: learning starts from live activity only");
+            return;
+        }
+        try {
+            String said = fromLog.load(log, context().now(), days);
+            LOG.info("{}", said);
+            context().event(EventKind.DEVICE_EVENT, said);
+        } catch (RuntimeException e) {
+            LOG.warn("event log history not read ({}); learning starts from live activity only", e.toString());
+            context().event(EventKind.PROBLEM, "event log history not read (" + e.getMessage()
+                    + "); learning starts from live activity only");
+        }
     }
 
     @Deactivate
     void deactivate() {
+        if (loader != null) {
+            loader.shutdownNow();
+        }
         ticker.close();
         for (int i = trackers.size() - 1; i >= 0; i--) {
             trackers.get(i).close();
@@ -110,7 +184,10 @@ public final class InactivityDriver extends AbstractDriver {
         if (!all.isEmpty()) {
             return all.get(0);
         }
-        InactivityDevice d = addDevice(new InactivityDevice(context(), directory, limits, words));
+        InactivityDevice d = addDevice(new InactivityDevice(context(), directory, limits, words, policy, fromLog));
+        if (learner != null) {
+            learner.roomTypes(d::roomType);
+        }
         optional.values().forEach(p -> attach(d, p));
         return d;
     }

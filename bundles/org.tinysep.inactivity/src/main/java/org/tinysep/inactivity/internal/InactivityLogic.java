@@ -95,7 +95,7 @@ final class InactivityLogic {
         Instant from = null;
         if (last != null && last.at().isAfter(limit)) {
             from = last.at();
-            last = new Activity(last.roomUid(), last.roomName(), last.description(), now, last.limit());
+            last = last.at(now);
         }
         if (watchingFrom != null && watchingFrom.isAfter(limit)) {
             from = later(from, watchingFrom);
@@ -151,8 +151,11 @@ final class InactivityLogic {
         }
         Instant at = deadline.get();
         alert = last == null
-                ? new InactivityAlert("", "unknown room", "no activity since watching began", watchingFrom, at)
-                : new InactivityAlert(last.roomUid(), last.roomName(), last.description(), last.at(), at);
+                ? new InactivityAlert("", "unknown room", "no activity since watching began", watchingFrom, at,
+                        "no activity at all since the flat was watched; default limit " + defaultLimit.toMinutes()
+                                + " min")
+                : new InactivityAlert(last.roomUid(), last.roomName(), last.description(), last.at(), at,
+                        last.explanation());
         return change(InactivityState.ALERT, at);
     }
 

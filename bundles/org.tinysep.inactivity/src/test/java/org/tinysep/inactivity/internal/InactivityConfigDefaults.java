@@ -37,6 +37,48 @@ final class InactivityConfigDefaults implements InactivityConfig {
         return text("timeZone");
     }
 
+    private static int number(String attribute) {
+        try {
+            return (Integer) InactivityConfig.class.getMethod(attribute).getDefaultValue();
+        } catch (NoSuchMethodException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @Override
+    public Detector detector() {
+        try {
+            return (Detector) InactivityConfig.class.getMethod("detector").getDefaultValue();
+        } catch (NoSuchMethodException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    @Override
+    public int learnMinDays() {
+        return number("learnMinDays");
+    }
+
+    @Override
+    public int learnHistoryDays() {
+        return number("learnHistoryDays");
+    }
+
+    @Override
+    public int learnFloorMinutes() {
+        return number("learnFloorMinutes");
+    }
+
+    @Override
+    public int nightStartHour() {
+        return number("nightStartHour");
+    }
+
+    @Override
+    public int nightEndHour() {
+        return number("nightEndHour");
+    }
+
     @Override
     public Class<? extends Annotation> annotationType() {
         return InactivityConfig.class;

@@ -1,0 +1,53 @@
+package org.tinysep.inactivity.internal;
+
+import java.time.Duration;
+import java.time.Instant;
+import org.tinysep.inactivity.internal.learn.LearnedLimits;
+import org.tinysep.inactivity.internal.learn.Limit;
+import org.tinysep.inactivity.internal.learn.Sighting;
+import org.tinysep.inactivity.internal.learn.Words;
+
+/** Sets the limit of the quiet period that an activity begins: fixed (THESIS) or learned (LEARNED). */
+interface LimitPolicy {
+
+    /**
+     * @param fixed the room's fixed limit from the configuration
+     * @param now   the platform's time
+     */
+    Limit limitAfter(Sighting s, Duration fixed, Instant now);
+
+    /** The flat became empty ({@code empty}) or occupied again at {@code at}. */
+    default void occupancy(boolean empty, Instant at) {
+    }
+
+    /** @return the {@link Detector} name */
+    default String name() {
+        return Detector.THESIS.name();
+    }
+
+    /** The thesis's fixed per-room limits. */
+    static LimitPolicy thesis() {
+        return (s, fixed, now) -> new Limit(fixed, false,
+                "fixed limit of " + Words.duration(fixed) + " for " + s.roomName() + " (detector THESIS)");
+    }
+
+    /** Learned limits; every activity is also learned from. */
+    static LimitPolicy learned(LearnedLimits limits) {
+        return new LimitPolicy() {
+            @Override
+            public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
+                return limits.limitAfter(s, fixed, now);
+            }
+
+            @Override
+            public String name() {
+                return Detector.LEARNED.name();
+            }
+
+            @Override
+            public void occupancy(boolean empty, Instant at) {
+                limits.history().occupancy(empty, at);
+            }
+        };
+    }
+}

@@ -1,0 +1,117 @@
+package org.tinysep.inactivity.internal.learn;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.ZoneId;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.function.Function;
+
+/**
+ * Keeps the home's recent history (sightings and the times the flat was empty, from the event log at start and
+ * live afterwards) and learns a {@link QuietProfile} from it, anew once per local day (and whenever history was
+ * loaded). Sightings in the same room less than {@link #MERGE} apart are kept as one (the later), so a motion
+ * sensor reporting every 2 s does not fill memory; that changes no quiet period longer than that. Thread-safe.
+ */
+public final class HistoryLearner {
+
+    static final Duration MERGE = Duration.ofSeconds(60);
+
+    private final ZoneId zone;
+    private final SleepRule sleep;
+    private final LearningSettings settings;
+    private final List<Sighting> sightings = new ArrayList<>();
+    private final List<QuietGaps.Away> away = new ArrayList<>();
+    private Instant awaySince;
+    private QuietProfile profile;
+    private LocalDate builtFor;
+    private boolean dirty = true;
+    private volatile Function<String, String> roomTypes = room -> "";
+
+    public HistoryLearner(ZoneId zone, SleepRule sleep, LearningSettings settings) {
+        this.zone = zone;
+        this.sleep = sleep;
+        this.settings = settings;
+    }
+
+    /** Something happened (live or from the log). */
+    public synchronized void add(Sighting s) {
+        if (!sightings.isEmpty()) {
+            Sighting last = sightings.get(sightings.size() - 1);
+            if (last.room().equals(s.room()) && last.inBed() == s.inBed() && !s.at().isBefore(last.at())
+                    && Duration.between(last.at(), s.at()).compareTo(MERGE) < 0) {
+                sightings.set(sightings.size() - 1, s);
+                return;
+            }
+            if (s.at().isBefore(last.at())) {
+                dirty = true; // from the log after live ones: sorted at the next learning
+            }
+        }
+        sightings.add(s);
+    }
+
+    /** The flat became empty ({@code empty}) or occupied again at {@code at}. */
+    public synchronized void occupancy(boolean empty, Instant at) {
+        if (empty && awaySince == null) {
+            awaySince = at;
+        } else if (!empty && awaySince != null) {
+            if (at.isAfter(awaySince)) {
+                away.add(new QuietGaps.Away(awaySince, at));
+            }
+            awaySince = null;
+        }
+    }
+
+    /** History was loaded from the log: learn anew at the next question. */
+    public synchronized void loaded() {
+        dirty = true;
+    }
+
+    /** @return the profile learned from the history up to {@code now} (at most a day old) */
+    public synchronized QuietProfile profile(Instant now) {
+        LocalDate today = now.atZone(zone).toLocalDate();
+        if (profile == null || dirty || !today.equals(builtFor)) {
+            Instant oldest = now.minus(Duration.ofDays(settings.historyDays()));
+            sightings.sort(Comparator.comparing(Sighting::at));
+            sightings.removeIf(s -> s.at().isBefore(oldest));
+            away.sort(Comparator.comparing(QuietGaps.Away::from));
+            away.removeIf(a -> a.to().isBefore(oldest));
+            List<QuietGaps.Away> empty = new ArrayList<>(away);
+            if (awaySince != null) {
+                empty.add(new QuietGaps.Away(awaySince, now));
+            }
+            List<Sighting> typed = sightings.stream().map(this::typed).toList();
+            profile = new QuietProfile(QuietGaps.of(typed, empty, sleep), zone, settings);
+            builtFor = today;
+            dirty = false;
+        }
+        return profile;
+    }
+
+    /** Room types for sightings that came without one (read from the log before the house plan was known). */
+    public void roomTypes(Function<String, String> types) {
+        roomTypes = types;
+    }
+
+    private Sighting typed(Sighting s) {
+        if (!s.roomType().isEmpty() || s.inBed()) {
+            return s;
+        }
+        String type = roomTypes.apply(s.room());
+        return type == null || type.isEmpty() ? s : new Sighting(s.at(), s.room(), s.roomName(), type, false);
+    }
+
+    public synchronized int size() {
+        return sightings.size();
+    }
+
+    public SleepRule sleep() {
+        return sleep;
+    }
+
+    public LearningSettings settings() {
+        return settings;
+    }
+}

@@ -1,0 +1,29 @@
+package org.tinysep.inactivity.internal.learn;
+
+import java.time.Duration;
+
+/**
+ * A limit learned for one room, state and time of day, with how it was learned.
+ *
+ * @param roomName  the room's name
+ * @param asleep    whether it is the sleep state's limit
+ * @param scope     the time window in words, e.g. "between 13:00 and 16:00 on weekdays", "at any time of day"
+ * @param usual     the usual longest quiet period there (see {@link UsualQuiet})
+ * @param limit     the limit that follows from it
+ * @param days      how many days of history it was learned from
+ * @param periods   how many quiet periods those days held
+ */
+public record Learned(String roomName, boolean asleep, String scope, Duration usual, Duration limit, int days,
+        int periods) {
+
+    /**
+     * @return e.g. "usually at most 40 min between 13:00 and 16:00 in Bathroom, from 21 days (63 quiet periods);
+     *         limit 1 h 10 min = 1.5 × usual + 10 min, at least 20 min"
+     */
+    public String explain(LearningSettings s) {
+        return "usually at most " + Words.duration(usual) + " " + scope + (asleep ? " asleep" : "") + " in "
+                + roomName + ", from " + days + " days (" + periods + " quiet periods); limit "
+                + Words.duration(limit) + " = " + Words.factor(s.margin()) + " × usual + " + Words.duration(s.pad())
+                + ", at least " + Words.duration(s.floor());
+    }
+}

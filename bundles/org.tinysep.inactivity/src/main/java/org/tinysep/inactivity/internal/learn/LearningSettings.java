@@ -1,0 +1,34 @@
+package org.tinysep.inactivity.internal.learn;
+
+import java.time.Duration;
+
+/**
+ * How limits are learned from quiet periods.
+ *
+ * @param minDays     a time window needs quiet periods on at least this many different days before its limit is
+ *                    learned (before: the fixed limit, "cold start")
+ * @param historyDays how many days of history are kept and learned from
+ * @param margin      the learned limit is the usual maximum times this factor ...
+ * @param pad         ... plus this
+ * @param floor       a learned limit is never shorter
+ * @param ceiling     nor longer (a collapse must be reported within this)
+ * @param halfWindow  quiet periods that began this many hours before or after the hour asked for count too
+ */
+public record LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
+        Duration ceiling, int halfWindow) {
+
+    /** The defaults documented in the bundle README. */
+    public static LearningSettings defaults() {
+        return new LearningSettings(7, 28, 1.5, Duration.ofMinutes(10), Duration.ofMinutes(20),
+                Duration.ofHours(12), 1);
+    }
+
+    public LearningSettings {
+        if (minDays < 1 || historyDays < minDays || margin < 1 || pad.isNegative() || floor.isNegative()
+                || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11) {
+            throw new IllegalArgumentException("inconsistent learning settings: minDays " + minDays
+                    + ", historyDays " + historyDays + ", margin " + margin + ", pad " + pad + ", floor " + floor
+                    + ", ceiling " + ceiling + ", halfWindow " + halfWindow);
+        }
+    }
+}

@@ -1,0 +1,108 @@
+package org.tinysep.inactivity.internal.learn;
+
+import java.time.DayOfWeek;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.ZoneId;
+import java.time.ZonedDateTime;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+
+/**
+ * What the home's history says about quiet periods, per room, state (awake or asleep) and time of day. Asked for
+ * a room, a state and a moment, it looks for enough history (quiet periods on {@code minDays} days or more) in
+ * this order: the hours around the moment's hour on the same day type (weekday or weekend; only where both day
+ * types have enough days), the hours around it on any day, then the room and state at any time of day. Without
+ * enough history there is no learned limit (the caller uses the fixed one). Immutable; answers are cached.
+ */
+public final class QuietProfile {
+
+    private enum DayType { WEEKDAY, WEEKEND }
+
+    private record Key(String room, boolean asleep, int hour, DayType day) {
+    }
+
+    private final Map<String, List<Gap>> byRoom = new HashMap<>();
+    private final ZoneId zone;
+    private final LearningSettings settings;
+    private final Map<Key, Optional<Learned>> cache = new ConcurrentHashMap<>();
+
+    public QuietProfile(List<Gap> gaps, ZoneId zone, LearningSettings settings) {
+        this.zone = zone;
+        this.settings = settings;
+        for (Gap g : gaps) {
+            byRoom.computeIfAbsent(g.start().room(), r -> new ArrayList<>()).add(g);
+        }
+    }
+
+    /** @return the learned limit for a quiet period beginning at {@code at} in {@code room}, if history suffices */
+    public Optional<Learned> learned(String room, String roomName, boolean asleep, Instant at) {
+        ZonedDateTime t = at.atZone(zone);
+        Key key = new Key(room, asleep, t.getHour(), dayType(t.getDayOfWeek()));
+        return cache.computeIfAbsent(key, k -> compute(k, roomName));
+    }
+
+    private Optional<Learned> compute(Key k, String roomName) {
+        List<Gap> all = byRoom.getOrDefault(k.room(), List.of()).stream().filter(g -> g.asleep() == k.asleep())
+                .toList();
+        List<Gap> around = all.stream().filter(g -> near(g, k.hour())).toList();
+        int from = Math.floorMod(k.hour() - settings.halfWindow(), 24);
+        int to = Math.floorMod(k.hour() + settings.halfWindow() + 1, 24);
+        String hours = settings.halfWindow() >= 12 ? "at any time of day"
+                : String.format("between %02d:00 and %02d:00", from, to);
+        List<Gap> sameDay = around.stream().filter(g -> dayOf(g) == k.day()).toList();
+        List<Gap> otherDay = around.stream().filter(g -> dayOf(g) != k.day()).toList();
+        if (days(sameDay).size() >= settings.minDays() && days(otherDay).size() >= settings.minDays()) {
+            return Optional.of(learn(sameDay, roomName, k.asleep(),
+                    hours + (k.day() == DayType.WEEKEND ? " at weekends" : " on weekdays")));
+        }
+        if (days(around).size() >= settings.minDays()) {
+            return Optional.of(learn(around, roomName, k.asleep(), hours));
+        }
+        if (days(all).size() >= settings.minDays()) {
+            return Optional.of(learn(all, roomName, k.asleep(), "at any time of day"));
+        }
+        return Optional.empty();
+    }
+
+    private Learned learn(List<Gap> gaps, String roomName, boolean asleep, String scope) {
+        Map<LocalDate, Duration> maxima = days(gaps);
+        Duration usual = UsualQuiet.usual(new ArrayList<>(maxima.values()));
+        return new Learned(roomName, asleep, scope, usual, UsualQuiet.limit(usual, settings), maxima.size(),
+                gaps.size());
+    }
+
+    /** @return the longest quiet period per local day */
+    private Map<LocalDate, Duration> days(List<Gap> gaps) {
+        Map<LocalDate, Duration> m = new TreeMap<>();
+        for (Gap g : gaps) {
+            m.merge(g.start().at().atZone(zone).toLocalDate(), g.length(), (a, b) -> a.compareTo(b) >= 0 ? a : b);
+        }
+        return m;
+    }
+
+    private boolean near(Gap g, int hour) {
+        int h = g.start().at().atZone(zone).getHour();
+        int d = Math.abs(h - hour);
+        return Math.min(d, 24 - d) <= settings.halfWindow();
+    }
+
+    private DayType dayOf(Gap g) {
+        return dayType(g.start().at().atZone(zone).getDayOfWeek());
+    }
+
+    private static DayType dayType(DayOfWeek d) {
+        return d == DayOfWeek.SATURDAY || d == DayOfWeek.SUNDAY ? DayType.WEEKEND : DayType.WEEKDAY;
+    }
+
+    /** @return how many different days the history covers (any room) */
+    public int historyDays() {
+        return days(byRoom.values().stream().flatMap(List::stream).toList()).size();
+    }
+}
