@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
@@ -21,6 +22,10 @@ import org.tinysep.api.sensor.MovementListener;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
+import org.tinysep.api.sensor.WindowListener;
+import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.api.sensor.presence.PresenceListener;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.FlatOccupancyListener;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
@@ -34,13 +39,16 @@ import org.tinysep.device.support.Uids;
  * counts as vital, so the device removes itself only when it has none left (thesis Fig 3.4).
  */
 final class FlatOccupancyDevice extends AbstractDevice
-        implements FlatOccupancyProvider, MovementListener, DoorListener {
+        implements FlatOccupancyProvider, MovementListener, DoorListener, WindowListener, PresenceListener {
 
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
     /** The last state each door reported, so a first "closed" report is not taken for a closing. */
     private final Map<String, OpenState> lastDoorStates = new ConcurrentHashMap<>();
+    /** The last state each window or contact reported: only a change from it is activity. */
+    private final Map<String, OpenState> lastWindowStates = new ConcurrentHashMap<>();
+    private final Set<String> windows = ConcurrentHashMap.newKeySet();
 
     FlatOccupancyDevice(DriverContext context, Duration leaveTimeout, Duration exitGrace) {
         super(context, Uids.of(context.driverName(), "flat"), context.driverName(), "Flat occupancy");
@@ -56,6 +64,72 @@ final class FlatOccupancyDevice extends AbstractDevice
 
     void watch(DoorProvider door) {
         connect(door, DoorProvider.class, this, true);
+    }
+
+    /** Windows and contacts on furniture are evidence, not a reason for this device to exist (thesis Fig 3.3). */
+    void watch(WindowProvider window) {
+        if (!windows.add(window.deviceUid())) {
+            return; // the driver's tracker and a new device may both offer it
+        }
+        connect(window, WindowProvider.class, this, false);
+        lastWindowStates.put(window.deviceUid(), window.state());
+    }
+
+    /** Mats, flush and appliances: evidence, and a home with nothing else still has a Flat Occupancy. */
+    void watch(PresenceProvider presence) {
+        connect(presence, PresenceProvider.class, this, true);
+        if (presence.kind().holdsPerson() && presence.present()) {
+            synchronized (logic) {
+                logic.holdsPerson(presence.deviceUid(), true, true, now());
+            }
+        }
+    }
+
+    /** A provider went away (the driver closes the connection): a mat no longer says anyone is here. */
+    void forget(String providerUid) {
+        windows.remove(providerUid);
+        synchronized (logic) {
+            logic.forget(providerUid);
+        }
+    }
+
+    @Override
+    public void windowChanged(WindowProvider source, OpenState state, Instant at) {
+        OpenState previous = lastWindowStates.put(source.deviceUid(), state);
+        if (state != OpenState.UNKNOWN && previous != null && previous != OpenState.UNKNOWN && previous != state) {
+            activity(at, "window " + source.deviceUid() + " " + state.name().toLowerCase());
+        }
+    }
+
+    @Override
+    public void presenceChanged(PresenceProvider source, boolean present, boolean first, Instant at) {
+        if (first && !present) {
+            return;
+        }
+        Optional<Occupancy> change;
+        Optional<Instant> wentBack;
+        Instant now = now();
+        synchronized (logic) {
+            wentBack = logic.rebase(now);
+            change = source.kind().holdsPerson() ? logic.holdsPerson(source.deviceUid(), present, first, at)
+                    : first ? Optional.empty() : logic.indoorActivity(at);
+        }
+        clockWentBack(wentBack, now);
+        announce(change, at, source.kind().name().toLowerCase() + " " + source.deviceUid() + " "
+                + (present ? "on" : "off"));
+    }
+
+    /** Indoor activity other than motion (an inner door, a window, a contact). */
+    private void activity(Instant at, String what) {
+        Optional<Occupancy> change;
+        Optional<Instant> wentBack;
+        Instant now = now();
+        synchronized (logic) {
+            wentBack = logic.rebase(now);
+            change = logic.indoorActivity(at);
+        }
+        clockWentBack(wentBack, now);
+        announce(change, at, what);
     }
 
     @Override
@@ -76,7 +150,13 @@ final class FlatOccupancyDevice extends AbstractDevice
     @Override
     public void doorChanged(DoorProvider source, OpenState state, Instant at) {
         OpenState previous = lastDoorStates.put(source.deviceUid(), state);
-        if (source.kind() != DoorKind.OUTER || state == OpenState.UNKNOWN) {
+        if (state == OpenState.UNKNOWN) {
+            return;
+        }
+        if (source.kind() != DoorKind.OUTER) {
+            if (previous != null && previous != OpenState.UNKNOWN && previous != state) {
+                activity(at, "inner door " + source.deviceUid() + " " + state.name().toLowerCase());
+            }
             return;
         }
         if (state == OpenState.CLOSED && (previous == null || previous == OpenState.UNKNOWN)) {
@@ -105,7 +185,7 @@ final class FlatOccupancyDevice extends AbstractDevice
             change = logic.tick(now);
         }
         clockWentBack(wentBack, now);
-        announce(change, now, "no indoor motion for " + leaveTimeout.toSeconds() + " s after the door closed");
+        announce(change, now, "no indoor activity for " + leaveTimeout.toSeconds() + " s after the door closed");
     }
 
     private void announce(Optional<Occupancy> change, Instant at, String reason) {
@@ -198,6 +278,8 @@ final class FlatOccupancyDevice extends AbstractDevice
                     Parameter.readOnly("since", logic.since(), "when it was reached"),
                     Parameter.readOnly("leaveCheckUntil", logic.leaveDeadline().map(Instant::toString).orElse(""),
                             "end of the pending leave check"),
+                    Parameter.readOnly("someoneHere", String.join(", ", logic.here()),
+                            "bed or seat mats that are ON (the flat stays occupied while any is)"),
                     Parameter.readOnly("leaveTimeoutSeconds", leaveTimeout.toSeconds(),
                             "configured in pid org.tinysep.flatoccupancy"));
         }

@@ -3,6 +3,11 @@ package org.tinysep.flatoccupancy.internal;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.Optional;
+import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -30,6 +35,9 @@ public final class FlatOccupancyDriver extends AbstractDriver {
     private Duration exitGrace;
     private ProviderTracker<MovementProvider> movements;
     private ProviderTracker<DoorProvider> doors;
+    private ProviderTracker<WindowProvider> windows;
+    private final Map<String, WindowProvider> windowsSeen = new ConcurrentHashMap<>();
+    private ProviderTracker<PresenceProvider> presences;
     private PlatformTicker ticker;
 
     public FlatOccupancyDriver() {
@@ -45,12 +53,25 @@ public final class FlatOccupancyDriver extends AbstractDriver {
                 (movement, uid) -> device().watch(movement), (movement, uid) -> providerGone(uid))).open();
         doors = new ProviderTracker<>(bundleContext, DoorProvider.class, null, ProviderTracker.Callback.of(
                 (door, uid) -> device().watch(door), (door, uid) -> providerGone(uid))).open();
+        presences = new ProviderTracker<>(bundleContext, PresenceProvider.class, null, ProviderTracker.Callback.of(
+                (p, uid) -> device().watch(p), (p, uid) -> gone(uid))).open();
+        // windows only join an existing device (the thesis creates it for movement and doors, Fig 3.3)
+        windows = new ProviderTracker<>(bundleContext, WindowProvider.class, null, ProviderTracker.Callback.of(
+                (w, uid) -> {
+                    windowsSeen.put(uid, w);
+                    existing().ifPresent(d -> d.watch(w));
+                }, (w, uid) -> {
+                    windowsSeen.remove(uid);
+                    gone(uid);
+                })).open();
         ticker = new PlatformTicker(bundleContext, "flat-occupancy", this::tick);
     }
 
     @Deactivate
     void deactivate() {
         ticker.close();
+        windows.close();
+        presences.close();
         movements.close();
         doors.close();
         stop();
@@ -63,9 +84,24 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         }
     }
 
-    /** @return the single device, created on first need */
+    private void gone(String uid) {
+        existing().ifPresent(d -> d.forget(uid));
+        providerGone(uid);
+    }
+
+    private Optional<FlatOccupancyDevice> existing() {
+        List<FlatOccupancyDevice> all = devices(FlatOccupancyDevice.class);
+        return all.isEmpty() ? Optional.empty() : Optional.of(all.get(0));
+    }
+
+    /** @return the single device, created on first need; windows present then join it */
     private synchronized FlatOccupancyDevice device() {
         List<FlatOccupancyDevice> all = devices(FlatOccupancyDevice.class);
-        return all.isEmpty() ? addDevice(new FlatOccupancyDevice(context(), leaveTimeout, exitGrace)) : all.get(0);
+        if (!all.isEmpty()) {
+            return all.get(0);
+        }
+        FlatOccupancyDevice d = addDevice(new FlatOccupancyDevice(context(), leaveTimeout, exitGrace));
+        windowsSeen.values().forEach(d::watch);
+        return d;
     }
 }

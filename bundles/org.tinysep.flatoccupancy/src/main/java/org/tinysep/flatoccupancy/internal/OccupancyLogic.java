@@ -4,13 +4,17 @@ import java.time.Duration;
 import java.time.Instant;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
+import java.util.TreeSet;
 import org.tinysep.api.service.Occupancy;
 
 /**
  * The flat occupancy algorithm (our decision for the thesis's missing Figure 4.4; state diagram in the bundle
  * README). Pure logic with explicit times, so it runs in virtual time and is tested without sleeping.
  * <ul>
- * <li>Indoor motion means someone is home: OCCUPIED, and any pending leave check is cancelled.</li>
+ * <li>Any indoor activity (motion, inner doors, windows and contacts, mats, flush, appliances) means someone is
+ * home: OCCUPIED, and any pending leave check is cancelled.</li>
+ * <li>A bed or seat mat that is ON says someone is here now: a leave check ends without UNOCCUPIED.</li>
  * <li>An outer door opening while not OCCUPIED means someone arrived: OCCUPIED.</li>
  * <li>An outer door closing starts a leave check. If no indoor motion is reported within {@code leaveTimeout}
  * after the close, the flat becomes UNOCCUPIED. Motion in the first {@code exitGrace} after the close is
@@ -35,6 +39,8 @@ final class OccupancyLogic {
     private Instant since;
     private Instant lastClose;
     private Instant leaveDeadline;
+    /** Sensors that say someone is here right now (a bed or seat mat that is ON). */
+    private final Set<String> here = new TreeSet<>();
 
     OccupancyLogic(Duration leaveTimeout, Duration exitGrace, Instant start) {
         if (leaveTimeout.compareTo(exitGrace) <= 0) {
@@ -48,11 +54,46 @@ final class OccupancyLogic {
 
     /** Indoor motion was reported at {@code at}. */
     Optional<Occupancy> motion(Instant at) {
+        return indoorActivity(at);
+    }
+
+    /**
+     * Any indoor activity at {@code at}: motion, an inner door or a window changing, a mat, flush or appliance
+     * turning on or off. Someone is home: OCCUPIED, and a pending leave check is cancelled, except within the exit
+     * grace after the outer door closed (the leaving person).
+     */
+    Optional<Occupancy> indoorActivity(Instant at) {
         if (lastClose != null && at.isBefore(lastClose.plus(exitGrace))) {
             return Optional.empty();
         }
         leaveDeadline = null;
         return change(Occupancy.OCCUPIED, at);
+    }
+
+    /**
+     * A bed or seat mat turned ON ({@code on}) or OFF: activity (unless {@code first}: a first report tells the
+     * resting state only), and while any is ON someone is here, so no leave check ends in UNOCCUPIED.
+     */
+    Optional<Occupancy> holdsPerson(String source, boolean on, boolean first, Instant at) {
+        if (on) {
+            here.add(source);
+        } else {
+            here.remove(source);
+        }
+        if (first) {
+            return on && state != Occupancy.OCCUPIED ? change(Occupancy.OCCUPIED, at) : Optional.empty();
+        }
+        return indoorActivity(at);
+    }
+
+    /** A sensor went away: it no longer says anyone is here. */
+    void forget(String source) {
+        here.remove(source);
+    }
+
+    /** @return the sensors that say someone is here right now */
+    Set<String> here() {
+        return Set.copyOf(here);
     }
 
     /** An outer door opened at {@code at}. */
@@ -113,6 +154,9 @@ final class OccupancyLogic {
         }
         Instant at = leaveDeadline;
         leaveDeadline = null;
+        if (!here.isEmpty()) {
+            return Optional.empty(); // a mat says someone is still here: nobody (or not everybody) left
+        }
         return change(Occupancy.UNOCCUPIED, at);
     }
 

@@ -22,6 +22,9 @@ import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.service.Room;
+import org.tinysep.api.sensor.presence.PresenceKind;
+import org.tinysep.api.sensor.presence.PresenceListener;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.device.support.Placements;
 
 /**
@@ -29,7 +32,7 @@ import org.tinysep.device.support.Placements;
  * {@code tinysep.room} property at that moment, its name and type from House Information, its limit from the
  * {@link LimitTable}. A door's or window's first report is no activity ({@link ContactStates}).
  */
-final class ActivityFactory implements MovementListener, DoorListener, WindowListener {
+final class ActivityFactory implements MovementListener, DoorListener, WindowListener, PresenceListener {
 
     private final Placements directory;
     private final LimitTable limits;
@@ -83,6 +86,17 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         }
     }
 
+    /** A mat, flush or appliance turning on or off is activity; a bed mat turning on says the person is in bed. */
+    @Override
+    public void presenceChanged(PresenceProvider source, boolean present, boolean first, Instant at) {
+        if (first) {
+            return; // the resting state after a start, like a contact's first report
+        }
+        String what = source.kind().name().toLowerCase(Locale.ROOT);
+        boolean inBed = present && source.kind() == PresenceKind.BED;
+        sink.accept(of(source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed));
+    }
+
     private static String lower(OpenState s) {
         return s.name().toLowerCase(Locale.ROOT);
     }
@@ -97,10 +111,14 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
      * @param what      builds the description from the device's name, e.g. {@code n -> "movement by " + n}
      */
     private Activity of(String deviceUid, Function<String, String> what, Instant at) {
+        return of(deviceUid, what, at, false);
+    }
+
+    private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed) {
         String name = directory.nameOf(deviceUid);
         String description = what.apply(name);
         Placed p = placed(deviceUid);
-        Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), false), p.fixed(), clock.get());
+        Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed), p.fixed(), clock.get());
         return new Activity(p.uid(), p.name(), description, at, l.limit(), l.explanation());
     }
 

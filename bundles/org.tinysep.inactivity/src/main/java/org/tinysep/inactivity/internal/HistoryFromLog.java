@@ -28,10 +28,11 @@ final class HistoryFromLog {
     static final int MAX_ENTRIES = 2_000_000;
 
     private static final Set<String> ACTIVITY = Set.of("movement detected", "door opened",
-            "door closed", "window opened", "window closed");
+            "door closed", "window opened", "window closed", "bed on", "bed off", "seat on", "seat off",
+            "flush on", "flush off", "appliance on", "appliance off", "other on", "other off");
 
     /** A waiting activity entry: when and which device. */
-    record Raw(Instant at, String device) {
+    record Raw(Instant at, String device, boolean inBed) {
     }
 
     private final HistoryLearner learner;
@@ -51,7 +52,7 @@ final class HistoryFromLog {
             for (EventEntry e : h.entries()) {
                 String m = e.message();
                 if (ACTIVITY.contains(m) || m.startsWith("movement detected at ")) {
-                    pending.add(new Raw(e.time(), e.origin()));
+                    pending.add(new Raw(e.time(), e.origin(), m.equals("bed on")));
                     activities++;
                 } else if (m.startsWith("flat unoccupied (") || m.startsWith("flat occupied (")) {
                     learner.occupancy(m.startsWith("flat unoccupied"), e.time());

@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.sensor.MovementLocation;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.inactivity.internal.learn.Sighting;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
@@ -97,6 +98,11 @@ final class InactivityDevice extends AbstractDevice
         sources.add(p.deviceUid());
     }
 
+    void watch(PresenceProvider p) {
+        connect(p, PresenceProvider.class, activities, true);
+        sources.add(p.deviceUid());
+    }
+
     /** @return the room type of a room House Information knows, else empty (for the learner's sleep rule) */
     String roomType(String roomUid) {
         return activities.typeOf(roomUid);
@@ -114,7 +120,7 @@ final class InactivityDevice extends AbstractDevice
                 return Optional.empty();
             }
             ActivityFactory.Placed p = activities.placed(raw.device());
-            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), false));
+            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), raw.inBed()));
         });
         if (n > 0) {
             event("learning: " + n + " logged activities of connected sensors added to the history");

@@ -29,6 +29,7 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
@@ -83,6 +84,7 @@ public final class InactivityDriver extends AbstractDriver {
         source(bundleContext, MovementProvider.class, (d, p) -> d.watch(p));
         source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
         source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
+        source(bundleContext, PresenceProvider.class, (d, p) -> d.watch(p));
         ticker = new PlatformTicker(bundleContext, "inactivity", now -> current().forEach(d -> d.tick(now)));
         if (fromLog != null) {
             int days = learner.settings().historyDays();
