@@ -75,6 +75,11 @@ final class FlatOccupancyDevice extends AbstractDevice
         lastWindowStates.put(window.deviceUid(), window.state());
     }
 
+    /** The window's state as if it had been connected in {@code state} (tests: connecting needs a framework). */
+    void watchStateForTest(WindowProvider window, OpenState state) {
+        lastWindowStates.put(window.deviceUid(), state);
+    }
+
     /** Mats, flush and appliances: evidence, and a home with nothing else still has a Flat Occupancy. */
     void watch(PresenceProvider presence) {
         connect(presence, PresenceProvider.class, this, true);
