@@ -18,12 +18,12 @@ public record Learned(String roomName, boolean asleep, String scope, Duration us
 
     /**
      * @return e.g. "usually at most 40 min between 13:00 and 16:00 in Bathroom, from 21 days (63 quiet periods);
-     *         limit 1 h 10 min = 1.5 × usual + 10 min, at least 20 min"
+     *         limit 1 h 10 min = usual x 1.5 + 10 min, at least 20 min"
      */
     public String explain(LearningSettings s) {
         return "usually at most " + Words.duration(usual) + " " + scope + (asleep ? " asleep" : "") + " in "
-                + roomName + ", from " + days + " days (" + periods + " quiet periods); limit "
-                + Words.duration(limit) + " = " + Words.factor(s.margin()) + " × usual + " + Words.duration(s.pad())
+                + roomName + ", from " + Words.count(days, "day") + " (" + Words.count(periods, "quiet period") + "); limit "
+                + Words.duration(limit) + " = usual x " + Words.factor(s.margin()) + " + " + Words.duration(s.pad())
                 + ", at least " + Words.duration(s.floor());
     }
 }

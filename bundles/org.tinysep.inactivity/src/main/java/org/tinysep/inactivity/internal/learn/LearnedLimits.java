@@ -33,7 +33,7 @@ public final class LearnedLimits {
     private Limit coldStart(Sighting s, Duration fixed, boolean asleep, LearningSettings set) {
         Duration d = fixed;
         return new Limit(d, asleep, "fixed limit of " + Words.duration(d) + " for " + s.roomName()
-                + (asleep ? " asleep" : "") + ": fewer than " + set.minDays() + " days of history for this room"
+                + (asleep ? " asleep" : "") + ": fewer than " + Words.count(set.minDays(), "day") + " of history for this room"
                 + (asleep ? " asleep" : "") + " yet, so nothing is learned");
     }
 

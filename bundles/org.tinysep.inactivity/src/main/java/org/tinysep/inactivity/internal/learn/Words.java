@@ -22,6 +22,11 @@ public final class Words {
         return m % 60 == 0 ? m / 60 + " h" : m / 60 + " h " + m % 60 + " min";
     }
 
+    /** @return e.g. "1 day", "21 days" */
+    public static String count(int n, String noun) {
+        return n + " " + noun + (n == 1 ? "" : "s");
+    }
+
     static String factor(double f) {
         return f == Math.rint(f) ? Long.toString((long) f) : String.format(Locale.ROOT, "%.2f", f)
                 .replaceAll("0+$", "");

@@ -46,7 +46,7 @@ class QuietProfileTest {
         assertEquals(Duration.ofMinutes(40), l.limit(), "20 min x 1.5 + 10 min");
         assertEquals(21, l.days());
         assertEquals("usually at most 20 min between 13:00 and 16:00 in Bathroom, from 21 days (21 quiet periods); "
-                + "limit 40 min = 1.5 × usual + 10 min, at least 20 min", l.explain(SET));
+                + "limit 40 min = usual x 1.5 + 10 min, at least 20 min", l.explain(SET));
     }
 
     @Test
