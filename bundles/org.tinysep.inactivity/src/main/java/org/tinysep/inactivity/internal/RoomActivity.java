@@ -11,8 +11,8 @@ import java.util.TreeMap;
  * The last activity per room and the last activity overall, kept in the system backup (docs/backup.md) so a
  * restart does not forget when each room was last used, nor the quiet time that was being counted. State keys:
  * {@code room.<room uid>} = ISO instant, {@code last.at}, {@code last.room}, {@code last.roomName},
- * {@code last.description}, {@code last.limitSeconds}, {@code watching.from} (since when the flat was watched),
- * {@code alert.handedOver} (when the alert last handed to the Mail Manager was due). Thread-safe.
+ * {@code last.description}, {@code last.limitSeconds}, {@code last.explanation} (why that limit),
+ * {@code watching.from} (since when the flat was watched), {@code alert.handedOver} (when the alert last handed to the Mail Manager was due). Thread-safe.
  */
 final class RoomActivity {
 
@@ -43,6 +43,9 @@ final class RoomActivity {
             m.put("last.roomName", last.roomName());
             m.put("last.description", last.description());
             m.put("last.limitSeconds", Long.toString(last.limit().toSeconds()));
+            if (!last.explanation().isEmpty()) {
+                m.put("last.explanation", last.explanation());
+            }
         }
         if (watchedFrom != null) {
             m.put("watching.from", watchedFrom.toString());
@@ -75,7 +78,8 @@ final class RoomActivity {
                 String description = state.getOrDefault("last.description", "activity");
                 last = new Activity(state.getOrDefault("last.room", ""), state.getOrDefault("last.roomName", ""),
                         description.endsWith(" (before restart)") ? description : description + " (before restart)",
-                        at, Duration.ofSeconds(Long.parseLong(state.getOrDefault("last.limitSeconds", ""))));
+                        at, Duration.ofSeconds(Long.parseLong(state.getOrDefault("last.limitSeconds", ""))),
+                        state.getOrDefault("last.explanation", ""));
             } catch (IllegalArgumentException e) {
                 problems.add("saved last activity not restored: " + e.getMessage());
             }

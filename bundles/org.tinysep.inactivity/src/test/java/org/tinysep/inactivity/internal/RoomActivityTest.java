@@ -17,6 +17,15 @@ class RoomActivityTest {
     private static final Instant T = Instant.parse("2026-11-23T06:48:57Z");
 
     @Test
+    void theLimitsExplanationSurvivesARestart() {
+        Activity bath = new Activity("bath-uid", "Bathroom", "movement by Bath sensor", T, Duration.ofMinutes(25),
+                "usually at most 10 min between 13:00 and 16:00 in Bathroom, from 9 days");
+        Map<String, String> state = new RoomActivity().state(bath, null, null);
+        RoomActivity.Saved saved = new RoomActivity().restore(state, new ArrayList<>());
+        assertEquals(bath.explanation(), saved.last().explanation());
+    }
+
+    @Test
     void perRoomTimesAndTheLastActivityRoundTripThroughTheBackupState() {
         RoomActivity rooms = new RoomActivity();
         Activity bath = new Activity("bath-uid", "Bathroom", "movement by Bath sensor", T, Duration.ofMinutes(45));
