@@ -1,0 +1,97 @@
+package org.tinysep.evaluation;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDate;
+import java.time.LocalDateTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.tinysep.simulator.cli.ReplayResult;
+import org.tinysep.simulator.cli.Run;
+import org.tinysep.simulator.replay.EventsCsv;
+import org.tinysep.simulator.replay.SensorEvent;
+
+/**
+ * One replay through one platform process: copy the snapshot (if any) to a fresh state folder, start the
+ * distribution, replay the events in lock-step, wait until every alert the platform handed to its Mail Manager has
+ * arrived at the SMTP sink, stop the platform and read back what it wrote to its event log.
+ */
+final class PlatformRun {
+
+    /** How long to wait for alert mails after the replay (they are sent on the Mail Manager's own thread). */
+    private static final long MAIL_WAIT_NANOS = 60_000_000_000L;
+
+    private PlatformRun() {
+    }
+
+    /**
+     * @param snapshot  a stopped platform's state folder to start from, or null for an empty one
+     * @param dir       the run's folder (home/ and var/ are created in it)
+     * @param events    what to replay
+     * @param firstDay  the virtual day of the events' first recorded day
+     * @param end       recorded time to play on to (quiet) after the last event, or null
+     * @return the outcome: the entries this run wrote, the mails received
+     */
+    static Outcome run(Setup setup, Path snapshot, Path dir, String detector, List<SensorEvent> events,
+            LocalDate firstDay, LocalDateTime end) throws Exception {
+        Files.createDirectories(dir);
+        Path var = dir.resolve("var");
+        if (snapshot != null) {
+            Snapshot.copy(snapshot, var);
+        }
+        long before = LogEntry.lastSequence(var);
+        Path recording = dir.resolve("events.csv");
+        EventsCsv.write(events, recording);
+        try (SmtpSink smtp = new SmtpSink();
+                Platform platform = Platform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
+                        Map.of("org.tinysep.houseinformation", "file=" + setup.home().house().toAbsolutePath() + "\n",
+                                "org.tinysep.houseinformation.placement", "placements=" + setup.home().placements()
+                                        + "\n"))) {
+            List<String> args = new ArrayList<>(List.of("--replay", recording.toString(), "--mapping",
+                    setup.home().mapping().toString(), "--lockstep", "--rate", "changes", "--amica-port",
+                    Integer.toString(platform.amicaPort()), "--sync-port", Integer.toString(platform.syncPort()),
+                    "--sync-key", platform.syncKey().toString(), "--wait-platform", "120", "--date",
+                    firstDay.toString(), "--progress", "1000000"));
+            if (end != null) {
+                args.addAll(List.of("--end", end.toString()));
+            }
+            ReplayResult result = Run.replay(args.toArray(String[]::new));
+            long deadline = System.nanoTime() + MAIL_WAIT_NANOS;
+            while (handedOver(var, before) > smtp.subjects().size() && System.nanoTime() < deadline) {
+                Thread.sleep(100);
+            }
+            platform.close();
+            List<LogEntry> entries = LogEntry.read(var).stream().filter(e -> e.sequence() > before).toList();
+            return new Outcome(entries, smtp.subjects(), result, handedOver(var, before));
+        }
+    }
+
+    private static long handedOver(Path var, long after) throws IOException {
+        return LogEntry.read(var).stream()
+                .filter(e -> e.sequence() > after && e.message().startsWith("alert handed to the Mail Manager"))
+                .count();
+    }
+
+    /**
+     * What one run produced.
+     *
+     * @param entries    the event-log entries this run wrote
+     * @param mails      subjects of the mails the SMTP sink received
+     * @param replay     the replay's result (its virtual-time placement)
+     * @param handedOver alerts the platform handed to its Mail Manager (event log)
+     */
+    record Outcome(List<LogEntry> entries, List<String> mails, ReplayResult replay, long handedOver) {
+    }
+
+    /** What every run of one home shares. */
+    record Setup(java.nio.file.Path dist, Home home) {
+        Setup {
+            if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
+                throw new IllegalArgumentException("no distribution at " + dist.toAbsolutePath()
+                        + " (build it: mvn -B -o -pl evaluation -am package -DskipTests)");
+            }
+        }
+    }
+}
