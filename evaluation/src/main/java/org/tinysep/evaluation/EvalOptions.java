@@ -11,6 +11,7 @@ import java.util.List;
  * @param seed        seed of the collapse draw
  * @param warmupHours replayed before each collapse (at least; see README)
  * @param parallel    platform processes at once
+ * @param batch       collapses replayed one after another by one platform process (each in its own virtual weeks)
  * @param days        use only the first N days of the recording (0 = all): the smoke test's short window
  * @param detectors   values of Inactivity Recognition's {@code detector} key, side by side
  * @param ordonez     folder of the Ordonez files
@@ -19,17 +20,19 @@ import java.util.List;
  * @param readme      README to write the table into (null: print only)
  * @param command     the command line as typed, for the report
  */
-record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int days,
+record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int batch, int days,
         List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command) {
 
     static final String USAGE = """
             usage: ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S]
-                   [--warmup-hours H] [--parallel P] [--days D] [--detectors LEARNED,THESIS] [--no-readme]
+                   [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--detectors LEARNED,THESIS] [--no-readme]
               A, B          Ordonez Home A / B (default A), converted from ../shared/data/ordonez
               --collapses   injected collapses per detector (default 200)
               --seed        seed of the collapse draw (default 1)
               --warmup-hours  recorded hours replayed before each collapse (default 6)
               --parallel    platform processes at once (default 2)
+              --batch       collapses per platform process, one after another in virtual time (default 1: every
+                            collapse from its own copy of the snapshot)
               --days        only the first D days of the recording (default all)
               --no-readme   print the table only (default: also into evaluation/README.md)
             """;
@@ -40,6 +43,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
         long seed = 1;
         int warmup = 6;
         int parallel = 2;
+        int batch = 1;
         int days = 0;
         List<String> detectors = List.of("LEARNED", "THESIS");
         Path readme = repo.resolve("evaluation/README.md");
@@ -54,6 +58,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             case "--seed" -> seed = number(args, ++i, a, 0);
             case "--warmup-hours" -> warmup = number(args, ++i, a, 1);
             case "--parallel" -> parallel = number(args, ++i, a, 1);
+            case "--batch" -> batch = number(args, ++i, a, 1);
             case "--days" -> days = number(args, ++i, a, 0);
             case "--detectors" -> detectors = List.of(value(args, ++i, a).split(","));
             case "--ordonez" -> ordonez = Path.of(value(args, ++i, a));
@@ -68,7 +73,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             }
             }
         }
-        return new EvalOptions(home, collapses, seed, warmup, parallel, days, detectors, ordonez, dist, work, readme,
+        return new EvalOptions(home, collapses, seed, warmup, parallel, batch, days, detectors, ordonez, dist, work, readme,
                 "./evaluate.sh " + String.join(" ", args));
     }
 

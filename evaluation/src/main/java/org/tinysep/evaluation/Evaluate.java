@@ -52,7 +52,10 @@ public final class Evaluate {
                 + home.split() + "; test half " + home.split() + " .. " + home.end() + " ("
                 + String.format(java.util.Locale.ROOT, "%.1f", x.testSpan().toSeconds() / 86400.0) + " days)");
         facts.add(o.collapses() + " collapses per detector, seed " + o.seed() + ", each replayed from at least "
-                + o.warmupHours() + " h before it to 12 h after it; " + o.parallel() + " platforms at once");
+                + o.warmupHours() + " h before it to 12 h after it; " + o.parallel() + " platforms at once; "
+                + (o.batch() == 1 ? "every collapse in its own platform started from a copy of the snapshot"
+                        : o.batch() + " collapses per platform started from a copy of the snapshot, one after another "
+                                + "in virtual time (README: batches)"));
         facts.add("Detector config: `org.tinysep.inactivity` key `detector` = the column's value in "
                 + "`etc/org.tinysep.inactivity.cfg` of each platform (the history was replayed with `detector="
                 + o.detectors().get(0) + "`)");

@@ -40,8 +40,11 @@ final class Report {
         row(b, rs, "UNOCCUPIED vs labelled Leaving: precision", r -> f3(r.test().occupancy().precision()));
         row(b, rs, "at-home time not watched (blind)", r -> String.format(Locale.ROOT, "%.1f %%",
                 100 * r.test().blindShare()));
-        row(b, rs, "test-half alerts: raised / mailed to the SMTP sink", r -> r.test().alertsDay()
-                + r.test().alertsNight() + " / " + r.mails() + " (handed over " + r.handedOver() + ")");
+        row(b, rs, "test-half run: alerts in the test half / alerts handed to the Mail Manager / mails at the SMTP "
+                + "sink (both incl. the restart's, below)", r -> (r.test().alertsDay() + r.test().alertsNight()) + " / "
+                + r.handedOver() + " / " + r.mails());
+        row(b, rs, "datagrams the kernel dropped at the radio (all runs)", r -> r.kernelDrops() < 0 ? "n/a"
+                : Long.toString(r.kernelDrops()));
         row(b, rs, "detector named in the event log", r -> r.testTimeline().detectorLog().isEmpty() ? "(no entry names it)"
                 : r.testTimeline().detectorLog().replace("|", "\\|"));
         return b.toString();

@@ -35,10 +35,16 @@ record Timeline(List<LocalDateTime> alerts, NavigableMap<LocalDateTime, Boolean>
         watching.put(notBefore, false); // until Inactivity Recognition says otherwise
         occupancy.put(notBefore, "UNKNOWN");
         String detector = "";
+        boolean started = false;
         for (LogEntry e : entries) {
             LocalDateTime t = LocalDateTime.ofInstant(e.time(), ZoneOffset.UTC).minusDays(shiftDays);
             if (t.isBefore(notBefore)) {
+                if (started) {
+                    continue; // the platform stopping after the replay (its clock back on the wall clock)
+                }
                 t = notBefore; // a restart entry stamped before the first TICK: the initial state
+            } else {
+                started = true;
             }
             Matcher m = INACTIVITY.matcher(e.message());
             if (m.find()) {
