@@ -36,6 +36,7 @@ public final class Evaluate {
     /** @return the markdown written (and printed) */
     static String run(EvalOptions o) throws Exception {
         String loadBefore = load();
+        String commit = commit(); // at the start: the code that runs
         long wall = System.nanoTime();
         Home home = Home.load(o.home(), o.ordonez(), o.work());
         if (o.days() > 0) {
@@ -45,7 +46,7 @@ public final class Evaluate {
         Map<String, Experiment.Result> results = x.run();
         long took = (System.nanoTime() - wall) / 1_000_000_000L;
         List<String> facts = new ArrayList<>();
-        facts.add("Run " + Instant.now().truncatedTo(ChronoUnit.SECONDS) + ", commit `" + commit() + "`, command `"
+        facts.add("Run " + Instant.now().truncatedTo(ChronoUnit.SECONDS) + ", commit `" + commit + "`, command `"
                 + o.command().trim() + "`, " + Report.hm(Duration.ofSeconds(took)) + " wall time");
         facts.add("Recording " + home.events().get(0).time() + " .. " + home.end() + " (" + home.events().size()
                 + " events); history (replayed once, its stopped state folder copied for every other run) until "
