@@ -33,8 +33,12 @@ public final class Evaluate {
         }
     }
 
-    /** @return the markdown written (and printed) */
-    static String run(EvalOptions o) throws Exception {
+    /** What a run produced: the table and the figures behind it, per detector. */
+    record Outcome(String markdown, Map<String, Experiment.Result> results) {
+    }
+
+    /** @return the table written (and printed) and its figures */
+    static Outcome run(EvalOptions o) throws Exception {
         String loadBefore = load();
         String commit = commit(); // at the start: the code that runs
         long wall = System.nanoTime();
@@ -70,7 +74,7 @@ public final class Evaluate {
             Readme.put(o.readme(), home.name(), md);
             System.out.println("written to " + o.readme());
         }
-        return md;
+        return new Outcome(md, results);
     }
 
     private static String load() {
