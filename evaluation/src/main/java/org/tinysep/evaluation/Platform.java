@@ -29,6 +29,14 @@ final class Platform implements AutoCloseable {
     static final List<String> JVM = List.of("-Xmx256m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1");
     private static final Duration START = Duration.ofSeconds(180);
 
+    /** Platforms still running: a harness that ends early (error, Ctrl-C) must not leave them behind. */
+    private static final java.util.Set<Process> RUNNING = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    static {
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> RUNNING.forEach(Process::destroyForcibly),
+                "platforms-stop"));
+    }
+
     private final Process process;
     private final int amicaPort;
     private final int syncPort;
@@ -80,6 +88,7 @@ final class Platform implements AutoCloseable {
                 "--home", home.toAbsolutePath().toString(), "--var", var.toAbsolutePath().toString()));
         Process p = new ProcessBuilder(cmd).directory(home.toFile()).redirectErrorStream(false)
                 .redirectError(ProcessBuilder.Redirect.appendTo(home.resolve("platform.log").toFile())).start();
+        RUNNING.add(p);
         Platform platform = new Platform(p, amica, sync, var);
         platform.readStdout(home.resolve("platform.out"));
         platform.awaitUp();
@@ -157,11 +166,20 @@ final class Platform implements AutoCloseable {
     /** SIGTERM: the launcher's shutdown hook stops the framework cleanly (logs flushed, backups written). */
     @Override
     public void close() throws InterruptedException {
-        if (process.isAlive()) {
-            process.destroy();
-            if (!process.waitFor(60, TimeUnit.SECONDS)) {
-                process.destroyForcibly();
-                process.waitFor();
+        try {
+            if (process.isAlive()) {
+                process.destroy();
+                if (!process.waitFor(60, TimeUnit.SECONDS)) {
+                    process.destroyForcibly();
+                    process.waitFor();
+                }
+            }
+        } catch (InterruptedException e) {
+            process.destroyForcibly(); // the harness is giving up: never leave a platform behind
+            throw e;
+        } finally {
+            if (!process.isAlive()) {
+                RUNNING.remove(process);
             }
         }
     }
