@@ -10,7 +10,7 @@ import java.util.TreeMap;
 record Options(String flat, String scenario, String target, int amicaPort, int sunSpotPort, int syncPort,
         double speed, boolean lockstep, long seed, int fromSecond, int untilSecond, LocalDate date,
         int progressMinutes, int paceMillis, int jitter, double wander, String replay, String mapping,
-        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds) {
+        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds, java.time.LocalDateTime end) {
 
     static final String USAGE = """
             usage: java -jar org.tinysep.simulator-<version>.jar [options]
@@ -40,6 +40,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                                            seconds, ticking at least every 10 s)
               --date <yyyy-mm-dd>          the virtual day of the recording's first day (default: the platform's
                                            day, or the next one whose start is still ahead)
+              --end <yyyy-mm-ddTHH:MM:SS>  play on (quiet) until this recorded time, if later than the last event
+                                           + 900 s (the evaluation harness: a collapse deletes the 12 h after it)
             """;
 
     static Options parse(String[] args) {
@@ -65,7 +67,7 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                 (int) number(m, "progress", "60"), (int) number(m, "pace-ms", "5"), (int) number(m, "jitter", "90"),
                 number(m, "wander", "0.002"), take(m, "replay", null), take(m, "mapping", null),
                 rate(take(m, "rate", "full")), take(m, "sync-key", null), release,
-                (int) number(m, "wait-platform", "0"));
+                (int) number(m, "wait-platform", "0"), m.containsKey("end") ? end(take(m, "end", null)) : null);
         if (!m.isEmpty()) {
             throw new IllegalArgumentException("unknown option(s) " + m.keySet());
         }
@@ -131,6 +133,14 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
             return v.equals("24:00") ? 86400 : LocalTime.parse(v.length() == 4 ? "0" + v : v).toSecondOfDay();
         } catch (DateTimeParseException e) {
             throw new IllegalArgumentException("--" + key + " needs HH:MM (00:00 to 24:00), not '" + v + "'");
+        }
+    }
+
+    private static java.time.LocalDateTime end(String v) {
+        try {
+            return java.time.LocalDateTime.parse(v);
+        } catch (DateTimeParseException e) {
+            throw new IllegalArgumentException("--end needs yyyy-mm-ddTHH:MM:SS (recorded local time), not '" + v + "'");
         }
     }
 

@@ -64,7 +64,8 @@ final class ReplayRunner {
 
     private static ReplayResult play(Options o, Replay replay, Target target, SyncClient sync) throws Exception {
         Instant from = Instant.ofEpochSecond(replay.fromSecond());
-        Instant until = Instant.ofEpochSecond(replay.untilSecond());
+        Instant until = Instant.ofEpochSecond(o.end() == null ? replay.untilSecond()
+                : Math.max(replay.untilSecond(), replay.virtualSecond(o.end())));
         VirtualClock clock = new VirtualClock(from);
         long wall = System.nanoTime();
         long played = 0;

@@ -89,15 +89,42 @@ public final class SyncClient implements AutoCloseable {
 
     /** Sends one TICK and returns when the platform answered DONE; throws with the platform's ERROR text. */
     public void tick(Instant at) throws IOException {
-        seq++;
-        ask(signed("TICK " + seq + " " + at), "DONE " + seq + " ");
+        send(() -> "TICK " + seq + " " + at);
     }
 
     /** Tells the platform the synchronisation has finished: its clock returns to REAL time. */
     public void bye() throws IOException {
-        seq++;
-        ask(signed("BYE " + seq), "DONE " + seq + " ");
+        send(() -> "BYE " + seq);
     }
+
+    /**
+     * Sends the next request. The platform keeps one session per sender address; a new run whose socket got the port
+     * of an earlier run (the kernel reuses ephemeral ports) inherits that session and its sequence numbers
+     * ({@code ERROR <seq> replayed ... not above the last accepted <n> ...}): then numbering continues at n + 1, once.
+     */
+    private void send(java.util.function.Supplier<String> request) throws IOException {
+        seq++;
+        try {
+            ask(signed(request.get()), "DONE " + seq + " ");
+        } catch (Replayed r) {
+            seq = r.lastAccepted + 1;
+            ask(signed(request.get()), "DONE " + seq + " ");
+        }
+    }
+
+    /** The platform refused a sequence number as replayed; it said which one it accepted last. */
+    static final class Replayed extends IOException {
+        private static final long serialVersionUID = 1L;
+        final long lastAccepted;
+
+        Replayed(String message, long lastAccepted) {
+            super(message);
+            this.lastAccepted = lastAccepted;
+        }
+    }
+
+    private static final java.util.regex.Pattern LAST_ACCEPTED =
+            java.util.regex.Pattern.compile(" replayed .* not above the last accepted (\\d+)");
 
     /** The key as the platform reads it: the file's text without surrounding white space, US-ASCII. */
     public static byte[] readKey(Path file) throws IOException {
@@ -133,6 +160,10 @@ public final class SyncClient implements AutoCloseable {
                     String answer = new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
                     if (answer.startsWith(expected)) {
                         return answer;
+                    }
+                    java.util.regex.Matcher replayed = LAST_ACCEPTED.matcher(answer);
+                    if (answer.startsWith("ERROR " + seq + " replayed ") && replayed.find()) {
+                        throw new Replayed(answer, Long.parseLong(replayed.group(1)));
                     }
                     if (answer.startsWith("ERROR " + seq + " ") || answer.startsWith("ERROR - ")) {
                         throw new IOException("the platform refused '" + request + "': " + answer

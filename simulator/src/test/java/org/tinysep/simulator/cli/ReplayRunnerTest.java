@@ -99,6 +99,26 @@ class ReplayRunnerTest {
         }
     }
 
+    /** The evaluation harness: a collapse deletes the 12 h after it, and the replay must still play them (quiet). */
+    @Test
+    void endPlaysOnQuietlyUntilTheGivenRecordedTime() throws Exception {
+        Path file = Files.writeString(dir.resolve("events.csv"), EVENTS);
+        try (DatagramSocket radio = new DatagramSocket(0, InetAddress.getLoopbackAddress());
+                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
+            Future<List<String>> received = collect(radio);
+            List<String> args = new java.util.ArrayList<>(List.of(args(file, radio, peer, "changes")));
+            args.addAll(List.of("--end", "2011-11-28T22:05:04"));
+            ReplayResult r = Run.replay(args.toArray(String[]::new));
+            received.get();
+            long end = r.replay().virtualSecond(LocalDateTime.parse("2011-11-28T22:05:04"));
+            Instant last = peer.ticks().get(peer.ticks().size() - 1);
+            assertEquals(6, r.sent());
+            assertTrue(last.getEpochSecond() >= end - ReplayRunner.QUIET_STEP && last.getEpochSecond() < end,
+                    "played on to 12 h after the last event: last tick " + last + ", end " + Instant.ofEpochSecond(end));
+        }
+        assertThrows(IllegalArgumentException.class, () -> Options.parse(new String[] {"--end", "tomorrow"}));
+    }
+
     @Test
     void aMissingRecordingIsAClearError() {
         Exception e = assertThrows(java.io.IOException.class,

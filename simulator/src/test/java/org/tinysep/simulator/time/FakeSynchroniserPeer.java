@@ -45,6 +45,13 @@ public final class FakeSynchroniserPeer implements AutoCloseable {
         loseFirstDone = true;
     }
 
+    private volatile long lastAccepted;
+
+    /** As the Time Controller for a sender whose address (IP and port) already sent up to {@code seq} in its session. */
+    public void lastAccepted(long seq) {
+        lastAccepted = seq;
+    }
+
     private void serve() {
         byte[] buf = new byte[512];
         String last = null;
@@ -60,6 +67,9 @@ public final class FakeSynchroniserPeer implements AutoCloseable {
                     answer = "DONE " + w[1] + " " + now;
                 } else if (w[0].equals("HELLO")) {
                     answer = "WELCOME " + now + " " + mode + " " + SESSION;
+                } else if (!w[0].equals("HELLO") && w.length > 1 && Long.parseLong(w[1]) <= lastAccepted) {
+                    answer = "ERROR " + w[1] + " replayed sequence number " + w[1] + " is not above the last accepted "
+                            + lastAccepted + " of this session";
                 } else if (req.equals(last)) {
                     answer = "DONE " + w[1] + " " + w[2];
                 } else if (Instant.parse(w[2]).isBefore(now)) {

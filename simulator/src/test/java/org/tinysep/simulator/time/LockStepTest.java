@@ -78,6 +78,25 @@ class LockStepTest {
         }
     }
 
+    /**
+     * A new run whose socket got the port of an earlier run (the kernel reuses ephemeral ports) is in that run's
+     * session: the platform refuses sequence number 1 as replayed. The client continues above the last accepted one.
+     */
+    @Test
+    void aSessionInheritedFromAnEarlierRunOnTheSamePortContinuesAboveItsLastSequence() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
+            peer.lastAccepted(6491);
+            Instant t = Instant.parse("2026-11-23T08:00:00Z");
+            c.hello();
+            c.tick(t);
+            c.tick(t.plusSeconds(1));
+            c.bye();
+            assertEquals(List.of("HELLO", "TICK 1 " + t, "TICK 6492 " + t, "TICK 6493 " + t.plusSeconds(1), "BYE 6494"),
+                    peer.requests);
+            assertEquals(2, peer.ticks().size());
+        }
+    }
+
     @Test
     void anErrorAnswerStopsWithThePlatformsText() throws Exception {
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {

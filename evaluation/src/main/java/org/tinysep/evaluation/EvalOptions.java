@@ -1,0 +1,99 @@
+package org.tinysep.evaluation;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * The command line of {@link Evaluate}.
+ *
+ * @param home        {@code A}, {@code B} (Ordonez) or a folder with events.csv and labels.csv
+ * @param collapses   injected collapses per detector
+ * @param seed        seed of the collapse draw
+ * @param warmupHours replayed before each collapse (at least; see README)
+ * @param parallel    platform processes at once
+ * @param batch       collapses replayed one after another by one platform process (each in its own virtual weeks)
+ * @param days        use only the first N days of the recording (0 = all): the smoke test's short window
+ * @param detectors   values of Inactivity Recognition's {@code detector} key, side by side
+ * @param ordonez     folder of the Ordonez files
+ * @param dist        the assembled distribution (runtime/org.tinysep.launcher/target/tinysep)
+ * @param work        folder for state folders and converted files
+ * @param readme      README to write the table into (null: print only)
+ * @param command     the command line as typed, for the report
+ */
+record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int batch, int days,
+        List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command) {
+
+    static final String USAGE = """
+            usage: ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S]
+                   [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--detectors LEARNED,THESIS] [--no-readme]
+              A, B          Ordonez Home A / B (default A), converted from ../shared/data/ordonez
+              --collapses   injected collapses per detector (default 200)
+              --seed        seed of the collapse draw (default 1)
+              --warmup-hours  recorded hours replayed before each collapse (default 6)
+              --parallel    platform processes at once (default 2)
+              --batch       collapses per platform process, one after another in virtual time (default 1: every
+                            collapse from its own copy of the snapshot)
+              --days        only the first D days of the recording (default all)
+              --no-readme   print the table only (default: also into evaluation/README.md)
+            """;
+
+    static EvalOptions parse(String[] args, Path repo) {
+        String home = "A";
+        int collapses = 200;
+        long seed = 1;
+        int warmup = 6;
+        int parallel = 2;
+        int batch = 1;
+        int days = 0;
+        List<String> detectors = List.of("LEARNED", "THESIS");
+        Path readme = repo.resolve("evaluation/README.md");
+        Path ordonez = repo.resolve("../shared/data/ordonez").normalize();
+        Path dist = repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
+        Path work = repo.resolve("evaluation/target/work");
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            switch (a) {
+            case "--no-readme" -> readme = null;
+            case "--collapses" -> collapses = number(args, ++i, a, 0);
+            case "--seed" -> seed = number(args, ++i, a, 0);
+            case "--warmup-hours" -> warmup = number(args, ++i, a, 1);
+            case "--parallel" -> parallel = number(args, ++i, a, 1);
+            case "--batch" -> batch = number(args, ++i, a, 1);
+            case "--days" -> days = number(args, ++i, a, 0);
+            case "--detectors" -> detectors = List.of(value(args, ++i, a).split(","));
+            case "--ordonez" -> ordonez = Path.of(value(args, ++i, a));
+            case "--dist" -> dist = Path.of(value(args, ++i, a));
+            case "--work" -> work = Path.of(value(args, ++i, a));
+            case "--readme" -> readme = Path.of(value(args, ++i, a));
+            default -> {
+                if (a.startsWith("--")) {
+                    throw new IllegalArgumentException("unknown option " + a + "\n" + USAGE);
+                }
+                home = a;
+            }
+            }
+        }
+        return new EvalOptions(home, collapses, seed, warmup, parallel, batch, days, detectors, ordonez, dist, work, readme,
+                "./evaluate.sh " + String.join(" ", args));
+    }
+
+    private static String value(String[] args, int i, String option) {
+        if (i >= args.length) {
+            throw new IllegalArgumentException(option + " needs a value\n" + USAGE);
+        }
+        return args[i];
+    }
+
+    private static int number(String[] args, int i, String option, int min) {
+        String v = value(args, i, option);
+        try {
+            int n = Integer.parseInt(v);
+            if (n < min) {
+                throw new NumberFormatException();
+            }
+            return n;
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(option + " needs a whole number >= " + min + ", not '" + v + "'");
+        }
+    }
+}

@@ -1,0 +1,100 @@
+package org.tinysep.evaluation;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.temporal.ChronoUnit;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * {@code ./evaluate.sh [A|B|folder] [--collapses N] [--seed S] ...}: evaluates the inactivity alert of the real
+ * platform on a recorded home (issue 11 item 4; evaluation/README.md) and prints the table, detectors side by side.
+ */
+public final class Evaluate {
+
+    private Evaluate() {
+    }
+
+    public static void main(String[] args) {
+        try {
+            run(EvalOptions.parse(args, Path.of(System.getProperty("tinysep.repo", "."))));
+            System.exit(0);
+        } catch (IllegalArgumentException e) {
+            System.err.println(e.getMessage());
+            System.exit(2);
+        } catch (Exception e) {
+            System.err.println("evaluation failed: " + e);
+            e.printStackTrace();
+            System.exit(1);
+        }
+    }
+
+    /** What a run produced: the table and the figures behind it, per detector. */
+    record Outcome(String markdown, Map<String, Experiment.Result> results) {
+    }
+
+    /** @return the table written (and printed) and its figures */
+    static Outcome run(EvalOptions o) throws Exception {
+        String loadBefore = load();
+        String commit = commit(); // at the start: the code that runs
+        long wall = System.nanoTime();
+        Home home = Home.load(o.home(), o.ordonez(), o.work());
+        if (o.days() > 0) {
+            home = Days.first(home, o.days());
+        }
+        Experiment x = new Experiment(o, home);
+        Map<String, Experiment.Result> results = x.run();
+        long took = (System.nanoTime() - wall) / 1_000_000_000L;
+        List<String> facts = new ArrayList<>();
+        facts.add("Run " + Instant.now().truncatedTo(ChronoUnit.SECONDS) + ", commit `" + commit + "`, command `"
+                + o.command().trim() + "`, " + Report.hm(Duration.ofSeconds(took)) + " wall time");
+        facts.add("Recording " + home.events().get(0).time() + " .. " + home.end() + " (" + home.events().size()
+                + " events); history (replayed once, its stopped state folder copied for every other run) until "
+                + home.split() + "; test half " + home.split() + " .. " + home.end() + " ("
+                + String.format(java.util.Locale.ROOT, "%.1f", x.testSpan().toSeconds() / 86400.0) + " days)");
+        facts.add(o.collapses() + " collapses per detector, seed " + o.seed() + ", each replayed from at least "
+                + o.warmupHours() + " h before it to 12 h after it; " + o.parallel() + " platforms at once; "
+                + (o.batch() == 1 ? "every collapse in its own platform started from a copy of the snapshot"
+                        : o.batch() + " collapses per platform started from a copy of the snapshot, one after another "
+                                + "in virtual time (README: batches)"));
+        facts.add("Detector config: `org.tinysep.inactivity` key `detector` = the column's value in "
+                + "`etc/org.tinysep.inactivity.cfg` of each platform (the history was replayed with `detector="
+                + o.detectors().get(0) + "`)");
+        facts.add("Machine: " + Runtime.getRuntime().availableProcessors() + " CPUs, load average before " + loadBefore
+                + ", after " + load());
+        facts.add(Report.CITATION);
+        String md = Report.markdown(home.name(), facts, results);
+        System.out.println();
+        System.out.println(md);
+        if (o.readme() != null) {
+            Readme.put(o.readme(), home.name(), md);
+            System.out.println("written to " + o.readme());
+        }
+        return new Outcome(md, results);
+    }
+
+    private static String load() {
+        try {
+            String[] p = Files.readString(Path.of("/proc/loadavg")).trim().split(" ");
+            return p[0] + " " + p[1] + " " + p[2];
+        } catch (IOException | RuntimeException e) {
+            return "n/a";
+        }
+    }
+
+    private static String commit() {
+        try {
+            Process p = new ProcessBuilder("git", "rev-parse", "--short=12", "HEAD").redirectErrorStream(true).start();
+            String c = new String(p.getInputStream().readAllBytes()).trim();
+            Process d = new ProcessBuilder("git", "status", "--porcelain", "--untracked-files=no").start();
+            boolean dirty = !new String(d.getInputStream().readAllBytes()).isBlank();
+            return p.waitFor() == 0 ? c + (dirty ? " + uncommitted changes" : "") : "unknown";
+        } catch (IOException | InterruptedException e) {
+            return "unknown";
+        }
+    }
+}

@@ -1,0 +1,122 @@
+package org.tinysep.evaluation;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.LocalDateTime;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import org.tinysep.simulator.replay.ConvertOrdonez;
+import org.tinysep.simulator.replay.EventsCsv;
+import org.tinysep.simulator.replay.Label;
+import org.tinysep.simulator.replay.LabelsCsv;
+import org.tinysep.simulator.replay.NodeSpec;
+import org.tinysep.simulator.replay.ReplayFormatException;
+import org.tinysep.simulator.replay.ReplayPlan;
+import org.tinysep.simulator.replay.SensorEvent;
+import org.tinysep.simulator.replay.SensorMapping;
+
+/**
+ * A recorded home ready for evaluation: its events and labels (DESIGN.md formats), the mapping pinned to the node
+ * addresses of the whole recording (so a window replayed later finds the same devices in a snapshot), the House
+ * Information file and placements, and the split into history (first half) and test (second half).
+ *
+ * @param name    e.g. {@code ordonez-a}
+ * @param events  every recorded event, in time order
+ * @param labels  every label
+ * @param mapping the pinned mapping file
+ * @param house   the House Information file
+ * @param nodes   the plan's nodes
+ */
+record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes) {
+
+    /**
+     * @param spec    {@code A}/{@code B} (Ordonez, converted from {@code ordonezDir} by the simulator's converter) or a
+     *                folder with {@code events.csv}, {@code labels.csv} and optionally {@code mapping} and
+     *                {@code house.xml}
+     * @param work    a folder for the converted files
+     */
+    static Home load(String spec, Path ordonezDir, Path work) throws IOException, ReplayFormatException {
+        Files.createDirectories(work);
+        Path dir;
+        String name;
+        SensorMapping mapping;
+        Path house;
+        if (spec.matches("(?i)[ab]")) {
+            String letter = spec.toUpperCase();
+            name = "ordonez-" + letter.toLowerCase();
+            dir = work.resolve(name);
+            System.out.println("converting Ordonez " + letter + ": " + ConvertOrdonez.convert(ordonezDir, letter, dir));
+            mapping = SensorMapping.fromResource(name + ".mapping");
+            house = resource("replay/" + name + ".house.xml", work.resolve(name + ".house.xml"));
+        } else {
+            dir = Path.of(spec);
+            name = dir.toAbsolutePath().normalize().getFileName().toString();
+            Path m = dir.resolve("mapping");
+            mapping = Files.isRegularFile(m) ? SensorMapping.read(m) : SensorMapping.defaults();
+            house = dir.resolve("house.xml");
+        }
+        List<SensorEvent> events = EventsCsv.read(dir.resolve("events.csv"));
+        Path labelFile = dir.resolve("labels.csv");
+        if (!Files.isRegularFile(labelFile)) {
+            throw new IOException(labelFile + " is missing: collapses are drawn from the labels' at-home, awake time");
+        }
+        List<Label> labels = LabelsCsv.read(labelFile);
+        ReplayPlan plan = ReplayPlan.of(events, mapping);
+        if (!Files.isRegularFile(house)) {
+            house = HouseFile.write(rooms(plan), work.resolve(name + ".house.xml"));
+        }
+        Path pinned = work.resolve(name + ".pinned.mapping");
+        Files.write(pinned, pinned(plan));
+        return new Home(name, events, labels, pinned, house, plan.nodes());
+    }
+
+    /** @return the instant splitting history (before) from test (from it on): the recording's middle */
+    LocalDateTime split() {
+        LocalDateTime a = events.get(0).time();
+        LocalDateTime b = events.get(events.size() - 1).time();
+        return a.plusSeconds(Duration.between(a, b).toSeconds() / 2);
+    }
+
+    LocalDateTime end() {
+        return events.get(events.size() - 1).time();
+    }
+
+    /** @return the placement configuration value {@code NG.ADDR=Room, ...} */
+    String placements() {
+        List<String> p = new ArrayList<>();
+        nodes.forEach(n -> p.add(n.address() + "=" + n.room()));
+        return String.join(", ", p);
+    }
+
+    /** Every sensor with its node, type, room and name spelled out: allocation no longer depends on the events. */
+    private static List<String> pinned(ReplayPlan plan) {
+        List<String> lines = new ArrayList<>(List.of("# pinned by the evaluation harness from the whole recording"));
+        for (NodeSpec n : plan.nodes()) {
+            lines.add("sensor = " + n.sensor() + "; node = amica " + n.address() + "; type = " + n.type().typeName()
+                    + (n.doorKind().isEmpty() ? "" : "; doorKind = " + n.doorKind()) + "; room = " + n.room()
+                    + "; name = " + n.name());
+        }
+        return lines;
+    }
+
+    private static Set<String> rooms(ReplayPlan plan) {
+        Set<String> rooms = new LinkedHashSet<>();
+        plan.nodes().forEach(n -> rooms.add(n.room()));
+        return rooms;
+    }
+
+    private static Path resource(String name, Path to) throws IOException {
+        try (InputStream in = ReplayPlan.class.getClassLoader().getResourceAsStream(name)) {
+            if (in == null) {
+                throw new IOException("no resource " + name + " in the simulator jar");
+            }
+            Files.copy(in, to, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
+        return to;
+    }
+}

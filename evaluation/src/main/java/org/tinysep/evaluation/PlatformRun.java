@@ -1,0 +1,112 @@
+package org.tinysep.evaluation;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDate;
+import java.time.LocalDateTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.tinysep.simulator.cli.ReplayResult;
+import org.tinysep.simulator.cli.Run;
+import org.tinysep.simulator.replay.EventsCsv;
+import org.tinysep.simulator.replay.SensorEvent;
+
+/**
+ * One replay through one platform process: copy the snapshot (if any) to a fresh state folder, start the
+ * distribution, replay the events in lock-step, wait until every alert the platform handed to its Mail Manager has
+ * arrived at the SMTP sink, stop the platform and read back what it wrote to its event log.
+ */
+final class PlatformRun {
+
+    /** How long to wait for alert mails after the replay (they are sent on the Mail Manager's own thread). */
+    private static final long MAIL_WAIT_NANOS = 60_000_000_000L;
+
+    private PlatformRun() {
+    }
+
+    /**
+     * @param snapshot  a stopped platform's state folder to start from, or null for an empty one
+     * @param dir       the run's folder (home/ and var/ are created in it)
+     * @param segments  what to replay, one after another, each later in virtual time than the one before
+     * @return the outcome: the entries this run wrote, the mails received
+     */
+    static Outcome run(Setup setup, Path snapshot, Path dir, String detector, List<Segment> segments)
+            throws Exception {
+        Files.createDirectories(dir);
+        Path var = dir.resolve("var");
+        if (snapshot != null) {
+            Snapshot.copy(snapshot, var);
+        }
+        long before = LogEntry.lastSequence(var);
+        try (SmtpSink smtp = new SmtpSink();
+                Platform platform = Platform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
+                        Map.of("org.tinysep.houseinformation", "file=" + setup.home().house().toAbsolutePath() + "\n",
+                                "org.tinysep.houseinformation.placement", "placements=" + setup.home().placements()
+                                        + "\n"))) {
+            List<ReplayResult> results = new ArrayList<>();
+            for (int k = 0; k < segments.size(); k++) {
+                Segment s = segments.get(k);
+                Path recording = dir.resolve("events-" + k + ".csv");
+                EventsCsv.write(s.events(), recording);
+                List<String> args = new ArrayList<>(List.of("--replay", recording.toString(), "--mapping",
+                        setup.home().mapping().toString(), "--lockstep", "--rate", "changes", "--amica-port",
+                        Integer.toString(platform.amicaPort()), "--sync-port", Integer.toString(platform.syncPort()),
+                        "--sync-key", platform.syncKey().toString(), "--wait-platform", "120", "--date",
+                        s.firstDay().toString(), "--progress", "1000000"));
+                if (s.end() != null) {
+                    args.addAll(List.of("--end", s.end().toString()));
+                }
+                results.add(Run.replay(args.toArray(String[]::new)));
+            }
+            long deadline = System.nanoTime() + MAIL_WAIT_NANOS;
+            while (handedOver(var, before) > smtp.subjects().size() && System.nanoTime() < deadline) {
+                Thread.sleep(100);
+            }
+            long drops = org.tinysep.simulator.replay.KernelDrops.at127(platform.amicaPort());
+            platform.close();
+            List<LogEntry> entries = LogEntry.read(var).stream().filter(e -> e.sequence() > before).toList();
+            return new Outcome(entries, smtp.subjects(), results, handedOver(var, before), drops);
+        }
+    }
+
+    /**
+     * One replay within a run.
+     *
+     * @param events   what to replay
+     * @param firstDay the virtual day of the events' first recorded day
+     * @param end      recorded time to play on to (quiet) after the last event, or null
+     */
+    record Segment(List<SensorEvent> events, LocalDate firstDay, LocalDateTime end) {
+    }
+
+    private static long handedOver(Path var, long after) throws IOException {
+        return LogEntry.read(var).stream()
+                .filter(e -> e.sequence() > after && e.message().startsWith("alert handed to the Mail Manager"))
+                .count();
+    }
+
+    /**
+     * What one run produced.
+     *
+     * @param entries    the event-log entries this run wrote
+     * @param mails      subjects of the mails the SMTP sink received
+     * @param replays    the replays' results (their virtual-time placement)
+     * @param handedOver alerts the platform handed to its Mail Manager (event log)
+     * @param kernelDrops datagrams the kernel dropped at the platform's AmICA radio socket (-1: not measurable)
+     */
+    record Outcome(List<LogEntry> entries, List<String> mails, List<ReplayResult> replays, long handedOver,
+            long kernelDrops) {
+    }
+
+    /** What every run of one home shares. */
+    record Setup(java.nio.file.Path dist, Home home) {
+        Setup {
+            if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
+                throw new IllegalArgumentException("no distribution at " + dist.toAbsolutePath()
+                        + " (build it: mvn -B -o -pl evaluation -am package -DskipTests)");
+            }
+        }
+    }
+}
