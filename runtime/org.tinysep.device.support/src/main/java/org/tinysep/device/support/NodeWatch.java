@@ -102,11 +102,14 @@ public final class NodeWatch {
         return true;
     }
 
-    /** Marks the node silent from its last frame (e.g. restored from a backup and not heard since). */
-    public synchronized void assumeSilent() {
-        if (silentSince == null) {
-            silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
-        }
+    /**
+     * The node was re-created from a backup and has not been heard since the restart: silent since its last frame
+     * before it ({@code lastHeard}, the epoch when unknown), without a new silence to report.
+     */
+    public synchronized void restored(Instant lastHeard) {
+        this.lastHeard = lastHeard;
+        this.silenceBase = lastHeard;
+        this.silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
     }
 
     public synchronized boolean silent() {
