@@ -104,6 +104,25 @@ public final class SourceGate {
         return true;
     }
 
+    /** @return the packet-log note of a refusal, e.g. "rejected: source 127.0.0.2 is not on the allow-list" */
+    public static String why(Verdict verdict, InetAddress source) {
+        return "rejected: source " + source.getHostAddress() + (verdict == Verdict.NOT_ALLOWED
+                ? " is not on the allow-list" : " sends faster than the per-source rate limit");
+    }
+
+    /**
+     * @return the event-log text of the first refusal of its kind (just counted by {@link #check}), else null: later
+     *         ones are only counted
+     */
+    public String firstRefusal(Verdict verdict, InetAddress source) {
+        long n = verdict == Verdict.NOT_ALLOWED ? notAllowed.get() : verdict == Verdict.RATE_LIMITED
+                ? rateLimited.get() : 0;
+        if (n != 1) {
+            return null;
+        }
+        return why(verdict, source) + " (" + describe() + "); further " + verdict + " rejections are only counted";
+    }
+
     /** @return whether the allow-list and rate limit apply (the link is not bound to loopback) */
     public boolean enforced() {
         return enforced;

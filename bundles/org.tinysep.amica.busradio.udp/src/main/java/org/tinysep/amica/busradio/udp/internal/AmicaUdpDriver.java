@@ -125,16 +125,12 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     }
 
     private void refused(SourceGate.Verdict verdict, byte[] data, int length, InetSocketAddress from) {
-        boolean first = (verdict == SourceGate.Verdict.NOT_ALLOWED ? gate.notAllowed() : gate.rateLimited()) == 1;
-        String why = verdict == SourceGate.Verdict.NOT_ALLOWED
-                ? "rejected: source " + from.getAddress().getHostAddress() + " is not on the allow-list"
-                : "rejected: source " + from.getAddress().getHostAddress() + " sends faster than "
-                        + "sourceRateLimit";
-        if (first) {
-            String text = why + " (" + gate.describe() + "); further " + verdict + " rejections are only counted";
-            LOG.warn("{}: {}", NAME, text);
-            context().event(EventKind.PROBLEM, text);
+        String first = gate.firstRefusal(verdict, from.getAddress());
+        if (first != null) {
+            LOG.warn("{}: {}", NAME, first);
+            context().event(EventKind.PROBLEM, first);
         }
+        String why = SourceGate.why(verdict, from.getAddress());
         handler.refused(why, data, length, from);
     }
 
