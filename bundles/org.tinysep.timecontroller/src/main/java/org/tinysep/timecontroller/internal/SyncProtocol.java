@@ -9,10 +9,11 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.RejectSampler;
+import org.tinysep.device.support.SourceGate;
 
 /**
  * The platform side of the synchroniser protocol: one datagram in, one answer out. TICK and BYE must be signed
@@ -32,19 +33,28 @@ final class SyncProtocol implements SyncLink.Handler {
     }
 
     static final List<String> CODES = List.of("malformed", "unknown-command", "too-long", "backwards", "not-external",
-            "unauthorized", "replayed");
+            "unauthorized", "replayed", "forbidden");
 
     private final DriverContext context;
     private final Target target;
     private final SyncAuth auth;
     private final Runnable bye;
+    private final SourceGate gate;
+    private final RejectSampler sampler;
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong ticks = new AtomicLong();
     private final Map<String, AtomicLong> rejected = new LinkedHashMap<>();
 
     /** @param bye what an authenticated {@code BYE} does: the clock returns to REAL time */
     SyncProtocol(DriverContext context, Target target, SyncAuth auth, Runnable bye) {
+        this(context, target, auth, bye, SourceGate.of("127.0.0.1", "", 0));
+    }
+
+    /** @param gate who may send at all: a sender off its allow-list is refused before anything else */
+    SyncProtocol(DriverContext context, Target target, SyncAuth auth, Runnable bye, SourceGate gate) {
         this.context = context;
+        this.gate = gate;
+        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
         this.target = target;
         this.auth = auth;
         this.bye = bye;
@@ -54,6 +64,11 @@ final class SyncProtocol implements SyncLink.Handler {
     @Override
     public String datagram(byte[] data, int length, InetSocketAddress from) {
         received.incrementAndGet();
+        if (gate.check(from.getAddress()) != SourceGate.Verdict.PASS) {
+            return reject("forbidden", SyncMessage.error("-", "forbidden", from.getAddress().getHostAddress()
+                    + " is not an allowed time synchroniser (syncAllowedSources)"),
+                    Arrays.copyOf(data, Math.min(length, data.length)), from);
+        }
         SyncMessage message;
         try {
             message = SyncMessage.parse(data, length);
@@ -93,8 +108,7 @@ final class SyncProtocol implements SyncLink.Handler {
 
     private String reject(String code, String answer, byte[] datagram, InetSocketAddress from) {
         String sender = from.getAddress().getHostAddress() + ":" + from.getPort();
-        context.reporter().packet(Direction.RECEIVED, context.driverUid(), datagram, "rejected from " + sender
-                + ": " + answer);
+        sampler.rejected(context.driverUid(), datagram, "rejected from " + sender + ": " + answer);
         if (rejected.get(code).incrementAndGet() == 1) {
             context.event(EventKind.PROBLEM, "rejected time sync datagram from " + sender + ": " + answer
                     + "; further '" + code + "' rejections are only counted");

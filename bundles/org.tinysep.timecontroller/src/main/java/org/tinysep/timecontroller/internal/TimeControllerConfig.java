@@ -29,4 +29,9 @@ public @interface TimeControllerConfig {
     @AttributeDefinition(description = "Seconds EXTERNAL time may go without a TICK before the clock returns to "
             + "REAL (the synchroniser has finished or gone); 0 never returns", min = "0")
     long syncTimeout() default 120;
+
+    @AttributeDefinition(description = "Synchroniser addresses allowed when syncBindAddress is not a loopback "
+            + "address: IP addresses or blocks, comma-separated; empty = 127.0.0.1 and ::1 only. Others are refused "
+            + "(ERROR forbidden) and counted, so nobody else on the network can drive the clock")
+    String syncAllowedSources() default "";
 }

@@ -26,6 +26,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.SourceGate;
 import org.tinysep.device.support.StateFolder;
 
 /**
@@ -79,7 +80,8 @@ public final class TimeControllerDriver extends AbstractDriver {
         device.link(linkState);
         device.syncTimeout(config.syncTimeout());
         protocol = new SyncProtocol(context(), device.clock(), auth(config), () -> device.switchTo(ClockMode.REAL,
-                "the time synchroniser said BYE: it has finished, so the platform follows the system clock again"));
+                "the time synchroniser said BYE: it has finished, so the platform follows the system clock again"),
+                gate(config));
         if (link != null) {
             link.start(protocol);
             LOG.info("{} in {} mode; time synchroniser link {}", NAME, mode, linkState);
@@ -93,9 +95,21 @@ public final class TimeControllerDriver extends AbstractDriver {
         commands = bundleContext.registerService(TimeCommands.class, new TimeCommands(this), props);
     }
 
+    /** Who may drive the clock (docs/security.md); a bad allow-list falls back to 127.0.0.1 and ::1. */
+    private SourceGate gate(TimeControllerConfig c) {
+        try {
+            return SourceGate.of(c.syncBindAddress(), c.syncAllowedSources(), 0);
+        } catch (IllegalArgumentException e) {
+            context().event(EventKind.PROBLEM, "syncAllowedSources: " + e.getMessage()
+                    + "; allowing only 127.0.0.1, ::1");
+            return SourceGate.of(c.syncBindAddress(), "", 0);
+        }
+    }
+
     @Modified
     synchronized void modified(TimeControllerConfig next) {
         if (next.syncPort() != config.syncPort() || !next.syncBindAddress().equals(config.syncBindAddress())
+                || !next.syncAllowedSources().equals(config.syncAllowedSources())
                 || !next.syncKeyFile().equals(config.syncKeyFile())) {
             LOG.info("{}: synchroniser link moves to {}:{} (key {}); the device is re-created", NAME,
                     next.syncBindAddress(), next.syncPort(), next.syncKeyFile());

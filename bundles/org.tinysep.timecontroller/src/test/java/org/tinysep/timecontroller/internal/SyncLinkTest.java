@@ -132,6 +132,34 @@ class SyncLinkTest {
     }
 
     @Test
+    void offLoopbackOnlyAllowedSynchronisersMayDriveTheClockEvenWithTheKey() throws Exception {
+        DriverContext context = new DriverContext(null, "driver-uid", "TimeController", logs.reporter(),
+                new PlatformClock(() -> T0));
+        SyncProtocol guarded = new SyncProtocol(context, clock, auth, () -> { },
+                org.tinysep.device.support.SourceGate.of("0.0.0.0", "127.0.0.1", 0));
+        try (SyncLink open = SyncLink.open("0.0.0.0", 0);
+                DatagramSocket stranger = new DatagramSocket(0, InetAddress.getByName("127.0.0.2"))) {
+            open.start(guarded);
+            stranger.setSoTimeout(5000);
+            InetSocketAddress to = new InetSocketAddress(InetAddress.getLoopbackAddress(), open.localPort());
+            for (String request : List.of("HELLO", "TICK 1 2026-11-22T12:00:00Z " + "0".repeat(64))) {
+                byte[] b = request.getBytes(StandardCharsets.US_ASCII);
+                stranger.send(new DatagramPacket(b, b.length, to));
+                DatagramPacket in = new DatagramPacket(new byte[512], 512);
+                stranger.receive(in);
+                String answer = new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
+                assertEquals("ERROR - forbidden 127.0.0.2 is not an allowed time synchroniser (syncAllowedSources)",
+                        answer);
+            }
+            assertEquals(2, guarded.rejected("forbidden"));
+            assertEquals(T0, clock.now(), "the clock did not move");
+            assertEquals(List.of(), advanced);
+            platform = to; // the allowed synchroniser (127.0.0.1) is served as before
+            assertEquals("DONE 3 2026-11-22T10:00:02Z", askSigned("TICK 3 2026-11-22T10:00:02Z"));
+        }
+    }
+
+    @Test
     void aCapturedTickCannotBeReplayed() throws Exception {
         String first = signed("TICK 7 2026-11-22T10:00:01Z", KEY);
         assertEquals("DONE 7 2026-11-22T10:00:01Z", ask(first));

@@ -1,5 +1,6 @@
 package org.tinysep.amica.busradio.base;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -21,9 +22,16 @@ import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.health.NodeHealth;
+import org.tinysep.api.health.NodeHealthSource;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.HealthWords;
 import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.NodeWatch;
+import org.tinysep.device.support.ReportRates;
 import org.tinysep.device.support.Uids;
 
 /**
@@ -32,7 +40,10 @@ import org.tinysep.device.support.Uids;
  *
  * @param <R> the route type: where the node was last heard and where its commands go
  */
-public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioAmicaProvider {
+public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioAmicaProvider, NodeHealthSource {
+
+    /** How often an AmICA node sends its keep-alive (the thesis gives no rate; the simulator's, a TinySEP choice). */
+    public static final Duration KEEP_ALIVE_PERIOD = Duration.ofSeconds(60);
 
     /** Sends a command payload to the node along a route; the driver's side. */
     public interface Link<R> {
@@ -55,6 +66,9 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     private volatile KeepAlive keepAlive;
     private volatile R route;
     private volatile Instant lastSeen;
+    private volatile NodePolicy policy = NodePolicy.DEFAULT;
+    private final NodeWatch watch;
+    private final BatteryWatch battery = new BatteryWatch();
 
     /**
      * @param type  the device type, e.g. {@code BusRadioAmicaUdp}; the UID derives from the driver name and the
@@ -72,7 +86,21 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         this.nodeTypes = typeNames(keepAlive);
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
         serviceProperty(DeviceProperties.NODE_TYPE, nodeTypes.toArray(String[]::new));
-        publish(this, BusRadioAmicaProvider.class);
+        this.watch = new NodeWatch(interval(nodeTypes), perSecond(nodeTypes), null);
+        publish(this, BusRadioAmicaProvider.class, NodeHealthSource.class);
+    }
+
+    private static Duration interval(Set<String> types) {
+        return ReportRates.interval(types, KEEP_ALIVE_PERIOD);
+    }
+
+    private static double perSecond(Set<String> types) {
+        return ReportRates.perSecond(types) + 1.0 / KEEP_ALIVE_PERIOD.getSeconds();
+    }
+
+    /** Sets the health settings (silence, low battery); the node table passes its bus radio's. */
+    public void policy(NodePolicy policy) {
+        this.policy = policy;
     }
 
     /**
@@ -90,6 +118,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         AmicaBusDevice<R> d = new AmicaBusDevice<>(context, type, AmicaAddress.parse(saved.nodeAddress()), ka,
                 null, link);
         d.lastSeen = saved.lastSeen();
+        d.watch.restored(saved.lastSeen());
         d.offline(NOT_HEARD + (saved.lastSeen() == null ? "" : " (last seen " + saved.lastSeen() + ")"));
         return d;
     }
@@ -125,14 +154,20 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         packets.incrementAndGet();
         route = from;
         lastSeen = at;
+        Instant silence = watch.heard(at, frame.sequence());
         if (payload instanceof KeepAlive ka) {
             keepAlive = ka;
             Set<String> types = typeNames(ka);
             if (!types.equals(nodeTypes)) {
                 event("node types changed from " + nodeTypes + " to " + types);
                 nodeTypes = types;
+                watch.rates(interval(types), perSecond(types));
                 serviceProperty(DeviceProperties.NODE_TYPE, types.toArray(String[]::new));
             }
+            batteryReport(ka.batteryMillivolts());
+        }
+        if (silence != null) {
+            event(HealthWords.heardAgain(silence, at));
         }
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
@@ -141,6 +176,39 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
         }
         stateChanged(); // last seen, saved at most every 10 s, never on this thread
+    }
+
+    private void batteryReport(int millivolts) {
+        switch (battery.update(millivolts, policy.lowBatteryMillivolts())) {
+            case LOW -> context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.lowBattery("AmICA node "
+                    + address + " (" + name() + ")", millivolts, policy.lowBatteryMillivolts()));
+            case RECOVERED -> event("battery fine again: " + millivolts + " mV");
+            default -> { }
+        }
+    }
+
+    /**
+     * Checks for silence on a platform tick: a node not heard for the policy's number of report intervals goes
+     * OFFLINE with a PROBLEM entry in plain words; its next valid frame brings it back ONLINE.
+     */
+    public void checkHealth(Instant now) {
+        NodePolicy p = policy;
+        if (watch.checkSilence(now, p.silentAfterIntervals())) {
+            Instant since = watch.silentSince();
+            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem("AmICA node " + address
+                    + " (" + name() + ")", since, now, watch.interval(), p.silentAfterIntervals()));
+            status(DeviceStatus.State.OFFLINE, HealthWords.silentDetail(since, watch.interval()));
+        }
+    }
+
+    @Override
+    public NodeHealth health() {
+        Instant now = now();
+        int mv = keepAlive.batteryMillivolts();
+        return new NodeHealth(uid(), address.toString(), nodeTypes,
+                !watch.silent() && status().state() == DeviceStatus.State.ONLINE, watch.lastHeard(),
+                watch.silentSince(), watch.interval(), mv == 0 ? null : mv, battery.low(), watch.received(now),
+                watch.expected(now), watch.sequenceGaps());
     }
 
     /** Marks the device OFFLINE, e.g. because its link went down; the next packet brings it back ONLINE. */
@@ -213,6 +281,13 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
                 Parameter.readOnly("packets", packets.get(), "valid packets received"),
                 Parameter.readOnly("uptimeSeconds", ka.uptimeSeconds(), "from the last keep-alive"),
                 Parameter.readOnly("batteryMillivolts", ka.batteryMillivolts(), "from the last keep-alive"),
+                Parameter.readOnly("battery", battery.describe(ka.batteryMillivolts(), policy.lowBatteryMillivolts()),
+                        "battery state from the last keep-alive"),
+                Parameter.readOnly("reportInterval", HealthWords.span(watch.interval()),
+                        "how often the node's types promise a report (thesis 3.9)"),
+                Parameter.readOnly("linkQuality", watch.describeQuality(now()),
+                        "reports received vs promised (thesis Table 5.4)"),
+                Parameter.readOnly("sequenceGaps", watch.sequenceGaps(), "frames missing by sequence number"),
                 Parameter.readOnly("vendorId", ka.vendorId(), "from the last keep-alive"),
                 Parameter.readOnly("productId", ka.productId(), "node type bitmask, see docs/protocols/amica.md"),
                 Parameter.readOnly("serialNumber", ka.serialNumber(), "from the last keep-alive"));

@@ -12,10 +12,13 @@ import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.Direction;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.NodePolicy;
 
 /**
  * The node table of a bus radio and the way out to the nodes: creates a bus device per node (registered through
@@ -53,6 +56,8 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private final String deviceType;
     private final Transport<R> transport;
     private final UnaryOperator<AmicaBusDevice<R>> register;
+    private final AtomicLong overCap = new AtomicLong();
+    private volatile NodePolicy policy = NodePolicy.DEFAULT;
 
     /**
      * @param deviceType the type of the bus devices, e.g. {@code BusRadioAmicaUdp}
@@ -72,11 +77,57 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         return nodes.get(address);
     }
 
+    /** Sets the health and capacity settings, for the nodes known and those to come. */
+    public void policy(NodePolicy policy) {
+        this.policy = policy;
+        nodes.values().forEach(d -> d.policy(policy));
+    }
+
+    /**
+     * Creates the bus device of a new node, unless the bus radio has {@code maxNodes} already (issue 14: a flood
+     * of keep-alives from made-up addresses must not create devices without end): then the node is rejected and
+     * counted, and the first such rejection is a PROBLEM in the event log.
+     *
+     * @return the new device, or null when over the cap
+     */
     @Override
     public AmicaBusDevice<R> create(AmicaAddress address, KeepAlive keepAlive, R from, Instant at) {
+        NodePolicy p = policy;
+        if (nodes.size() >= p.maxNodes()) {
+            if (overCap.incrementAndGet() == 1) {
+                context.event(EventKind.PROBLEM, "node " + address + " (via " + describe(from) + ") not created: "
+                        + "this bus radio already has " + nodes.size() + " nodes, its limit (maxNodes = "
+                        + p.maxNodes() + "). Further new nodes are rejected and only counted (rejected.node_cap).");
+            }
+            return null;
+        }
         AmicaBusDevice<R> device = new AmicaBusDevice<>(context, deviceType, address, keepAlive, from, this);
+        device.policy(p);
         nodes.put(address, device);
         return register.apply(device);
+    }
+
+    /** Checks every node for silence (sensor health); call on each platform tick. */
+    public void checkHealth(Instant now) {
+        for (AmicaBusDevice<R> d : nodes.values()) {
+            d.checkHealth(now);
+        }
+    }
+
+    /** @return frames from new nodes rejected because the bus radio has {@code maxNodes} */
+    public long overCap() {
+        return overCap.get();
+    }
+
+    /** @return {@code maxNodes}, {@code rejected.node_cap} and the health settings, for the driver's parameters */
+    public List<Parameter> parameters() {
+        NodePolicy p = policy;
+        return List.of(Parameter.readOnly("maxNodes", p.maxNodes(), "most nodes this bus radio creates"),
+                Parameter.readOnly("rejected.node_cap", overCap.get(), "frames from new nodes beyond maxNodes"),
+                Parameter.readOnly("silentAfterIntervals", p.silentAfterIntervals(),
+                        "missed report intervals that make a node OFFLINE"),
+                Parameter.readOnly("lowBatteryMillivolts", p.lowBatteryMillivolts(),
+                        "keep-alive battery voltage reported as low"));
     }
 
     /**
@@ -86,8 +137,11 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
      * @return how many were re-created
      */
     public int restore(List<ComponentBackup> saved) {
-        return Backups.recreate(context, saved, b -> AmicaBusDevice.restored(context, deviceType, b, this),
-                d -> nodes.putIfAbsent(d.address(), d) == null, register);
+        return Backups.recreate(context, saved, b -> {
+            AmicaBusDevice<R> d = AmicaBusDevice.restored(context, deviceType, b, this);
+            d.policy(policy);
+            return d;
+        }, d -> nodes.putIfAbsent(d.address(), d) == null, register);
     }
 
     /** Forgets the node of a removed bus device, so its next keep-alive creates it anew. */

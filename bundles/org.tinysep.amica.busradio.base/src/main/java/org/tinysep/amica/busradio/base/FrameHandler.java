@@ -13,6 +13,7 @@ import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.RejectSampler;
 
 /**
  * Turns one frame into a delivery to a bus device, a new bus device (keep-alive from an unknown node), or a
@@ -27,6 +28,7 @@ public final class FrameHandler<R> {
     public interface Nodes<R> {
         AmicaBusDevice<R> find(AmicaAddress address);
 
+        /** @return the new bus device, or null when the node may not be created (over the node cap) */
         AmicaBusDevice<R> create(AmicaAddress address, KeepAlive keepAlive, R from, Instant at);
 
         /** @return the route for logs, e.g. {@code 127.0.0.1:5000} */
@@ -36,6 +38,7 @@ public final class FrameHandler<R> {
     private final DriverContext context;
     private final Nodes<R> nodes;
     private final RejectCounter rejects;
+    private final RejectSampler sampler;
     private final AtomicLong received = new AtomicLong();
     private volatile Instant lastStamp;
 
@@ -43,6 +46,7 @@ public final class FrameHandler<R> {
         this.context = context;
         this.nodes = nodes;
         this.rejects = rejects;
+        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
     }
 
     /** Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after. */
@@ -104,8 +108,12 @@ public final class FrameHandler<R> {
                         .getMessage(), raw, from);
                 return;
             }
-            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
             device = nodes.create(frame.sender(), keepAlive, from, at);
+            if (device == null) { // over the bus radio's node cap: counted by the node table
+                sampler.rejected(origin, raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
+                return;
+            }
+            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         } else {
             context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         }
@@ -115,7 +123,21 @@ public final class FrameHandler<R> {
     private void reject(RejectReason reason, String message, byte[] raw, R from) {
         String origin = nodes.describe(from);
         rejects.reject(reason, message, origin);
-        context.reporter().packet(Direction.RECEIVED, origin, raw, message);
+        sampler.rejected(origin, raw, message);
+    }
+
+    /**
+     * Records a datagram the transport refused for its source (not on the allow-list, over the rate limit; the
+     * transport's {@code SourceGate} counts it): in the packet log, sampled like every rejected input.
+     */
+    public void refused(String why, byte[] data, int length, R from) {
+        received.incrementAndGet();
+        sampler.rejected(nodes.describe(from), Arrays.copyOf(data, length), why);
+    }
+
+    /** Writes the summary of rejected frames not kept in the packet log, at most once a minute; call on a tick. */
+    public void flushRejects() {
+        sampler.flush();
     }
 
     /** @return how many datagrams or frames were handed in (rejected ones included, stream runs not) */

@@ -28,4 +28,19 @@ public @interface BusRadioSunSpotConfig {
 
     @AttributeDefinition(description = "Radiogram port the Sun SPOTs send to (radiogram://:port), 1..255")
     int sdkRadiogramPort() default 100;
+
+    @AttributeDefinition(description = "Sources allowed to send on the UDP link when udpBindAddress is not a "
+            + "loopback address: IP addresses or blocks (10.0.0.0/24), comma-separated; empty = 127.0.0.1 and ::1 only")
+    String allowedSources() default "";
+
+    @AttributeDefinition(description = "Datagrams per second one source IP may send on the UDP link when "
+            + "udpBindAddress is not a loopback address; more are rejected and counted; 0 = no limit")
+    int sourceRateLimit() default 2000;
+
+    @AttributeDefinition(description = "Report intervals without a valid packet after which a Sun SPOT is OFFLINE")
+    int silentAfterIntervals() default 30;
+
+    @AttributeDefinition(description = "Most Sun SPOT addresses this bus radio creates devices for; packets from "
+            + "further new addresses are rejected and counted")
+    int maxNodes() default 1000;
 }

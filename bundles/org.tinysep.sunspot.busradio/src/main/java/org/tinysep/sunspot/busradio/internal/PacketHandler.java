@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.RejectSampler;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -22,12 +23,14 @@ final class PacketHandler {
     private final DriverContext context;
     private final SunSpotNodes nodes;
     private final RejectCounter rejects;
+    private final RejectSampler sampler;
     private final AtomicLong received = new AtomicLong();
 
     PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter rejects) {
         this.context = context;
         this.nodes = nodes;
         this.rejects = rejects;
+        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
     }
 
     /**
@@ -88,14 +91,30 @@ final class PacketHandler {
             reject(e.reason(), e.getMessage(), raw, from);
             return;
         }
-        context.reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
         SunSpotBusDevice device = nodes.findOrCreate(frame.source(), type, from);
+        if (device == null) { // over the node cap: counted by the node table
+            sampler.rejected(from, raw, "rejected: Sun SPOT " + frame.source() + " would exceed maxNodes");
+            return;
+        }
+        context.reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
         device.received(frame, type, from, at);
     }
 
     private void reject(RejectReason reason, String message, byte[] raw, String from) {
         rejects.reject(reason, message, from);
-        context.reporter().packet(Direction.RECEIVED, from, raw, message);
+        sampler.rejected(from, raw, message);
+    }
+
+    /** Records a datagram a link refused for its source (the link's {@code SourceGate} counted it), sampled. */
+    void refusedSource(String why, byte[] data, int length, String from) {
+        received.incrementAndGet();
+        sampler.rejected(from, Arrays.copyOf(data, length), why);
+    }
+
+    /** A platform tick: silent nodes go OFFLINE; the summary of rejected input not kept, at most once a minute. */
+    void tick(Instant now) {
+        nodes.checkHealth(now);
+        sampler.flush();
     }
 
     /** @return how many packets (datagrams, stream frames, radiograms) were handed in, rejected ones included */

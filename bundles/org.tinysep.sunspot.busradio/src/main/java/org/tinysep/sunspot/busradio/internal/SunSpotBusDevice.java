@@ -1,5 +1,6 @@
 package org.tinysep.sunspot.busradio.internal;
 
+import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
 import java.util.Set;
@@ -12,9 +13,15 @@ import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.health.NodeHealth;
+import org.tinysep.api.health.NodeHealthSource;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.HealthWords;
 import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.NodeWatch;
+import org.tinysep.device.support.ReportRates;
 import org.tinysep.device.support.Uids;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -27,7 +34,10 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  * valid payload to its listeners without analysing it, each listener getting its own copy. Thread-safe: packets
  * may arrive on several links at once.
  */
-final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotProvider {
+final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotProvider, NodeHealthSource {
+
+    /** The report interval of a Sun SPOT of no known type (cannot happen: a device has the type it was made by). */
+    private static final Duration FALLBACK_INTERVAL = Duration.ofSeconds(10);
 
     private final SunSpotAddress address;
     private final Listeners<BusRadioSunSpotListener> listeners;
@@ -35,6 +45,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
     private volatile Set<String> nodeTypes;
     private volatile String link;
     private volatile Instant lastSeen;
+    private final NodeWatch watch;
 
     /**
      * @param type  the device type, {@code BusRadioSunSpot}; the UID derives from the driver name and the address
@@ -50,7 +61,9 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         this.nodeTypes = Set.of(first.typeName());
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {first.typeName()});
-        publish(this, BusRadioSunSpotProvider.class);
+        this.watch = new NodeWatch(ReportRates.interval(nodeTypes, FALLBACK_INTERVAL),
+                ReportRates.perSecond(nodeTypes), null);
+        publish(this, BusRadioSunSpotProvider.class, NodeHealthSource.class);
     }
 
     /** The status detail and link of a node re-created from the backup and not heard since. */
@@ -74,6 +87,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
                 types.get(0), NOT_HEARD);
         types.forEach(d::addType);
         d.lastSeen = saved.lastSeen();
+        d.watch.restored(saved.lastSeen());
         d.status(DeviceStatus.State.OFFLINE, NOT_HEARD + (saved.lastSeen() == null ? ""
                 : " (last seen " + saved.lastSeen() + ")"));
         return d;
@@ -89,6 +103,10 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         link = from;
         lastSeen = at;
         addType(type);
+        Instant silence = watch.heard(at, -1); // the Sun SPOT protocol has no sequence numbers
+        if (silence != null) {
+            event(HealthWords.heardAgain(silence, at));
+        }
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
         int sensorType = frame.sensorType();
@@ -105,6 +123,9 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         more.add(type.typeName());
         event("node type " + type.typeName() + " seen; node types now " + more);
         nodeTypes = Set.copyOf(more);
+        if (watch != null) {
+            watch.rates(ReportRates.interval(nodeTypes, FALLBACK_INTERVAL), ReportRates.perSecond(nodeTypes));
+        }
         serviceProperty(DeviceProperties.NODE_TYPE, more.toArray(String[]::new));
     }
 
@@ -113,6 +134,24 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         if (lostLink.equals(link)) {
             status(DeviceStatus.State.OFFLINE, detail);
         }
+    }
+
+    /** Checks for silence on a platform tick (sensor health): OFFLINE with a PROBLEM after the missed intervals. */
+    void checkHealth(Instant now, int silentAfterIntervals) {
+        if (watch.checkSilence(now, silentAfterIntervals)) {
+            Instant since = watch.silentSince();
+            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem("Sun SPOT " + address + " ("
+                    + name() + ")", since, now, watch.interval(), silentAfterIntervals));
+            status(DeviceStatus.State.OFFLINE, HealthWords.silentDetail(since, watch.interval()));
+        }
+    }
+
+    @Override
+    public NodeHealth health() {
+        Instant now = now();
+        return new NodeHealth(uid(), address.toString(), nodeTypes,
+                !watch.silent() && status().state() == DeviceStatus.State.ONLINE, watch.lastHeard(),
+                watch.silentSince(), watch.interval(), null, false, watch.received(now), watch.expected(now), 0);
     }
 
     @Override
@@ -156,7 +195,13 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
                         "sensor types seen from this node so far"),
                 Parameter.readOnly("link", link, "where the node was last heard"),
                 Parameter.readOnly("lastSeen", lastSeen, "time of the last valid packet"),
-                Parameter.readOnly("packets", packets.get(), "valid packets received and delivered"));
+                Parameter.readOnly("packets", packets.get(), "valid packets received and delivered"),
+                Parameter.readOnly("reportInterval", HealthWords.span(watch.interval()),
+                        "how often the node's types promise a report (thesis 3.9.2)"),
+                Parameter.readOnly("linkQuality", watch.describeQuality(now()),
+                        "reports received vs promised (thesis Table 5.5)"),
+                Parameter.readOnly("battery", "not reported (the Sun SPOT protocol carries no battery level)",
+                        "battery state"));
     }
 
     @Override

@@ -13,6 +13,10 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.SourceGate;
+import org.tinysep.api.log.EventKind;
 
 /**
  * Bus Radio Sun SPOT (thesis 4.4.1.3): one bus device per Sun SPOT address, created on the first valid packet of
@@ -34,6 +38,8 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
     private volatile SunSpotNodes nodes;
     private volatile PacketHandler handler;
     private volatile RejectCounter rejects;
+    private volatile SourceGate gate;
+    private volatile PlatformTicker ticker;
 
     public SunSpotBusRadioDriver() {
         super(NAME);
@@ -46,15 +52,31 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
         Map<String, Object> props = new HashMap<>();
         links.udpPort().ifPresent(port -> props.put(PORT_PROPERTY, port));
         start(bundleContext, props);
+        List<String> problems = new ArrayList<>();
+        NodePolicy policy = NodePolicy.of(config.silentAfterIntervals(), 0, config.maxNodes(), problems);
+        try {
+            gate = SourceGate.of(config.udpBindAddress(), config.allowedSources(), config.sourceRateLimit());
+        } catch (IllegalArgumentException e) { // a bad allow-list must not open the radio to everyone
+            gate = SourceGate.of(config.udpBindAddress(), "", config.sourceRateLimit());
+            problems.add(e.getMessage() + "; allowing only 127.0.0.1, ::1");
+        }
+        problems.forEach(p -> context().event(EventKind.PROBLEM, p));
         rejects = new RejectCounter(context());
         nodes = new SunSpotNodes(context(), NAME, this::addDevice);
+        nodes.policy(policy);
         handler = new PacketHandler(context(), nodes, rejects);
         nodes.restore(savedDevices()); // known nodes as they were, before the links open (docs/backup.md)
+        links.gate(gate, p -> context().event(EventKind.PROBLEM, p));
         links.start(handler, nodes, context());
+        PacketHandler h = handler;
+        ticker = new PlatformTicker(bundleContext, NAME, h::tick); // sensor health in platform time
     }
 
     @Deactivate
     void deactivate() {
+        if (ticker != null) {
+            ticker.close();
+        }
         if (links != null) {
             links.close();
         }
@@ -76,6 +98,8 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
         out.add(Parameter.readOnly("received", handler == null ? 0 : handler.received(),
                 "packets received on all links"));
         out.addAll(rejects == null ? List.of() : rejects.parameters());
+        out.addAll(gate == null ? List.of() : gate.parameters());
+        out.addAll(nodes == null ? List.of() : nodes.parameters());
         return out;
     }
 }

@@ -65,6 +65,13 @@ final class SunSpotLinks implements AutoCloseable {
         return udp == null ? OptionalInt.empty() : OptionalInt.of(udp.localPort());
     }
 
+    /** Sets who may send on the UDP link (docs/security.md); call before {@link #start}. */
+    void gate(org.tinysep.device.support.SourceGate gate, java.util.function.Consumer<String> problems) {
+        if (udp != null) {
+            udp.gate(gate, problems);
+        }
+    }
+
     /** Starts receiving on every configured link; reports the problems met so far as PROBLEM events. */
     void start(PacketHandler handler, SunSpotNodes nodes, DriverContext context) {
         if (udp != null) {

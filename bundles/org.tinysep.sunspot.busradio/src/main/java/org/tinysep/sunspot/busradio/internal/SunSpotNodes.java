@@ -1,13 +1,18 @@
 package org.tinysep.sunspot.busradio.internal;
 
+import java.time.Instant;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.UnaryOperator;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.Backups;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.NodePolicy;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
 
@@ -23,6 +28,8 @@ final class SunSpotNodes {
     private final DriverContext context;
     private final String deviceType;
     private final UnaryOperator<SunSpotBusDevice> register;
+    private final AtomicLong overCap = new AtomicLong();
+    private volatile NodePolicy policy = NodePolicy.DEFAULT;
 
     /**
      * @param deviceType the type of the bus devices, {@code BusRadioSunSpot}
@@ -35,7 +42,16 @@ final class SunSpotNodes {
         this.register = register;
     }
 
-    /** @return the bus device of {@code address}, created and registered now if it is new */
+    /** Sets the health and capacity settings (silence, maxNodes; Sun SPOTs report no battery). */
+    void policy(NodePolicy policy) {
+        this.policy = policy;
+    }
+
+    /**
+     * @return the bus device of {@code address}, created and registered now if it is new; null when it is new and
+     *         the bus radio has {@code maxNodes} already (issue 14: 2,000 frames from random addresses made 2,000
+     *         devices): counted, the first one a PROBLEM
+     */
     SunSpotBusDevice findOrCreate(SunSpotAddress address, SunSpotSensorType type, String link) {
         SunSpotBusDevice known = nodes.get(address);
         if (known != null) {
@@ -45,6 +61,15 @@ final class SunSpotNodes {
             known = nodes.get(address);
             if (known != null) {
                 return known;
+            }
+            NodePolicy p = policy;
+            if (nodes.size() >= p.maxNodes()) {
+                if (overCap.incrementAndGet() == 1) {
+                    context.event(EventKind.PROBLEM, "Sun SPOT " + address + " (via " + link + ") not created: this "
+                            + "bus radio already has " + nodes.size() + " nodes, its limit (maxNodes = " + p.maxNodes()
+                            + "). Further new addresses are rejected and only counted (rejected.node_cap).");
+                }
+                return null;
             }
             SunSpotBusDevice device = new SunSpotBusDevice(context, deviceType, address, type, link);
             nodes.put(address, device);
@@ -64,6 +89,25 @@ final class SunSpotNodes {
                 return nodes.putIfAbsent(d.address(), d) == null;
             }
         }, register);
+    }
+
+    /** Checks every node for silence (sensor health); call on each platform tick. */
+    void checkHealth(Instant now) {
+        int missed = policy.silentAfterIntervals();
+        nodes.values().forEach(d -> d.checkHealth(now, missed));
+    }
+
+    long overCap() {
+        return overCap.get();
+    }
+
+    /** @return {@code maxNodes}, {@code rejected.node_cap}, {@code silentAfterIntervals} */
+    List<Parameter> parameters() {
+        NodePolicy p = policy;
+        return List.of(Parameter.readOnly("maxNodes", p.maxNodes(), "most Sun SPOTs this bus radio creates"),
+                Parameter.readOnly("rejected.node_cap", overCap.get(), "packets from new addresses beyond maxNodes"),
+                Parameter.readOnly("silentAfterIntervals", p.silentAfterIntervals(),
+                        "missed report intervals that make a node OFFLINE"));
     }
 
     SunSpotBusDevice find(SunSpotAddress address) {

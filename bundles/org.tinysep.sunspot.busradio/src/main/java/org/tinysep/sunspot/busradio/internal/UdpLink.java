@@ -11,6 +11,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.device.support.SourceGate;
 
 /**
  * The UDP link: one Sun SPOT frame per datagram, from simulators or from a forwarding program next to the
@@ -28,6 +29,8 @@ final class UdpLink implements AutoCloseable {
     private final DatagramSocket socket;
     private final ExecutorService receiver;
     private volatile boolean open = true;
+    private volatile SourceGate gate;
+    private volatile java.util.function.Consumer<String> problems = p -> { };
 
     private UdpLink(DatagramSocket socket, String name) {
         this.socket = socket;
@@ -45,6 +48,16 @@ final class UdpLink implements AutoCloseable {
             throw e;
         }
         return new UdpLink(socket, name);
+    }
+
+    /**
+     * Sets who may send (docs/security.md); call before {@link #start}.
+     *
+     * @param problems told the first refusal of each kind, for the event log
+     */
+    void gate(SourceGate gate, java.util.function.Consumer<String> problems) {
+        this.gate = gate;
+        this.problems = problems;
     }
 
     /** Starts the receive loop; datagrams queued in the socket buffer meanwhile are not lost. */
@@ -81,9 +94,20 @@ final class UdpLink implements AutoCloseable {
                 }
                 continue;
             }
+            String from = "udp " + packet.getAddress().getHostAddress() + ":" + packet.getPort();
+            SourceGate g = gate;
+            SourceGate.Verdict verdict = g == null ? SourceGate.Verdict.PASS : g.check(packet.getAddress());
+            if (verdict != SourceGate.Verdict.PASS) {
+                String first = g.firstRefusal(verdict, packet.getAddress());
+                if (first != null) {
+                    LOG.warn("UDP link {}: {}", localAddress(), first);
+                    problems.accept(first);
+                }
+                handler.refusedSource(SourceGate.why(verdict, packet.getAddress()), buf, packet.getLength(), from);
+                continue;
+            }
             try {
-                handler.datagram(buf, packet.getLength(), "udp " + packet.getAddress().getHostAddress() + ":"
-                        + packet.getPort());
+                handler.datagram(buf, packet.getLength(), from);
             } catch (RuntimeException e) {
                 LOG.error("Datagram handling failed; the receive loop goes on", e);
             }

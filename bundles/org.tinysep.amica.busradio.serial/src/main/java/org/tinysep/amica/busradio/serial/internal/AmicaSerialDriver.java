@@ -1,5 +1,6 @@
 package org.tinysep.amica.busradio.serial.internal;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.osgi.framework.BundleContext;
@@ -14,6 +15,8 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.PlatformTicker;
 
 /**
  * Bus Radio AmICA (serial), thesis 4.4.1.1: one instance per factory configuration, i.e. per serial port, named
@@ -33,36 +36,44 @@ public final class AmicaSerialDriver extends AbstractDriver {
     private static final Logger LOG = LoggerFactory.getLogger(AmicaSerialDriver.class);
 
     private final SerialSettings settings;
+    private final NodePolicy policy;
+    private final List<String> policyProblems = new ArrayList<>();
     private volatile SerialRadio radio;
+    private volatile PlatformTicker ticker;
 
     /** DS constructor injection: the configuration names the driver (one per port). */
     @Activate
     public AmicaSerialDriver(BusRadioSerialConfig config, Map<String, Object> properties) {
-        this(SerialSettings.of(config, properties));
-    }
-
-    private AmicaSerialDriver(SerialSettings settings) {
-        super(settings.driverName());
-        this.settings = settings;
+        super(SerialSettings.of(config, properties).driverName());
+        this.settings = SerialSettings.of(config, properties);
+        this.policy = SerialSettings.policy(config, properties, policyProblems);
     }
 
     @Activate
     void activate(BundleContext bundleContext) {
         start(bundleContext, settings.port() == null ? Map.of() : Map.of(PORT_PROPERTY, settings.port()));
-        for (String problem : settings.problems()) {
+        List<String> problems = new ArrayList<>(settings.problems());
+        problems.addAll(policyProblems);
+        for (String problem : problems) {
             LOG.warn("{}: {}", name(), problem);
             context().event(EventKind.PROBLEM, problem);
         }
         if (settings.port() != null) {
             SerialRadio r = new SerialRadio(context(), settings, this::addDevice);
             radio = r;
+            r.policy(policy);
             r.restore(savedDevices()); // known nodes as they were, before the port opens (docs/backup.md)
             r.start();
+            ticker = new PlatformTicker(bundleContext, name(), r::tick); // sensor health in platform time
         }
     }
 
     @Deactivate
     void deactivate() {
+        PlatformTicker t = ticker;
+        if (t != null) {
+            t.close();
+        }
         SerialRadio r = radio;
         if (r != null) {
             r.close();

@@ -19,4 +19,15 @@ public @interface BusRadioSerialConfig {
 
     @AttributeDefinition(description = "Seconds between attempts to open a missing or lost port")
     int reopenSeconds() default SerialSettings.DEFAULT_REOPEN_SECONDS;
+
+    @AttributeDefinition(description = "Report intervals without a valid frame after which a node is OFFLINE")
+    int silentAfterIntervals() default 30;
+
+    @AttributeDefinition(description = "Keep-alive battery voltage (mV) below which a node's battery is reported "
+            + "low; 0 = never")
+    int lowBatteryMillivolts() default 2200;
+
+    @AttributeDefinition(description = "Most nodes this port's bus radio creates; keep-alives of further new nodes "
+            + "are rejected and counted")
+    int maxNodes() default 1000;
 }

@@ -1,5 +1,6 @@
 package org.tinysep.amica.busradio.serial.internal;
 
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.UnaryOperator;
@@ -13,6 +14,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.NodePolicy;
 import org.tinysep.serial.support.SerialPortLink;
 
 /**
@@ -95,6 +97,17 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         return route.portPath();
     }
 
+    /** Sets the health and capacity settings of the nodes. */
+    void policy(NodePolicy policy) {
+        nodes.policy(policy);
+    }
+
+    /** A platform tick: silent nodes go OFFLINE, the summary of rejected input not kept is written. */
+    void tick(Instant now) {
+        nodes.checkHealth(now);
+        handler.flushRejects();
+    }
+
     /** Forgets the node of a removed bus device. */
     void forget(AbstractDevice device) {
         nodes.forget(device);
@@ -115,6 +128,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         out.add(Parameter.readOnly("sent", nodes.sent(), "frames sent to nodes"));
         out.add(Parameter.readOnly("sendFailures", nodes.failed(), "frames not sent (port closed or write failed)"));
         out.addAll(rejects.parameters());
+        out.addAll(nodes.parameters());
         return out;
     }
 

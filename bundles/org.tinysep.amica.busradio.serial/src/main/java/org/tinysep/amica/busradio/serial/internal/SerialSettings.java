@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.function.IntSupplier;
+import org.tinysep.device.support.NodePolicy;
 
 /**
  * The configuration of one serial port, checked: a bad value never stops the driver. A missing port leaves the
@@ -58,6 +59,25 @@ record SerialSettings(String port, int baudRate, Duration reopenEvery, String co
             return fallback;
         }
         return value;
+    }
+
+    /**
+     * The health and capacity settings (sensor health, node cap); a bad value is a problem line and its default.
+     */
+    static NodePolicy policy(BusRadioSerialConfig config, Map<String, ?> raw, List<String> problems) {
+        NodePolicy d = NodePolicy.DEFAULT;
+        int silent = positive("silentAfterIntervals", config::silentAfterIntervals, raw, d.silentAfterIntervals(),
+                problems);
+        int max = positive("maxNodes", config::maxNodes, raw, d.maxNodes(), problems);
+        int low;
+        try {
+            low = config.lowBatteryMillivolts();
+        } catch (RuntimeException e) {
+            problems.add("lowBatteryMillivolts '" + raw.get("lowBatteryMillivolts") + "' is not a whole number; using "
+                    + d.lowBatteryMillivolts());
+            low = d.lowBatteryMillivolts();
+        }
+        return NodePolicy.of(silent, low, max, problems);
     }
 
     /** @return {@code BusRadioAmicaSerial <port>}, or a name that points at the configuration without a port */

@@ -21,7 +21,9 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.SourceGate;
 
 /**
  * Bus Radio AmICA UDP/IP (thesis 4.4.1.2): listens on a UDP port and hands each datagram to the shared AmICA bus
@@ -50,6 +52,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private UdpTransport transport;
     private String listening;
     private PlatformTicker ticker;
+    private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
     private Instant beforeTick;
 
@@ -60,6 +63,15 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     @Activate
     void activate(BundleContext bundleContext, BusRadioUdpConfig config) {
         Map<String, Object> props = new HashMap<>();
+        List<String> settingProblems = new ArrayList<>();
+        NodePolicy policy = NodePolicy.of(config.silentAfterIntervals(), config.lowBatteryMillivolts(),
+                config.maxNodes(), settingProblems);
+        try {
+            gate = SourceGate.of(config.bindAddress(), config.allowedSources(), config.sourceRateLimit());
+        } catch (IllegalArgumentException e) { // a bad allow-list must not open the radio to everyone
+            gate = SourceGate.of(config.bindAddress(), "", config.sourceRateLimit());
+            settingProblems.add(e.getMessage() + "; allowing only " + String.join(", ", "127.0.0.1", "::1"));
+        }
         String problem = null;
         try {
             transport = UdpTransport.open(config.bindAddress(), config.port(), config.receiveBufferBytes(), NAME);
@@ -74,10 +86,15 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         start(bundleContext, props);
         rejects = new RejectCounter(context(), "datagram", "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
+        nodes.policy(policy);
         handler = new FrameHandler<>(context(), nodes, rejects);
+        settingProblems.forEach(p -> context().event(EventKind.PROBLEM, p));
+        if (gate.enforced()) {
+            LOG.info("{} bound to {}: {}", NAME, config.bindAddress(), gate.describe());
+        }
         nodes.restore(savedDevices()); // known nodes as they were, before the first datagram (docs/backup.md)
         if (transport != null) {
-            transport.start(handler::datagram);
+            transport.start(this::datagram);
             ticker = new PlatformTicker(bundleContext, NAME, this::tick);
         } else {
             context().event(EventKind.PROBLEM, problem);
@@ -88,7 +105,33 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private void tick(Instant now) {
         Instant stamp = beforeTick == null ? now : beforeTick;
         beforeTick = now;
-        transport.drain((data, length, from) -> handler.datagram(data, length, from, stamp));
+        transport.drain((data, length, from) -> datagram(data, length, from, stamp));
+        nodes.checkHealth(now);
+        handler.flushRejects();
+    }
+
+    private void datagram(byte[] data, int length, InetSocketAddress from) {
+        datagram(data, length, from, null);
+    }
+
+    /** The source gate first (allow-list, rate limit; docs/security.md), then the shared frame logic. */
+    private void datagram(byte[] data, int length, InetSocketAddress from, Instant stamp) {
+        SourceGate.Verdict verdict = gate.check(from.getAddress());
+        if (verdict != SourceGate.Verdict.PASS) {
+            refused(verdict, data, length, from);
+            return;
+        }
+        handler.datagram(data, length, from, stamp);
+    }
+
+    private void refused(SourceGate.Verdict verdict, byte[] data, int length, InetSocketAddress from) {
+        String first = gate.firstRefusal(verdict, from.getAddress());
+        if (first != null) {
+            LOG.warn("{}: {}", NAME, first);
+            context().event(EventKind.PROBLEM, first);
+        }
+        String why = SourceGate.why(verdict, from.getAddress());
+        handler.refused(why, data, length, from);
     }
 
     @Deactivate
@@ -131,6 +174,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         out.add(Parameter.readOnly("received", handler == null ? 0 : handler.received(), "datagrams received"));
         out.add(Parameter.readOnly("sent", nodes == null ? 0 : nodes.sent(), "frames sent to nodes"));
         out.addAll(rejects == null ? List.of() : rejects.parameters());
+        out.addAll(gate == null ? List.of() : gate.parameters());
+        out.addAll(nodes == null ? List.of() : nodes.parameters());
         return out;
     }
 }

@@ -1,0 +1,122 @@
+package org.tinysep.amica.busradio.base;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tinysep.amica.busradio.base.TestRadio.T0;
+import static org.tinysep.amica.busradio.base.TestRadio.frame;
+
+import java.time.Instant;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.tinysep.amica.protocol.AmicaAddress;
+import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.amica.protocol.AmicaPayloads;
+import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.health.NodeHealth;
+import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.NodePolicy;
+
+/** Sensor health of AmICA bus devices (issue 12.1) and the node cap (issue 14), without a framework. */
+class NodeHealthTest {
+
+    private static final String FROM = "127.0.0.1:40000";
+    private final TestRadio radio = new TestRadio();
+
+    private void at(Instant t, byte[] datagram) {
+        radio.handler.datagram(datagram, datagram.length, FROM, t);
+    }
+
+    private static byte[] keepAlive(int millivolts) {
+        return frame(1, 17, AmicaPayloads.encode(new KeepAlive(60, millivolts, 1,
+                AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)), 1234)));
+    }
+
+    private static byte[] motion() {
+        return frame(1, 17, AmicaPayloads.encode(new MotionDetection(false)));
+    }
+
+    private List<String> problems() {
+        return radio.logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM).map(EventEntry::message)
+                .toList();
+    }
+
+    @Test
+    void aSilentMovementNodeGoesOfflineAfterTheConfiguredIntervalsAndComesBack() {
+        radio.nodes.policy(new NodePolicy(3, 2200, 1000));
+        at(T0, keepAlive(3000));
+        AmicaBusDevice<String> node = radio.nodes.find(new AmicaAddress(1, 17));
+        assertEquals(DeviceStatus.State.ONLINE, node.status().state());
+        radio.nodes.checkHealth(T0.plusSeconds(5)); // movement: every 2 s, 3 missed = 6 s
+        assertEquals(DeviceStatus.State.ONLINE, node.status().state());
+        radio.nodes.checkHealth(T0.plusSeconds(6));
+        assertEquals(DeviceStatus.State.OFFLINE, node.status().state());
+        assertTrue(node.status().detail().startsWith("silent since 2026-11-22 10:00:00 UTC"), node.status().detail());
+        assertEquals(1, problems().size());
+        assertTrue(problems().get(0).startsWith("AmICA node 1.17 (AmICA node 1.17) has not been heard since "
+                + "2026-11-22 10:00:00 UTC (6 s without a report; it promises one every 2 s"), problems().get(0));
+        NodeHealth h = node.health();
+        assertFalse(h.online());
+        assertEquals(T0, h.silentSince());
+        radio.nodes.checkHealth(T0.plusSeconds(60));
+        assertEquals(1, problems().size(), "one PROBLEM per silence");
+
+        at(T0.plusSeconds(70), motion());
+        assertEquals(DeviceStatus.State.ONLINE, node.status().state());
+        assertTrue(node.health().online());
+        assertNull(node.health().silentSince());
+        assertTrue(radio.logs.events().stream().anyMatch(e -> e.message().startsWith("heard again after 70 s")));
+    }
+
+    @Test
+    void aLowBatteryIsReportedOnceBeforeTheNodeDies() {
+        at(T0, keepAlive(2600));
+        at(T0.plusSeconds(60), keepAlive(2190));
+        at(T0.plusSeconds(120), keepAlive(2150));
+        at(T0.plusSeconds(180), keepAlive(2210)); // wobbling just above the level: not "fine again"
+        AmicaBusDevice<String> node = radio.nodes.find(new AmicaAddress(1, 17));
+        assertEquals(List.of("AmICA node 1.17 (AmICA node 1.17) reports a low battery: 2190 mV (low below 2200 mV)."
+                + " Replace or recharge it soon, before the node stops reporting."), problems());
+        assertTrue(node.health().batteryLow());
+        assertEquals(2210, node.health().batteryMillivolts());
+        at(T0.plusSeconds(240), keepAlive(3100));
+        assertFalse(node.health().batteryLow());
+        assertTrue(radio.logs.events().stream().anyMatch(e -> e.message().equals("battery fine again: 3100 mV")));
+    }
+
+    @Test
+    void linkQualityAndSequenceGapsFromTheFrames() {
+        at(T0, keepAlive(3000));
+        // frames with sequence 7 every time (TestRadio.frame): each later one looks like 255 lost, which is a
+        // restart, not loss; so send frames with increasing numbers, skipping two
+        int[] seqs = {8, 9, 12, 13};
+        for (int i = 0; i < seqs.length; i++) {
+            byte[] f = org.tinysep.amica.protocol.AmicaCodec.encode(new org.tinysep.amica.protocol.AmicaFrame(1, 17,
+                    0, seqs[i], AmicaPayloads.encode(new MotionDetection(false))));
+            at(T0.plusSeconds(2L * (i + 1)), f);
+        }
+        NodeHealth h = radio.nodes.find(new AmicaAddress(1, 17)).health();
+        assertEquals(2, h.sequenceGaps());
+        assertEquals(5, h.received());
+    }
+
+    @Test
+    void newNodesBeyondTheCapAreRejectedAndCountedWithOneProblem() {
+        radio.nodes.policy(new NodePolicy(30, 2200, 2));
+        for (int a = 1; a <= 5; a++) {
+            at(T0, frame(1, a, TestRadio.keepAlive(AmicaNodeType.MOVEMENT)));
+        }
+        assertEquals(2, radio.nodes.size());
+        assertEquals(3, radio.nodes.overCap());
+        assertEquals(1, problems().size());
+        assertTrue(problems().get(0).startsWith("node 1.3 (via route 127.0.0.1:40000) not created: this bus radio "
+                + "already has 2 nodes, its limit (maxNodes = 2)"), problems().get(0));
+        assertEquals(3, radio.logs.packets().stream().filter(p -> p.note().contains("would exceed maxNodes")).count());
+        at(T0, frame(1, 1, TestRadio.keepAlive(AmicaNodeType.MOVEMENT)));
+        assertEquals(3, radio.nodes.overCap(), "known nodes still get through");
+    }
+}

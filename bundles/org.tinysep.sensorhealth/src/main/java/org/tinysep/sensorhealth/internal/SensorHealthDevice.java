@@ -1,0 +1,162 @@
+package org.tinysep.sensorhealth.internal;
+
+import java.time.Instant;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.function.Supplier;
+import java.util.stream.Collectors;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.health.SensorHealth;
+import org.tinysep.api.health.SensorHealthListener;
+import org.tinysep.api.health.SensorHealthProvider;
+import org.tinysep.api.health.UnmonitoredRoom;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.HealthWords;
+import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.Uids;
+import org.tinysep.sensorhealth.internal.Notices.Notice;
+
+/**
+ * The one Sensor Health device: each platform second it reads every node's health, keeps the list of unmonitored
+ * rooms (event log and listeners on each change) and sends the notices that are due, by mail through the Mail
+ * Manager when one is installed, always in the event log.
+ */
+final class SensorHealthDevice extends AbstractDevice implements SensorHealthProvider {
+
+    static final String TYPE = "SensorHealth";
+
+    private final NodeView view;
+    private final Notices notices;
+    private final NoticeWords words;
+    private final Supplier<MailManagerProvider> mail;
+    private final boolean mailNotices;
+    private final long noticeAfterMinutes;
+    private final Listeners<SensorHealthListener> listeners;
+    private volatile List<SensorHealth> sensors = List.of();
+    private volatile List<UnmonitoredRoom> unmonitored = List.of();
+    private volatile long sent;
+    private volatile String lastNotice = "";
+
+    SensorHealthDevice(DriverContext context, NodeView view, NoticeWords words, Supplier<MailManagerProvider> mail,
+            SensorHealthConfig config) {
+        super(context, Uids.of(context.driverName(), "sensors"), TYPE, "Sensor health");
+        this.view = view;
+        this.words = words;
+        this.mail = mail;
+        this.mailNotices = config.mailNotices();
+        this.noticeAfterMinutes = Math.max(0, config.noticeAfterMinutes());
+        this.notices = new Notices(java.time.Duration.ofMinutes(noticeAfterMinutes));
+        this.listeners = new Listeners<>(uid());
+        publish(this, SensorHealthProvider.class);
+    }
+
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
+
+    /** One platform second. */
+    void tick(Instant now) {
+        List<SensorHealth> all = view.sensors();
+        sensors = all;
+        rooms(Unmonitored.of(all), now);
+        List<Notice> due = notices.due(all, now);
+        if (!due.isEmpty()) {
+            send(due);
+        }
+        long offline = all.stream().filter(s -> !s.node().online()).count();
+        status(DeviceStatus.State.ONLINE, offline == 0 ? "all " + all.size() + " sensors heard"
+                : offline + " of " + all.size() + " sensors offline" + (unmonitored.isEmpty() ? ""
+                        : "; unmonitored: " + unmonitored.stream().map(UnmonitoredRoom::roomName)
+                                .collect(Collectors.joining(", "))));
+    }
+
+    private void rooms(List<UnmonitoredRoom> now, Instant at) {
+        Set<String> before = new HashSet<>();
+        unmonitored.forEach(r -> before.add(r.roomUid()));
+        Set<String> after = new HashSet<>();
+        now.forEach(r -> after.add(r.roomUid()));
+        List<UnmonitoredRoom> old = unmonitored;
+        unmonitored = List.copyOf(now);
+        for (UnmonitoredRoom r : now) {
+            if (!before.contains(r.roomUid())) {
+                context.reporter().event(EventKind.PROBLEM, uid(), "room " + r.roomName() + " is unmonitored: none "
+                        + "of its sensors has been heard since " + HealthWords.time(r.since())
+                        + "; inactivity there cannot be seen until one reports again");
+                listeners.fire(l -> l.roomUnmonitored(this, r, at));
+            }
+        }
+        for (UnmonitoredRoom r : old) {
+            if (!after.contains(r.roomUid())) {
+                event("room " + r.roomName() + " is monitored again: a sensor there reports again");
+                listeners.fire(l -> l.roomMonitoredAgain(this, r.roomUid(), at));
+            }
+        }
+    }
+
+    private void send(List<Notice> due) {
+        String subject = words.subject(due);
+        MailManagerProvider m = mailNotices ? mail.get() : null;
+        if (m != null) {
+            m.send(subject, words.body(due));
+        }
+        sent++;
+        lastNotice = subject;
+        event("notice: " + subject.substring(NoticeWords.PREFIX.length()) + (m != null
+                ? " (mailed to the caregivers)" : mailNotices ? " (not mailed: no Mail Manager installed)"
+                : " (not mailed: mailNotices=false)"));
+    }
+
+    @Override
+    public List<SensorHealth> sensors() {
+        return sensors;
+    }
+
+    @Override
+    public List<UnmonitoredRoom> unmonitoredRooms() {
+        return unmonitored;
+    }
+
+    @Override
+    public String deviceUid() {
+        return uid();
+    }
+
+    @Override
+    public Connection connect(SensorHealthListener listener) {
+        return listeners.add(listener);
+    }
+
+    @Override
+    protected List<Parameter> moreParameters() {
+        List<SensorHealth> all = sensors;
+        return List.of(
+                Parameter.readOnly("sensors", all.size(), "nodes watched"),
+                Parameter.readOnly("offline", list(all.stream().filter(s -> !s.node().online()).toList()),
+                        "silent nodes, with their room"),
+                Parameter.readOnly("unmonitoredRooms", unmonitored.stream().map(r -> r.roomName() + " since "
+                        + HealthWords.time(r.since())).collect(Collectors.joining(", ")),
+                        "rooms none of whose movement, door or window sensors is heard"),
+                Parameter.readOnly("lowBatteries", list(all.stream().filter(s -> s.node().batteryLow()).toList()),
+                        "nodes reporting a low battery"),
+                Parameter.readOnly("noticeAfterMinutes", noticeAfterMinutes, "OFFLINE this long before a notice"),
+                Parameter.readOnly("notices", sent, "notices sent"),
+                Parameter.readOnly("lastNotice", lastNotice, "subject of the last notice"));
+    }
+
+    private static String list(List<SensorHealth> s) {
+        return s.stream().map(h -> h.name() + (h.roomName() == null ? "" : " in " + h.roomName()))
+                .collect(Collectors.joining(", "));
+    }
+
+    @Override
+    protected void onDispose() {
+        listeners.closeAll();
+    }
+}

@@ -1,0 +1,172 @@
+package org.tinysep.device.support;
+
+import java.time.Duration;
+import java.time.Instant;
+
+/**
+ * One node's liveness in platform time (sensor health, issue 12): when it was last heard, whether it has gone
+ * silent (no valid frame for a configured number of its report intervals), how many frames it sent in the last
+ * {@link #WINDOW} against how many its node types promise (link quality, thesis Table 5.4), and frames missing by
+ * sequence number. Thread-safe; cheap on the packet path (no allocation per frame).
+ */
+public final class NodeWatch {
+
+    /** The link-quality window: the thesis measured 5 minutes per position (5.2). */
+    public static final Duration WINDOW = Duration.ofMinutes(5);
+    private static final int BUCKETS = 30;
+    private static final long BUCKET_SECONDS = WINDOW.getSeconds() / BUCKETS;
+
+    private final long[] counts = new long[BUCKETS];
+    private final long[] bucketOf = new long[BUCKETS];
+    private Duration interval;
+    private double perSecond;
+    private Instant lastHeard;
+    private Instant silenceBase;
+    private Instant firstHeard;
+    private Instant silentSince;
+    private int lastSequence = -1;
+    private long sequenceGaps;
+
+    /**
+     * @param interval  the node's report interval (silence is counted in these)
+     * @param perSecond the reports per second the node promises (link quality)
+     * @param lastHeard when it was last heard before (from a backup), or null
+     */
+    public NodeWatch(Duration interval, double perSecond, Instant lastHeard) {
+        rates(interval, perSecond);
+        this.lastHeard = lastHeard;
+        this.silenceBase = lastHeard;
+        java.util.Arrays.fill(bucketOf, Long.MIN_VALUE);
+    }
+
+    /** The node's types changed: new report interval and rate. */
+    public synchronized void rates(Duration interval, double perSecond) {
+        if (interval.isNegative() || interval.isZero()) {
+            throw new IllegalArgumentException("report interval must be positive: " + interval);
+        }
+        this.interval = interval;
+        this.perSecond = perSecond;
+    }
+
+    /**
+     * A valid frame arrived.
+     *
+     * @param sequence the frame's sequence number 0..255, or -1 when the protocol has none
+     * @return when the silence it ends began (the node was OFFLINE for silence), else null
+     */
+    public synchronized Instant heard(Instant at, int sequence) {
+        if (firstHeard == null) {
+            firstHeard = at;
+        }
+        lastHeard = at;
+        silenceBase = at;
+        long bucket = Math.floorDiv(at.getEpochSecond(), BUCKET_SECONDS);
+        int slot = (int) Math.floorMod(bucket, (long) BUCKETS);
+        if (bucketOf[slot] != bucket) {
+            bucketOf[slot] = bucket;
+            counts[slot] = 0;
+        }
+        counts[slot]++;
+        if (sequence >= 0) {
+            if (lastSequence >= 0) {
+                int gap = (sequence - lastSequence - 1) & 0xFF;
+                if (gap < 128) { // a larger "gap" is a node restart or a frame out of order, not loss
+                    sequenceGaps += gap;
+                }
+            }
+            lastSequence = sequence;
+        }
+        Instant ended = silentSince;
+        silentSince = null;
+        return ended;
+    }
+
+    /**
+     * Checks for silence on a platform tick.
+     *
+     * @param missedIntervals how many report intervals without a frame make the node silent
+     * @return true when the node went silent just now (then {@link #silentSince()} is its last frame time)
+     */
+    public synchronized boolean checkSilence(Instant now, int missedIntervals) {
+        if (silentSince != null || silenceBase == null) {
+            return false;
+        }
+        if (now.isBefore(silenceBase)) { // the clock went back (end of a simulation): count from now
+            silenceBase = now;
+            return false;
+        }
+        if (Duration.between(silenceBase, now).compareTo(interval.multipliedBy(Math.max(1, missedIntervals))) < 0) {
+            return false;
+        }
+        silentSince = lastHeard;
+        return true;
+    }
+
+    /**
+     * The node was re-created from a backup and has not been heard since the restart: silent since its last frame
+     * before it ({@code lastHeard}, the epoch when unknown), without a new silence to report.
+     */
+    public synchronized void restored(Instant lastHeard) {
+        this.lastHeard = lastHeard;
+        this.silenceBase = lastHeard;
+        this.silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
+    }
+
+    public synchronized boolean silent() {
+        return silentSince != null;
+    }
+
+    /** @return the last frame time before the current silence, null while heard */
+    public synchronized Instant silentSince() {
+        return silentSince;
+    }
+
+    public synchronized Instant lastHeard() {
+        return lastHeard;
+    }
+
+    public synchronized Duration interval() {
+        return interval;
+    }
+
+    public synchronized long sequenceGaps() {
+        return sequenceGaps;
+    }
+
+    /** @return valid frames in the window ending now */
+    public synchronized long received(Instant now) {
+        long current = Math.floorDiv(now.getEpochSecond(), BUCKET_SECONDS);
+        long sum = 0;
+        for (int i = 0; i < BUCKETS; i++) {
+            if (bucketOf[i] > current - BUCKETS && bucketOf[i] <= current) {
+                sum += counts[i];
+            }
+        }
+        return sum;
+    }
+
+    /** @return reports the node's types promise in the window ending now (since it was first heard) */
+    public synchronized long expected(Instant now) {
+        if (firstHeard == null) {
+            return 0;
+        }
+        long current = Math.floorDiv(now.getEpochSecond(), BUCKET_SECONDS);
+        Instant windowStart = Instant.ofEpochSecond((current - BUCKETS + 1) * BUCKET_SECONDS);
+        boolean sinceFirst = !firstHeard.isBefore(windowStart);
+        Instant from = sinceFirst ? firstHeard : windowStart;
+        double seconds = Math.max(0, Duration.between(from, now).toMillis() / 1000.0);
+        return (long) Math.floor(seconds * perSecond) + (sinceFirst ? 1 : 0);
+    }
+
+    /** @return "96 % (144 of 150 expected in the last 5 min)" or "not rated yet" */
+    public String describeQuality(Instant now) {
+        long expected = expected(now);
+        long received = received(now);
+        if (expected <= 1) {
+            return "not rated yet";
+        }
+        long percent = Math.min(100, Math.round(100.0 * received / expected));
+        return percent + " % (" + received + " of " + expected + " expected reports in the last "
+                + WINDOW.toMinutes() + " min)";
+    }
+}

@@ -1,0 +1,36 @@
+package org.tinysep.device.support;
+
+import java.time.Duration;
+import java.util.Map;
+import java.util.Set;
+import org.tinysep.api.device.NodeType;
+
+/**
+ * The report periods the thesis's node types promise (3.9.1 AmICA, 3.9.2 Sun SPOT): a movement or pet collar node
+ * reports every 2 s, a reed switch (door, window) every second, lights, heaters, speakers and the Sun SPOT
+ * temperature and light sensors every 10 s. Used to tell a silent node (sensor health) and to rate its link.
+ */
+public final class ReportRates {
+
+    private static final Map<String, Integer> PERIOD_SECONDS = Map.of(
+            NodeType.MOVEMENT, 2, NodeType.PET_COLLAR, 2, NodeType.DOOR, 1, NodeType.WINDOW, 1,
+            NodeType.SIMPLE_LIGHT, 10, NodeType.DIMMABLE_LIGHT, 10, NodeType.HEATER, 10, NodeType.SPEAKER, 10,
+            NodeType.TEMPERATURE, 10, NodeType.LIGHT_SENSOR, 10);
+
+    private ReportRates() {
+    }
+
+    /**
+     * @param fallback the interval for a node of no known type (an AmICA node's keep-alive period)
+     * @return the shortest report period of the types: how often the node is heard at least
+     */
+    public static Duration interval(Set<String> nodeTypes, Duration fallback) {
+        return nodeTypes.stream().map(PERIOD_SECONDS::get).filter(p -> p != null).min(Integer::compare)
+                .map(Duration::ofSeconds).orElse(fallback);
+    }
+
+    /** @return reports per second the types promise together (a node of several types sends each report) */
+    public static double perSecond(Set<String> nodeTypes) {
+        return nodeTypes.stream().map(PERIOD_SECONDS::get).filter(p -> p != null).mapToDouble(p -> 1.0 / p).sum();
+    }
+}
