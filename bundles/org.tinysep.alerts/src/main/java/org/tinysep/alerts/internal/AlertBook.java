@@ -42,6 +42,14 @@ final class AlertBook {
         }
     }
 
+    /** @return the sentence for the event log after loading open alerts, if any */
+    Optional<String> restored() {
+        List<Alert> open = open();
+        return open.isEmpty() ? Optional.empty() : Optional.of("restored after a restart: " + open.size()
+                + " open alert(s), still repeated and escalated until acknowledged: " + String.join("; ",
+                open.stream().map(a -> "alert " + a.id() + " \"" + a.subject() + "\"").toList()));
+    }
+
     String nextId() {
         return Long.toString(++lastId);
     }

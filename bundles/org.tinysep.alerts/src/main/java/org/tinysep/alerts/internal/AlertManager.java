@@ -6,9 +6,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Optional;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -18,18 +15,14 @@ import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
 import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.metatype.annotations.Designate;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertListener;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.device.Connection;
-import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.StateFolder;
@@ -44,17 +37,13 @@ import org.tinysep.device.support.StateFolder;
 @Designate(ocd = AlertsConfig.class)
 public final class AlertManager implements AlertService {
 
-    static final String ORIGIN = "Alerts";
-    private static final Logger LOG = LoggerFactory.getLogger(AlertManager.class);
-
-    private final Listeners<AlertListener> listeners = new Listeners<>(ORIGIN);
-    private final ExecutorService fire = Executors.newSingleThreadExecutor(r -> new Thread(r, "tinysep-alerts"));
+    private final FanOut fanOut = new FanOut();
+    private final AlertLog log = new AlertLog();
     private PlatformClock clock;
     private AlertBook book;
     private Notifier notifier;
     private DailySummary summary;
     private PlatformTicker ticker;
-    private volatile EventLog eventLog;
     private volatile MailManagerProvider mail;
 
     @Activate
@@ -69,33 +58,26 @@ public final class AlertManager implements AlertService {
         }
         Path file = StateFolder.resolveOrDataArea(config.stateFile(), context, "alerts/alerts.properties");
         this.clock = PlatformClock.tracking(context);
-        this.book = new AlertBook(new AlertStore(file), this::problem);
-        this.notifier = new Notifier(s, new Words(s.zone()), () -> mail, this::event, this::problem);
+        this.book = new AlertBook(new AlertStore(file), log::problem);
+        this.notifier = new Notifier(s, new Words(s.zone()), () -> mail, log::event, log::problem);
         this.summary = new DailySummary(context, s, StateFolder.resolve(null, context, "").orElse(file.getParent()));
         if (problem != null) {
-            problem(problem);
+            log.problem(problem);
         }
         book.load();
-        List<Alert> open = book.open();
-        if (!open.isEmpty()) {
-            event("restored after a restart: " + open.size() + " open alert(s), still repeated and escalated"
-                    + " until acknowledged: " + String.join("; ", open.stream().map(a -> "alert " + a.id()
-                    + " \"" + a.subject() + "\"").toList()));
-        }
+        book.restored().ifPresent(log::event);
         summary.start(book, clock.now());
         this.ticker = new PlatformTicker(context, "tinysep-alerts", this::tick);
     }
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
             policyOption = ReferencePolicyOption.GREEDY)
-    void bindEventLog(EventLog log) {
-        eventLog = log;
+    void bindEventLog(EventLog e) {
+        log.use(e);
     }
 
-    void unbindEventLog(EventLog log) {
-        if (eventLog == log) {
-            eventLog = null;
-        }
+    void unbindEventLog(EventLog e) {
+        log.gone(e);
     }
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
@@ -119,9 +101,8 @@ public final class AlertManager implements AlertService {
             if (same.isPresent()) {
                 return same.get();
             }
-            a = new Alert(book.nextId(), r.kind(), r.source(), r.roomUid(), r.roomName(), r.raisedAt(), r.subject(),
-                    r.text(), AlertState.OPEN, 0, null, "", List.of());
-            event("alert " + a.id() + " raised (" + a.kind().name().toLowerCase() + "): " + a.subject());
+            a = Copies.raised(book.nextId(), r);
+            log.event("alert " + a.id() + " raised (" + a.kind().name().toLowerCase() + "): " + a.subject());
             book.put(a);
             a = advance(a, clock.now());
         }
@@ -143,10 +124,9 @@ public final class AlertManager implements AlertService {
                         .toLowerCase() + " at " + notifier.words().fullTime(a.closedAt()) + " (" + a.closedBy() + ")");
             }
             Instant now = clock.now();
-            done = new Alert(a.id(), a.kind(), a.source(), a.roomUid(), a.roomName(), a.raisedAt(), a.subject(),
-                    a.text(), AlertState.ACKNOWLEDGED, a.contactsReached(), now, by.strip(), a.notifications());
+            done = Copies.closed(a, AlertState.ACKNOWLEDGED, now, by.strip());
             book.put(done);
-            event("alert " + a.id() + " acknowledged by " + by.strip() + " at " + notifier.words().time(now)
+            log.event("alert " + a.id() + " acknowledged by " + by.strip() + " at " + notifier.words().time(now)
                     + ": it is not repeated or passed on any more (" + a.subject() + ")");
         }
         changed(done);
@@ -163,13 +143,10 @@ public final class AlertManager implements AlertService {
                     continue;
                 }
                 boolean wasOpen = a.isOpen();
-                Alert c = new Alert(a.id(), a.kind(), a.source(), a.roomUid(), a.roomName(), a.raisedAt(),
-                        a.subject(), a.text(), AlertState.CLEARED, a.contactsReached(),
-                        a.closedAt() == null ? now : a.closedAt(), a.closedBy().isEmpty() ? why : a.closedBy(),
-                        a.notifications());
+                Alert c = Copies.closed(a, AlertState.CLEARED, now, why);
                 c = wasOpen ? notifier.allClear(c, why, now) : c;
                 book.put(c);
-                event("alert " + a.id() + " cleared: " + why + (wasOpen ? "; all clear sent to "
+                log.event("alert " + a.id() + " cleared: " + why + (wasOpen ? "; all clear sent to "
                         + Words.who(notifier.toldSoFar(c)) : " (it was acknowledged; no all clear sent)"));
                 cleared.add(c);
             }
@@ -197,7 +174,7 @@ public final class AlertManager implements AlertService {
 
     @Override
     public Connection connect(AlertListener listener) {
-        return listeners.add(listener);
+        return fanOut.add(listener);
     }
 
     /** One platform second: messages due, delivery outcomes, the daily summary. */
@@ -230,27 +207,7 @@ public final class AlertManager implements AlertService {
     }
 
     private void changed(Alert a) {
-        try {
-            fire.execute(() -> listeners.fire(l -> l.alertChanged(a)));
-        } catch (java.util.concurrent.RejectedExecutionException e) {
-            LOG.debug("alerts stopping; change of alert {} not passed on", a.id());
-        }
-    }
-
-    void event(String text) {
-        LOG.info("Alerts: {}", text);
-        EventLog log = eventLog;
-        if (log != null) {
-            log.record(EventKind.DEVICE_EVENT, ORIGIN, text);
-        }
-    }
-
-    void problem(String text) {
-        LOG.warn("Alerts: {}", text);
-        EventLog log = eventLog;
-        if (log != null) {
-            log.record(EventKind.PROBLEM, ORIGIN, text);
-        }
+        fanOut.changed(a);
     }
 
     @Deactivate
@@ -258,12 +215,6 @@ public final class AlertManager implements AlertService {
         ticker.close();
         summary.close();
         clock.close();
-        fire.shutdown();
-        try {
-            fire.awaitTermination(2, TimeUnit.SECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        listeners.closeAll();
+        fanOut.close();
     }
 }

@@ -67,8 +67,6 @@ final class Notifier {
             return a;
         }
         saidNoMail = false;
-        List<Notification> all = new ArrayList<>(a.notifications());
-        all.add(n.get());
         events.accept(switch (step.step()) {
             case FIRST -> "alert " + a.id() + ": first message sent to " + Words.who(step.to());
             case REPEAT -> "alert " + a.id() + " not acknowledged: repeated to " + Words.who(step.to());
@@ -76,8 +74,7 @@ final class Notifier {
                     + Words.who(step.to()) + " (contact " + step.reached() + " of " + settings.contacts().size() + ")";
             case ALL_CLEAR -> "alert " + a.id() + ": all clear sent to " + Words.who(step.to());
         });
-        return new Alert(a.id(), a.kind(), a.source(), a.roomUid(), a.roomName(), a.raisedAt(), a.subject(), a.text(),
-                a.state(), step.reached(), a.closedAt(), a.closedBy(), all);
+        return Copies.plus(a, n.get(), step.reached());
     }
 
     /** @return {@code cleared} with an all-clear message to everyone told of it (when a Mail Manager is there) */
@@ -92,11 +89,7 @@ final class Notifier {
             problems.accept("alert " + cleared.id() + ": no Mail Manager to send the all clear (" + why + ")");
             return cleared;
         }
-        List<Notification> all = new ArrayList<>(cleared.notifications());
-        all.add(n.get());
-        return new Alert(cleared.id(), cleared.kind(), cleared.source(), cleared.roomUid(), cleared.roomName(),
-                cleared.raisedAt(), cleared.subject(), cleared.text(), cleared.state(), cleared.contactsReached(),
-                cleared.closedAt(), cleared.closedBy(), all);
+        return Copies.plus(cleared, n.get(), cleared.contactsReached());
     }
 
     /** @return everyone told of {@code a} so far (empty = the Mail Manager's recipients) */
@@ -128,8 +121,7 @@ final class Notifier {
                 now.add(n);
             }
         }
-        return !changed ? a : new Alert(a.id(), a.kind(), a.source(), a.roomUid(), a.roomName(), a.raisedAt(),
-                a.subject(), a.text(), a.state(), a.contactsReached(), a.closedAt(), a.closedBy(), now);
+        return !changed ? a : Copies.notifications(a, now, a.contactsReached());
     }
 
     /** Sends a message that belongs to no alert (the daily summary) to the Mail Manager's recipients. */
