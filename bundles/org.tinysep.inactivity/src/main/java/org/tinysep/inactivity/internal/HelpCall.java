@@ -4,14 +4,26 @@ import java.time.Instant;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.FrameworkUtil;
+import org.osgi.framework.ServiceReference;
+import org.tinysep.api.alert.AlertKind;
+import org.tinysep.api.alert.AlertRequest;
+import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.service.InactivityAlert;
 import org.tinysep.api.service.MailManagerProvider;
 
 /**
- * Calls for help: hands each alert exactly once to the first Mail Manager present (which queues and delivers it,
- * and logs the delivery). An alert handed over before a restart, raised again after it, is not handed over twice.
+ * Calls for help: hands each alert exactly once to the alert service when one is running (bundle
+ * {@code org.tinysep.alerts}: it keeps the alert open until acknowledged, repeats and escalates it, and sends the
+ * all clear), else to the first Mail Manager present (which queues and delivers it, and logs the delivery). An
+ * alert handed over before a restart, raised again after it, is not handed over twice.
  */
 final class HelpCall {
+
+    /** The source the alert service knows Inactivity Recognition's alerts by (its all clear matches it). */
+    static final String SOURCE = "inactivity";
 
     /** What became of a call. */
     enum Outcome { HANDED_OVER, ALREADY_HANDED_OVER, NO_MAIL_MANAGER }
@@ -41,6 +53,11 @@ final class HelpCall {
         if (alert.equals(sent) || alert.raisedAt().equals(handedOverDue)) {
             return Outcome.ALREADY_HANDED_OVER;
         }
+        if (toAlertService(alert)) {
+            sent = alert;
+            handedOverDue = alert.raisedAt();
+            return Outcome.HANDED_OVER;
+        }
         MailManagerProvider m = mailers.values().stream().findFirst().orElse(null);
         if (m == null) {
             return Outcome.NO_MAIL_MANAGER;
@@ -49,6 +66,31 @@ final class HelpCall {
         handedOverDue = alert.raisedAt();
         m.send(subject(alert), words.body(alert, outage));
         return Outcome.HANDED_OVER;
+    }
+
+    /** @return whether an alert service took the alert (false outside a framework or without one) */
+    private boolean toAlertService(InactivityAlert alert) {
+        Bundle bundle = FrameworkUtil.getBundle(HelpCall.class);
+        BundleContext context = bundle == null ? null : bundle.getBundleContext();
+        if (context == null) {
+            return false;
+        }
+        try {
+            ServiceReference<AlertService> ref = context.getServiceReference(AlertService.class);
+            AlertService service = ref == null ? null : context.getService(ref);
+            if (service == null) {
+                return false;
+            }
+            try {
+                service.raise(new AlertRequest(AlertKind.INACTIVITY, SOURCE, alert.roomUid(), alert.roomName(),
+                        alert.raisedAt(), subject(alert), words.body(alert, outage)));
+                return true;
+            } finally {
+                context.ungetService(ref);
+            }
+        } catch (RuntimeException e) { // stopping, or the alert service failed: the Mail Manager, if any, takes it
+            return false;
+        }
     }
 
     /** @return the alert's subject; an alert that fell due while nothing ran says it is late */

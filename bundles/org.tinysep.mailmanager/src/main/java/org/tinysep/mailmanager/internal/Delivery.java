@@ -64,7 +64,7 @@ final class Delivery {
     }
 
     Next attempt(MailMessage m, Backoff backoff) {
-        List<String> to = m.pending().isEmpty() ? settings.recipients() : m.pending();
+        List<String> to = m.pending().isEmpty() ? m.recipients(settings.recipients()) : m.pending();
         warnAboutPassword();
         SmtpTransport.Attempt a;
         try {
@@ -101,20 +101,20 @@ final class Delivery {
         } catch (IOException e) {
             events.problem("cannot update " + retry + " in the spool " + spool.dir() + ": " + e);
         }
-        failures.forEach(this::fail);
+        failures.forEach(w -> fail(m, w));
         long left = settings.giveUpAfterSeconds() - age.getSeconds();
         long delay = Math.max(1, Math.min(backoff.fail(), left)); // the last try comes at the give-up age
         Instant at = clock.get().plusSeconds(delay);
-        events.retrying(Words.retrying(m, a.temporary(), at, delay));
+        events.retrying(m, Words.retrying(m, a.temporary(), at, delay));
         return new Next(retry, delay, Words.mail(m) + " not delivered yet to " + Words.replies(a.temporary())
                 + "; attempt " + backoff.failures() + " failed, next try at " + Words.time(at) + " (in " + delay
                 + " s)", a.serverWide());
     }
 
     /** @param what e.g. {@code mail "Alert" NOT delivered to a@b: refused for good by the server (550 ...)} */
-    private void fail(String what) {
+    private void fail(MailMessage m, String what) {
         String notice = what + "; kept in " + spool.dir().resolve("failed");
-        events.failed(notice);
+        events.failed(m, notice);
         try {
             spool.notice(notice);
         } catch (IOException e) {
@@ -136,7 +136,7 @@ final class Delivery {
         } catch (IOException e) {
             events.problem("cannot remove finished " + m + " from the spool (it may be sent again): " + e);
         }
-        failures.forEach(this::fail);
+        failures.forEach(w -> fail(m, w));
         return Next.FINISHED;
     }
 

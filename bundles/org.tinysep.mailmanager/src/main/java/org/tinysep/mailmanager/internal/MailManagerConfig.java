@@ -54,4 +54,8 @@ public @interface MailManagerConfig {
     @AttributeDefinition(description = "Spool folder for queued mail; empty = ${tinysep.var}/mail-spool, else "
             + "${tinysep.home}/var/mail-spool, else mail-spool in the working directory")
     String spoolDir() default "";
+
+    @AttributeDefinition(description = "PEM file of the certificates to trust for TLS and STARTTLS instead of the "
+            + "Java runtime's (a server with its own, self-signed certificate); empty = the Java runtime's trust store")
+    String trustedCertificates() default "";
 }

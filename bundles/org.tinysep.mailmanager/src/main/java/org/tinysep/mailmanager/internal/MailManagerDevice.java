@@ -11,6 +11,7 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.DeviceFunction;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerListener;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
@@ -34,6 +35,7 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     private final Outbox outbox;
     private final AtomicLong sent = new AtomicLong();
     private final MailProvider provider;
+    private final Deliveries deliveries = new Deliveries();
     private volatile MailSettings settings;
     private volatile String configProblem;
     private volatile String lastProblem = "";
@@ -54,7 +56,8 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
             Clock wall, Consumer<MailHealth> onHealth) {
         super(context, Uids.of(context.driverName(), "device"), context.driverName(), "Mail Manager");
         this.listeners = new Listeners<>(uid());
-        this.provider = new MailProvider(uid(), this::send, this::mailStatus, listeners);
+        this.provider = new MailProvider(uid(), this::sendTo, this::mailStatus, listeners, deliveries,
+                () -> this.settings.recipients());
         this.settings = settings;
         this.configProblem = configProblem;
         if (onHealth != null) {
@@ -73,8 +76,9 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
         outbox.reconfigure(next);
     }
 
-    private void send(String subject, String body) {
-        outbox.send(subject, body);
+    private String sendTo(List<String> to, String subject, String body) {
+        List<String> checked = MailSettings.addresses(to);
+        return Long.toString(outbox.send(checked, subject, body));
     }
 
     /** @return the MailManagerProvider service object */
@@ -118,22 +122,28 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
 
     @Override
     public void queued(MailMessage m, List<String> recipients) {
+        deliveries.update(m, recipients, MailDelivery.Outcome.QUEUED, "queued for " + String.join(", ", recipients),
+                now());
         event(Words.mail(m) + " queued for " + String.join(", ", recipients));
     }
 
     @Override
     public void delivered(MailMessage m, List<String> recipients) {
         sent.incrementAndGet();
+        deliveries.update(m, recipients, MailDelivery.Outcome.SENT, "delivered to " + String.join(", ", recipients),
+                now());
         event(Words.mail(m) + " delivered to " + String.join(", ", recipients));
     }
 
     @Override
-    public void retrying(String what) {
+    public void retrying(MailMessage m, String what) {
+        deliveries.update(m, m.to(), MailDelivery.Outcome.RETRYING, what, now());
         event(what);
     }
 
     @Override
-    public void failed(String what) {
+    public void failed(MailMessage m, String what) {
+        deliveries.update(m, m.to(), MailDelivery.Outcome.FAILED, what, now());
         LOG.warn("Mail Manager: {}", what);
         problem(what);
     }
@@ -146,6 +156,8 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
 
     @Override
     public void logged(MailMessage m) {
+        deliveries.update(m, m.to(), MailDelivery.Outcome.LOGGED_ONLY, "NOT mailed, only written to the log ("
+                + (configProblem == null ? MailHealth.NO_HOST : "bad configuration: " + configProblem) + ")", now());
         LOG.warn("Mail Manager {}: mail not sent, written here instead. Subject: {}\n{}",
                 configProblem == null ? "has no SMTP host" : "is misconfigured", m.subject(), m.body());
         event(Words.mail(m) + " NOT mailed, only written to the log ("

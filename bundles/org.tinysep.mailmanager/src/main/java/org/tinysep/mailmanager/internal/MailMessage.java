@@ -13,9 +13,10 @@ import java.util.Objects;
  * @param failed       recipients the message could not be delivered to (refused for good or given up)
  * @param firstFailure when (computer clock) the first attempt failed temporarily, or null: the give-up age counts
  *                     from here
+ * @param to           the addresses it was sent to; empty = the configured recipients
  */
 record MailMessage(long id, Instant queuedAt, String subject, String body, List<String> pending, List<String> failed,
-        Instant firstFailure) {
+        Instant firstFailure, List<String> to) {
 
     MailMessage {
         Objects.requireNonNull(queuedAt, "queuedAt");
@@ -23,20 +24,31 @@ record MailMessage(long id, Instant queuedAt, String subject, String body, List<
         body = body == null ? "" : body;
         pending = pending == null ? List.of() : List.copyOf(pending);
         failed = failed == null ? List.of() : List.copyOf(failed);
+        to = to == null ? List.of() : List.copyOf(to);
     }
 
     MailMessage(long id, Instant queuedAt, String subject, String body) {
-        this(id, queuedAt, subject, body, List.of(), List.of(), null);
+        this(id, queuedAt, subject, body, List.of(), List.of(), null, List.of());
+    }
+
+    MailMessage(long id, Instant queuedAt, String subject, String body, List<String> pending, List<String> failed,
+            Instant firstFailure) {
+        this(id, queuedAt, subject, body, pending, failed, firstFailure, List.of());
+    }
+
+    /** @return the recipients of the whole message: {@link #to()}, or the configured ones */
+    List<String> recipients(List<String> configured) {
+        return to.isEmpty() ? configured : to;
     }
 
     /** @return this message still to be delivered to {@code remaining}, with failures so far */
     MailMessage retrying(List<String> remaining, List<String> failedNow, Instant firstFailed) {
-        return new MailMessage(id, queuedAt, subject, body, remaining, concat(failed, failedNow), firstFailed);
+        return new MailMessage(id, queuedAt, subject, body, remaining, concat(failed, failedNow), firstFailed, to);
     }
 
     /** @return this message with {@code failedNow} added to its failed recipients */
     MailMessage failing(List<String> failedNow) {
-        return new MailMessage(id, queuedAt, subject, body, pending, concat(failed, failedNow), firstFailure);
+        return new MailMessage(id, queuedAt, subject, body, pending, concat(failed, failedNow), firstFailure, to);
     }
 
     private static List<String> concat(List<String> a, List<String> b) {

@@ -15,7 +15,7 @@ import org.tinysep.device.support.StateFolder;
  */
 record MailSettings(String host, int port, Security security, String user, String password, Path passwordFile,
         String from, List<String> recipients, int connectTimeoutSeconds, int retryInitialSeconds, int retryMaxSeconds,
-        int giveUpAfterSeconds, Path spoolDir) {
+        int giveUpAfterSeconds, Path spoolDir, Path trustedCertificates) {
 
     static final int DEFAULT_PORT = 587;
     static final int DEFAULT_CONNECT_TIMEOUT = 10;
@@ -82,7 +82,9 @@ record MailSettings(String host, int port, Security security, String user, Strin
         return new MailSettings(host, port, security, user, password,
                 inStateFolder(text(props, "passwordFile"), tinysepVar, tinysepHome, "secrets/smtp.password"), from,
                 recipients, timeout, initial, max, giveUp,
-                inStateFolder(text(props, "spoolDir"), tinysepVar, tinysepHome, "mail-spool"));
+                inStateFolder(text(props, "spoolDir"), tinysepVar, tinysepHome, "mail-spool"),
+                text(props, "trustedCertificates").isEmpty() ? null
+                        : Path.of(text(props, "trustedCertificates")).toAbsolutePath());
     }
 
     private static String text(Map<String, ?> props, String key) {
@@ -116,6 +118,14 @@ record MailSettings(String host, int port, Security security, String user, Strin
         } catch (IllegalArgumentException e) {
             throw new IllegalArgumentException("security must be NONE, STARTTLS or TLS, was '" + v + "'");
         }
+    }
+
+    /**
+     * @return {@code to}, checked address by address
+     * @throws IllegalArgumentException naming the first malformed address
+     */
+    static List<String> addresses(List<String> to) {
+        return to == null ? List.of() : recipients(String.join(",", to));
     }
 
     private static List<String> recipients(String v) {

@@ -51,6 +51,9 @@ final class MailSpool {
         if (!m.failed().isEmpty()) {
             p.setProperty("failed", String.join(",", m.failed()));
         }
+        if (!m.to().isEmpty()) {
+            p.setProperty("to", String.join(",", m.to()));
+        }
         if (m.firstFailure() != null) {
             p.setProperty("firstFailure", m.firstFailure().toString());
         }
@@ -132,7 +135,7 @@ final class MailSpool {
         String first = p.getProperty("firstFailure");
         return new MailMessage(Long.parseLong(id.strip()), Instant.parse(queued.strip()), subject, body,
                 list(p.getProperty("pending")), list(p.getProperty("failed")),
-                first == null ? null : Instant.parse(first.strip()));
+                first == null ? null : Instant.parse(first.strip()), list(p.getProperty("to")));
     }
 
     private static List<String> list(String v) {

@@ -32,7 +32,7 @@ final class Outbox implements AutoCloseable {
     private MailSettings settings; // outbox thread only
     private MailSpool spool;
     private ScheduledFuture<?> pending; // the one pending attempt, immediate or after back-off; outbox thread only
-    private long lastId;
+    private final java.util.concurrent.atomic.AtomicLong lastId = new java.util.concurrent.atomic.AtomicLong();
     private volatile MailStatus status;
     private volatile int size;
 
@@ -53,14 +53,22 @@ final class Outbox implements AutoCloseable {
         executor.execute(() -> apply(settings));
     }
 
-    /** Queues a message and returns at once. */
-    void send(String subject, String body) {
+    /**
+     * Queues a message and returns at once.
+     *
+     * @param to the addresses; empty = the configured recipients
+     * @return the message's id (increasing: the sending order)
+     */
+    long send(java.util.List<String> to, String subject, String body) {
         Instant at = clock.get();
+        long id = lastId.updateAndGet(last -> Math.max(last + 1, at.toEpochMilli() * 1000));
+        MailMessage m = new MailMessage(id, at, subject, body, java.util.List.of(), java.util.List.of(), null, to);
         try {
-            executor.execute(() -> add(subject, body, at));
+            executor.execute(() -> add(m));
         } catch (RejectedExecutionException e) { // closed meanwhile: say so rather than drop it silently
-            events.logged(new MailMessage(0, at, subject, body));
+            events.logged(m);
         }
+        return id;
     }
 
     /** Takes a new configuration; queued messages are kept (moved to a new spool folder if it changed). */
@@ -85,9 +93,7 @@ final class Outbox implements AutoCloseable {
         return size;
     }
 
-    private void add(String subject, String body, Instant at) {
-        lastId = Math.max(lastId + 1, at.toEpochMilli() * 1000);
-        MailMessage m = new MailMessage(lastId, at, subject, body);
+    private void add(MailMessage m) {
         if (!settings.configured()) {
             events.logged(m);
             return;
@@ -99,7 +105,7 @@ final class Outbox implements AutoCloseable {
         }
         queue.put(m.id(), m);
         size = queue.size();
-        events.queued(m, settings.recipients());
+        events.queued(m, m.recipients(settings.recipients()));
         if (status != MailStatus.RETRYING) {
             status(MailStatus.SENDING, queue.size() + " queued");
         }
@@ -132,7 +138,7 @@ final class Outbox implements AutoCloseable {
         }
         for (MailMessage m : spool.load(events::problem)) {
             queue.putIfAbsent(m.id(), m);
-            lastId = Math.max(lastId, m.id());
+            lastId.accumulateAndGet(m.id(), Math::max);
         }
         size = queue.size();
         events.undelivered(spool.notice());

@@ -12,10 +12,10 @@ interface OutboxEvents {
     void delivered(MailMessage m, List<String> recipients);
 
     /** An attempt failed temporarily; {@code what} says for whom, why and when the next try comes. */
-    void retrying(String what);
+    void retrying(MailMessage m, String what);
 
     /** A message could not be delivered to some recipients, for good; {@code what} says to whom and why. */
-    void failed(String what);
+    void failed(MailMessage m, String what);
 
     /**
      * @param notice why an alert was not delivered (kept until a message is delivered to all its recipients), or

@@ -23,6 +23,8 @@ final class SettingsParameters {
                 Parameter.readOnly("giveUpAfterSeconds", s.giveUpAfterSeconds(), cfg),
                 Parameter.readOnly("from", s.from(), cfg),
                 Parameter.readOnly("recipients", String.join(", ", s.recipients()), cfg),
-                Parameter.readOnly("spoolDir", s.spoolDir(), cfg));
+                Parameter.readOnly("spoolDir", s.spoolDir(), cfg),
+                Parameter.readOnly("trustedCertificates", s.trustedCertificates() == null ? "(the Java runtime's)"
+                        : s.trustedCertificates(), cfg + "; the certificates trusted for TLS and STARTTLS"));
     }
 }

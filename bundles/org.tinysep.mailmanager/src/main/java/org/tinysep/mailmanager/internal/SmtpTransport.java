@@ -59,7 +59,18 @@ final class SmtpTransport {
         thread.setContextClassLoader(SmtpTransport.class.getClassLoader());
         try {
             String protocol = s.security() == Security.TLS ? "smtps" : "smtp";
-            Session session = Session.getInstance(properties(s, protocol));
+            Properties props = properties(s, protocol);
+            if (s.trustedCertificates() != null) {
+                try {
+                    props.put("mail." + protocol + ".ssl.socketFactory", TrustedCertificates.factory(
+                            s.trustedCertificates()));
+                } catch (java.io.IOException | java.security.GeneralSecurityException e) {
+                    return Attempt.allTemporary(recipients, "cannot use the trusted certificates in "
+                            + s.trustedCertificates() + " (" + SmtpReplies.oneLine(String.valueOf(e.getMessage()))
+                            + ")");
+                }
+            }
+            Session session = Session.getInstance(props);
             MimeMessage msg = new MimeMessage(session);
             msg.setFrom(new InternetAddress(s.from()));
             msg.setRecipients(Message.RecipientType.TO, InternetAddress.parse(String.join(",", recipients)));

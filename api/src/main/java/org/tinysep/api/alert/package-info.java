@@ -1,0 +1,11 @@
+/**
+ * Alerts a caregiver can trust (issue 12): an alert stays open until someone acknowledges it or its cause ends, is
+ * repeated and escalated along a contact list while nobody does, and every step of it is kept. The shell, the web
+ * console and an MQTT bridge all use {@link org.tinysep.api.alert.AlertService}.
+ */
+@Export
+@Version("1.0.0")
+package org.tinysep.api.alert;
+
+import org.osgi.annotation.bundle.Export;
+import org.osgi.annotation.versioning.Version;

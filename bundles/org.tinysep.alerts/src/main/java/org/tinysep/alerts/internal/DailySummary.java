@@ -1,0 +1,71 @@
+package org.tinysep.alerts.internal;
+
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.ZonedDateTime;
+import java.util.List;
+import org.osgi.framework.BundleContext;
+import org.osgi.util.tracker.ServiceTracker;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceStatus;
+
+/**
+ * The daily "TinySEP is running" mail to the Mail Manager's recipients at {@code summaryTime} (issue 12, item 5),
+ * so that a missing summary is itself the signal. Sent once per day (the day is saved with the alerts); if the
+ * platform was not running at that time, it goes out late at the next start the same day and says so. A fresh
+ * installation started after today's time sends its first summary tomorrow.
+ */
+final class DailySummary implements AutoCloseable {
+
+    private final AlertSettings settings;
+    private final ServiceTracker<Device, Device> devices;
+    private final SummaryText text;
+
+    DailySummary(BundleContext context, AlertSettings settings, java.nio.file.Path stateFolder) {
+        this.settings = settings;
+        this.devices = new ServiceTracker<>(context, Device.class, null);
+        this.devices.open();
+        this.text = new SummaryText(new Words(settings.zone()), stateFolder);
+    }
+
+    /** At activation: without a saved day, today's summary is due only if its time is still to come. */
+    void start(AlertBook book, Instant now) {
+        if (settings.summaryTime() == null || book.lastSummary() != null) {
+            return;
+        }
+        ZonedDateTime local = now.atZone(settings.zone());
+        book.lastSummary(local.toLocalTime().isBefore(settings.summaryTime()) ? local.toLocalDate().minusDays(1)
+                : local.toLocalDate());
+    }
+
+    /** Sends today's summary once its time has come; the caller holds the alert service's lock. */
+    void tick(AlertBook book, Instant now, Notifier notifier) {
+        if (settings.summaryTime() == null) {
+            return;
+        }
+        ZonedDateTime local = now.atZone(settings.zone());
+        LocalDate today = local.toLocalDate();
+        if (local.toLocalTime().isBefore(settings.summaryTime())
+                || (book.lastSummary() != null && !book.lastSummary().isBefore(today))) {
+            return;
+        }
+        List<Device> offline = devices.getTracked().values().stream()
+                .filter(d -> d.status().state() == DeviceStatus.State.OFFLINE
+                        || d.status().state() == DeviceStatus.State.ERROR).toList();
+        ZonedDateTime due = today.atTime(settings.summaryTime()).atZone(settings.zone());
+        boolean late = local.isAfter(due.plusMinutes(5));
+        var mail = notifier.sendPlain(text.subject(today, book.open().size(), offline.size()),
+                text.body(now, due.toInstant(), late, book.open(), offline));
+        if (mail.isPresent()) {
+            book.lastSummary(today); // saved: one summary per day, also across restarts
+            notifier.events().accept("daily summary sent to the Mail Manager's recipients" + (late
+                    ? " (late: TinySEP was not running at " + settings.summaryTime() + ")" : "") + ": "
+                    + book.open().size() + " open alert(s), " + offline.size() + " device(s) offline or failing");
+        }
+    }
+
+    @Override
+    public void close() {
+        devices.close();
+    }
+}
