@@ -26,7 +26,12 @@ final class Heartbeat implements AutoCloseable {
     static final long DEFAULT_SECONDS = 10;
     private static final Logger LOG = LoggerFactory.getLogger(Heartbeat.class);
 
-    private final LivenessProbe probe;
+    /** One liveness check: returns when the platform answers, throws saying what does not. */
+    interface Probe {
+        void check() throws Exception;
+    }
+
+    private final Probe probe;
     private final HeartbeatFile file;
     private final Optional<SdNotify> systemd;
     private final Duration interval;
@@ -34,9 +39,9 @@ final class Heartbeat implements AutoCloseable {
             r -> daemon(r, "tinysep-heartbeat"));
     private final ExecutorService prober = Executors.newSingleThreadExecutor(r -> daemon(r, "tinysep-liveness"));
     private Future<?> running;
-    private boolean failing;
+    private volatile boolean failing;
 
-    Heartbeat(LivenessProbe probe, HeartbeatFile file, Optional<SdNotify> systemd, Duration interval) {
+    Heartbeat(Probe probe, HeartbeatFile file, Optional<SdNotify> systemd, Duration interval) {
         this.probe = probe;
         this.file = file;
         this.systemd = systemd;
@@ -92,6 +97,11 @@ final class Heartbeat implements AutoCloseable {
             LOG.warn("TinySEP is not responding ({}): the heartbeat stops, so the supervisor or systemd restarts it",
                     why);
         }
+    }
+
+    /** @return whether the last check failed or hung (the heartbeat is stopped) */
+    boolean failing() {
+        return failing;
     }
 
     @Override

@@ -30,7 +30,7 @@ final class HeartbeatFile {
 
     void write(String state, Instant alive) throws IOException {
         StateFile.write(file, Map.of("pid", Long.toString(pid), "started", started.toString(),
-                "alive", alive.toString(), "state", state));
+                "alive", alive.toString(), "state", state), false);
     }
 
     static Optional<Beat> read(Path var) {

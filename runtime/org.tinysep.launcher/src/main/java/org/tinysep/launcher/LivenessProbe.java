@@ -14,7 +14,7 @@ import org.osgi.framework.launch.Framework;
  * the check hang; a stopped framework or a missing service makes it fail. The classes live in bundles the launcher
  * cannot see, so the calls are reflective.
  */
-final class LivenessProbe {
+final class LivenessProbe implements Heartbeat.Probe {
 
     static final String SCR = "org.osgi.service.component.runtime.ServiceComponentRuntime";
     static final String EVENT_LOG = "org.tinysep.api.log.EventLog";
@@ -26,7 +26,8 @@ final class LivenessProbe {
     }
 
     /** @throws IllegalStateException saying in plain words what does not answer */
-    void check() throws Exception {
+    @Override
+    public void check() throws Exception {
         if (framework.getState() != Bundle.ACTIVE) {
             throw new IllegalStateException("the OSGi framework is not active (state " + framework.getState() + ")");
         }

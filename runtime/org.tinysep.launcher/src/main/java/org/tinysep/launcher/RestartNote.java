@@ -24,8 +24,8 @@ record RestartNote(String cause, Instant at) {
 
     static final String FILE = "restart-note.properties";
     static final String HUNG = "stopped responding";
-    static final String UNCLEAN = "stopped without shutting down cleanly (a crash, a power cut or a kill); its last "
-            + "sign of life was";
+    static final String UNCLEAN = "stopped without shutting down cleanly (a crash, a hang, a power cut or a kill); "
+            + "its last sign of life was";
 
     private static final DateTimeFormatter HH_MM = DateTimeFormatter.ofPattern("HH:mm", Locale.ROOT);
     private static final DateTimeFormatter DAY = DateTimeFormatter.ofPattern("d MMM", Locale.ENGLISH);
@@ -51,13 +51,13 @@ record RestartNote(String cause, Instant at) {
     }
 
     void write(Path var) throws IOException {
-        StateFile.write(var.resolve(FILE), Map.of("cause", cause, "at", at.toString()));
+        StateFile.write(var.resolve(FILE), Map.of("cause", cause, "at", at.toString()), true);
     }
 
     /** Adds the sentence for a restart at {@code restarted} to the note, for the runtime's restart reporter. */
     void complete(Path var, Instant restarted, ZoneId zone) throws IOException {
         StateFile.write(var.resolve(FILE), Map.of("cause", cause, "at", at.toString(), "restarted",
-                restarted.toString(), "message", sentence(restarted, zone)));
+                restarted.toString(), "message", sentence(restarted, zone)), true);
     }
 
     static Optional<RestartNote> read(Path var) {

@@ -3,11 +3,13 @@ package org.tinysep.launcher;
 import java.io.IOException;
 import java.io.StringReader;
 import java.io.StringWriter;
+import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.FileAttribute;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.Map;
@@ -25,7 +27,8 @@ final class StateFile {
     private StateFile() {
     }
 
-    static void write(Path target, Map<String, String> values) throws IOException {
+    /** @param sync whether to force the file to the disk before the rename (a note that must survive a power cut) */
+    static void write(Path target, Map<String, String> values, boolean sync) throws IOException {
         Properties p = new Properties();
         p.putAll(values);
         StringWriter text = new StringWriter();
@@ -38,6 +41,11 @@ final class StateFile {
                 : new FileAttribute<?>[0]);
         try {
             Files.writeString(tmp, text.toString(), StandardCharsets.UTF_8);
+            if (sync) {
+                try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
+                    ch.force(true);
+                }
+            }
             Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
         } finally {
             Files.deleteIfExists(tmp);

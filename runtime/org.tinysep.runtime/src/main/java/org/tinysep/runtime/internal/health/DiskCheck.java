@@ -27,7 +27,7 @@ final class DiskCheck {
 
     private final Path var;
     private final Path logs;
-    private final long minFreeBytes;
+    private volatile long minFreeBytes;
     private final EventLog eventLog;
     private boolean low;
 
@@ -36,6 +36,11 @@ final class DiskCheck {
         this.logs = logs;
         this.minFreeBytes = minFreeMegabytes * MB;
         this.eventLog = eventLog;
+    }
+
+    /** Sets the minimum free space (a changed configuration). */
+    void minimum(long minFreeMegabytes) {
+        minFreeBytes = minFreeMegabytes * MB;
     }
 
     /** @return whether the disk is below the minimum after the check (and the trimming) */

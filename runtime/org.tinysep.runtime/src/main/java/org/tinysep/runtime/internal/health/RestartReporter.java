@@ -41,7 +41,7 @@ public final class RestartReporter {
     private static final Logger LOG = LoggerFactory.getLogger(RestartReporter.class);
 
     @Reference
-    private EventLog eventLog;
+    EventLog eventLog; // package-private: tests set it
     private Path note;
     private String message;
 
