@@ -108,6 +108,7 @@ public final class Launcher {
         if (!started.await(START_TIMEOUT.toSeconds(), TimeUnit.SECONDS)) {
             LOG.warn("Framework did not report STARTED within {} s", START_TIMEOUT.toSeconds());
         }
+        Readiness.await(fw.getBundleContext(), home.resolve("etc")); // the radios listen as configured
         return report(Duration.ofNanos(System.nanoTime() - t0), level);
     }
 

@@ -1,9 +1,15 @@
 package org.tinysep.launcher;
 
+import java.io.IOException;
 import java.net.URISyntaxException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.time.Instant;
+import java.time.ZoneId;
 import java.util.Arrays;
+import java.util.List;
+import java.util.Optional;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -42,25 +48,76 @@ public final class Main {
             System.out.println(Options.USAGE);
             return;
         }
+        if (options.supervise()) {
+            System.exit(supervise(options, args));
+            return;
+        }
         System.exit(run(options));
+    }
+
+    /** {@code --supervise}: runs the platform as a child process and restarts it when it fails or hangs. */
+    static int supervise(Options options, String[] args) {
+        Path jar = launcherJar();
+        if (jar == null || !Files.isRegularFile(jar)) {
+            System.err.println("--supervise needs the launcher started as java -jar tinysep.jar");
+            return 2;
+        }
+        List<String> rest = Arrays.stream(args).filter(a -> !"--supervise".equals(a)).toList();
+        try {
+            return new Supervisor(options.var(), rest).run(jar);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
     }
 
     /** Runs TinySEP until the framework stops; returns the exit code. */
     static int run(Options options) {
         Logger log = LoggerFactory.getLogger(Main.class);
         Launcher launcher = new Launcher(options);
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> launcher.stop(STOP_TIMEOUT), "tinysep-shutdown"));
+        HeartbeatFile heartbeat = new HeartbeatFile(options.var());
+        Optional<SdNotify> systemd = SdNotify.fromEnvironment(System.getenv());
+        Heartbeat[] beating = new Heartbeat[1];
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            systemd.ifPresent(SdNotify::stopping);
+            if (beating[0] != null) {
+                beating[0].close();
+            }
+            launcher.stop(STOP_TIMEOUT);
+            stopped(heartbeat, log);
+        }, "tinysep-shutdown"));
         try {
+            HeartbeatFile.noteRestart(options.var(), Instant.now(), ZoneId.systemDefault())
+                    .ifPresent(s -> log.warn("{} (the event log and the caregivers are told)", s));
+            heartbeat.write("STARTING", Instant.now());
             StartReport report = launcher.start();
             report.lines().forEach(System.out::println);
             System.out.println(launcher.alertsLine(ALERTS_WAIT));
             System.out.flush();
+            beating[0] = new Heartbeat(new LivenessProbe(launcher.framework()), heartbeat, systemd,
+                    Heartbeat.interval(SdNotify.watchdogInterval(System.getenv())));
+            beating[0].start();
+            systemd.ifPresent(s -> s.ready(report.lines().get(0)));
             launcher.startShell();
-            return launcher.awaitStop();
+            int code = launcher.awaitStop();
+            beating[0].close();
+            if (code == 0) {
+                stopped(heartbeat, log);
+            }
+            return code;
         } catch (Exception e) {
             log.error("TinySEP could not start: {}", Failures.describe(e), e);
             launcher.stop(STOP_TIMEOUT);
             return 1;
+        }
+    }
+
+    /** A clean stop: the next start is not a restart after a failure. */
+    private static void stopped(HeartbeatFile heartbeat, Logger log) {
+        try {
+            heartbeat.write("STOPPED", Instant.now());
+        } catch (IOException e) {
+            log.warn("Cannot write the heartbeat file: {}", e.toString());
         }
     }
 

@@ -14,12 +14,19 @@ import java.util.Map;
  * @param var    the state folder (framework property {@code tinysep.var}): the drivers list, the house, the mail
  *               spool, the framework cache; default {@code <home>/var}
  * @param help   print the usage and exit
+ * @param supervise run the platform as a supervised child process, restarted when it fails or hangs
+ *                  ({@code --supervise}: {@link Supervisor})
  */
-public record Options(boolean daemon, Path home, Path var, boolean help) {
+public record Options(boolean daemon, Path home, Path var, boolean help, boolean supervise) {
 
     /** Options whose state folder is {@code <home>/var}. */
     public Options(boolean daemon, Path home, boolean help) {
         this(daemon, home, home.resolve("var"), help);
+    }
+
+    /** Options without supervision. */
+    public Options(boolean daemon, Path home, Path var, boolean help) {
+        this(daemon, home, var, help, false);
     }
 
     /** Environment variable that switches daemon mode on ({@code 1}, {@code true} or {@code yes}). */
@@ -31,12 +38,14 @@ public record Options(boolean daemon, Path home, Path var, boolean help) {
 
     /** The usage text printed by {@code --help} and on a bad argument. */
     public static final String USAGE = String.join(System.lineSeparator(),
-            "Usage: java -jar tinysep.jar [--daemon] [--home DIR] [--var DIR] [--help]",
+            "Usage: java -jar tinysep.jar [--daemon] [--supervise] [--home DIR] [--var DIR] [--help]",
             "  --daemon, -d   no interactive shell; run until SIGTERM (also: TINYSEP_DAEMON=1)",
             "  --home DIR     distribution directory (default: -Dtinysep.home, else the folder of tinysep.jar,",
             "                 else the current directory)",
             "  --var DIR      state folder: drivers list, house, mail spool, framework cache (default:",
             "                 -Dtinysep.var, else <home>/var)",
+            "  --supervise    run TinySEP as a child process (daemon) and restart it when it ends with an error or",
+            "                 stops responding (docs/operations.md)",
             "  --help, -h     print this text");
 
     /**
@@ -50,6 +59,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help) {
     public static Options parse(List<String> args, Map<String, String> env, Path defaultHome) {
         boolean daemon = isTrue(env.get(DAEMON_ENV));
         boolean help = false;
+        boolean supervise = false;
         Path home = defaultHome;
         String varProperty = System.getProperty(VAR_PROPERTY);
         Path var = varProperty == null || varProperty.isBlank() ? null : Path.of(varProperty);
@@ -58,6 +68,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help) {
             switch (arg) {
                 case "--daemon", "-d" -> daemon = true;
                 case "--help", "-h" -> help = true;
+                case "--supervise" -> supervise = true;
                 case "--home" -> {
                     if (i + 1 >= args.size()) {
                         throw new IllegalArgumentException("--home needs a directory");
@@ -83,7 +94,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help) {
         }
         Path absoluteHome = home.toAbsolutePath().normalize();
         Path absoluteVar = (var == null ? absoluteHome.resolve("var") : var.toAbsolutePath()).normalize();
-        return new Options(daemon, absoluteHome, absoluteVar, help);
+        return new Options(daemon, absoluteHome, absoluteVar, help, supervise);
     }
 
     /**

@@ -48,13 +48,62 @@ final class PlatformProcess implements AutoCloseable {
 
     /** Starts the distribution in {@code home} with its interactive shell and waits until the shell answers. */
     static PlatformProcess start(Path home) throws IOException {
-        Path log = home.resolve("platform-" + (++launches) + ".log");
-        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-XX:TieredStopAtLevel=1", "-jar", "tinysep.jar")
-                .directory(home.toFile()).redirectError(ProcessBuilder.Redirect.appendTo(log.toFile())).start();
-        PlatformProcess platform = new PlatformProcess(p);
+        PlatformProcess platform = launch(home);
         platform.command("echo ready", Duration.ofSeconds(90));
         return platform;
+    }
+
+    /** Starts {@code java -jar tinysep.jar <args>} in {@code home} and returns at once. */
+    static PlatformProcess launch(Path home, String... args) throws IOException {
+        return launch(home, List.of(), args);
+    }
+
+    /** Starts {@code java <jvmOptions> -jar tinysep.jar <args>} in {@code home} and returns at once. */
+    static PlatformProcess launch(Path home, List<String> jvmOptions, String... args) throws IOException {
+        Path log = home.resolve("platform-" + (++launches) + ".log");
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-XX:TieredStopAtLevel=1"));
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-jar", "tinysep.jar"));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).directory(home.toFile())
+                .redirectError(ProcessBuilder.Redirect.appendTo(log.toFile()));
+        builder.environment().remove(Options.DAEMON_ENV);
+        return new PlatformProcess(builder.start());
+    }
+
+    /** Waits for a stdout line containing {@code text} (earlier lines are consumed); @return that line */
+    String awaitLine(String text, Duration timeout) {
+        long deadline = System.nanoTime() + timeout.toNanos();
+        List<String> seen = new ArrayList<>();
+        try {
+            while (true) {
+                String line = lines.poll(Math.max(1, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+                if (line == null || line.equals(EOF)) {
+                    if (line != null) {
+                        lines.add(line);
+                    }
+                    throw new IllegalStateException("no line with '" + text + "' within " + timeout
+                            + (line == null ? "" : " (the platform ended)") + ": " + seen);
+                }
+                if (line.contains(text)) {
+                    return line;
+                }
+                seen.add(line);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted", e);
+        }
+    }
+
+    /** @return the operating system's process id */
+    long pid() {
+        return process.pid();
+    }
+
+    Process process() {
+        return process;
     }
 
     /** Runs one shell command; @return its output lines (prompts removed) */
