@@ -44,7 +44,7 @@ async function load() {
   for (const a of apps) {
     body.append(Tiny.el('tr', {'data-bsn': a.symbolicName},
       Tiny.el('td', {}, Tiny.el('b', {}, a.name), Tiny.el('div', {class: 'muted'}, a.symbolicName)),
-      Tiny.el('td', {}, a.version),
+      Tiny.el('td', {class: 'nowrap'}, a.version),
       Tiny.el('td', {}, Tiny.el('span', {class: 'state state-' + a.state}, a.state), a.uploaded ? Tiny.el('div', {class: 'muted'}, 'uploaded') : null),
       Tiny.el('td', {}, a.listed ? (a.enabled ? 'enabled' : 'disabled') + (a.listStatus ? ' · ' + a.listStatus : '') : 'not listed'),
       Tiny.el('td', {class: 'drivers'}, a.drivers.map(d => Tiny.el('div', {class: 'driver'}, d.name + ' (' + d.devices + ')'))),

@@ -1,6 +1,6 @@
 'use strict';
 // House plan: House Information's rooms with name, type and neighbour links (thesis Fig 3.7), editable by the
-// installer; a drawing of the plan (rooms on a circle, a line per link).
+// installer; a drawing of the plan above it (rooms on an ellipse, a line per link).
 const SVG_NS = 'http://www.w3.org/2000/svg';
 const TYPES = ['Bathroom', 'Bedroom', 'Hall', 'Kitchen', 'Living room', 'Study'];
 
@@ -49,11 +49,11 @@ function svg(tag, attrs, text) {
 }
 
 function plan(rooms) {
-  const size = 420, c = size / 2, radius = rooms.length > 1 ? 150 : 0;
+  const W = 720, H = rooms.length > 2 ? 250 : 60, rx = rooms.length > 1 ? 290 : 0, ry = rooms.length > 2 ? 95 : 0;
   const pos = new Map(rooms.map((r, i) => [r.uid, {
-    x: c + radius * Math.cos(2 * Math.PI * i / rooms.length - Math.PI / 2),
-    y: c + radius * Math.sin(2 * Math.PI * i / rooms.length - Math.PI / 2)}]));
-  const root = svg('svg', {id: 'plan-svg', width: size, height: size, viewBox: '0 0 ' + size + ' ' + size, role: 'img',
+    x: W / 2 + rx * Math.cos(2 * Math.PI * i / rooms.length - Math.PI / 2),
+    y: H / 2 + ry * Math.sin(2 * Math.PI * i / rooms.length - Math.PI / 2)}]));
+  const root = svg('svg', {id: 'plan-svg', width: W, height: H, viewBox: '0 0 ' + W + ' ' + H, role: 'img',
     'aria-label': rooms.length + ' rooms and their links'});
   for (const r of rooms) {
     for (const n of r.neighbours) {

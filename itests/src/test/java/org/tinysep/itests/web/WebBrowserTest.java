@@ -125,7 +125,7 @@ public class WebBrowserTest extends WebTestSupport {
                 browser.eval("(location.hash = " + Chromium.quote(doorUid) + ", 1)");
                 browser.waitFor("document.getElementById('param-kind') !== null && document.getElementById('param-kind').tagName === 'SELECT'",
                         WAIT, "the door's kind as a drop-down");
-                assertEquals("OUTER|INNER", browser.eval("Array.from(document.querySelectorAll('#param-kind option')).map(o => o.value).join('|')"));
+                assertEquals("the door's kinds as JSON text", "\"OUTER|INNER\"", browser.eval("Array.from(document.querySelectorAll('#param-kind option')).map(o => o.value).join('|')"));
                 browser.eval("(document.getElementById('param-kind').value = 'INNER', document.getElementById('save-kind').click(), 1)");
                 browser.waitFor("document.getElementById('error-kind').textContent.startsWith('saved')", WAIT, "the kind saved");
                 assertTrue(call("GET", "/api/devices/" + doorUid, null, api, false).body().contains("{\"key\":\"kind\",\"value\":\"INNER\""));

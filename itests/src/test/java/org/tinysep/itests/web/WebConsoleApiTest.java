@@ -54,7 +54,7 @@ public class WebConsoleApiTest extends WebTestSupport {
         assertTrue(asCaregiver.body(), asCaregiver.body().contains("log in as installer"));
         HttpResponse<String> notJar = upload("/api/applications", "hello".getBytes(), "application/java-archive", installer, true);
         assertEquals(400, notJar.statusCode());
-        assertTrue(notJar.body(), notJar.body().contains("not a bundle"));
+        assertTrue(notJar.body(), notJar.body().contains("not a jar file"));
         HttpResponse<String> wrongType = upload("/api/applications", jar, "text/plain", installer, true);
         assertEquals(415, wrongType.statusCode());
         assertTrue(wrongType.body(), wrongType.body().contains("application/java-archive"));

@@ -46,6 +46,9 @@ record JarUpload(byte[] bytes, String symbolicName, String version) {
         if (bytes.length == 0) {
             throw ApiException.badRequest("the upload is empty: choose a bundle jar");
         }
+        if (bytes.length < 4 || bytes[0] != 'P' || bytes[1] != 'K' || bytes[2] != 3 || bytes[3] != 4) {
+            throw ApiException.badRequest("the upload is not a jar file (a bundle jar is a zip archive): choose the driver's .jar");
+        }
         Manifest manifest;
         try (JarInputStream jar = new JarInputStream(new ByteArrayInputStream(bytes))) {
             manifest = jar.getManifest();

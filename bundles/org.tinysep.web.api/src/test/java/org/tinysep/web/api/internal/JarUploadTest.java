@@ -47,7 +47,7 @@ class JarUploadTest {
         assertEquals(400, empty.status());
         assertTrue(empty.getMessage().contains("empty"), empty.getMessage());
         ApiException text = assertThrows(ApiException.class, () -> JarUpload.of("hello".getBytes(StandardCharsets.UTF_8)));
-        assertTrue(text.getMessage().contains("not a bundle"), text.getMessage());
+        assertTrue(text.getMessage().contains("not a jar file"), text.getMessage());
         ApiException plainJar = assertThrows(ApiException.class, () -> JarUpload.of(jar(null, "1.0")));
         assertTrue(plainJar.getMessage().contains("no Bundle-SymbolicName"), plainJar.getMessage());
         ApiException shell = assertThrows(ApiException.class, () -> JarUpload.of(jar("a$(reboot)", "1.0")));
