@@ -123,7 +123,7 @@ async function timeline() {
   for (let k = 0; k <= ticks; k++) {
     const x = LABEL + k * (W - LABEL) / ticks;
     const at = new Date(from + k * slots * slotMs / ticks);
-    root.append(svg('text', {x: Math.min(x, W - 40), y: H * t.rooms.length + 14},
+    root.append(svg('text', {x, y: H * t.rooms.length + 14, 'text-anchor': k === 0 ? 'start' : k === ticks ? 'end' : 'middle'},
       days() === '1' ? at.toLocaleTimeString([], {hour: '2-digit', minute: '2-digit'}) : at.toLocaleDateString([], {weekday: 'short'})));
   }
   box.append(Tiny.el('div', {class: 'timeline'}, root));

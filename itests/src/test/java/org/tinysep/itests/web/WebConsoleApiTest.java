@@ -105,6 +105,21 @@ public class WebConsoleApiTest extends WebTestSupport {
         assertFalse(call("GET", "/api/applications", null, installer, false).body().contains("\"symbolicName\":\"" + SPEAKER + "\""));
         assertEquals(404, call("DELETE", "/api/applications/" + SPEAKER, null, installer, true).statusCode());
         assertEquals(401, call("GET", "/api/applications", null, null, false).statusCode());
+        // every changing call of this slice: 401 without login, 403 without the CSRF header, 403 for the caregiver
+        for (String[] c : new String[][] {{"POST", "/api/applications/reload"}, {"POST", "/api/applications/" + SPEAKER + "/enable"},
+                {"POST", "/api/applications/" + SPEAKER + "/disable"}, {"DELETE", "/api/applications/" + SPEAKER},
+                {"PUT", "/api/rooms/x/neighbours/y"}, {"DELETE", "/api/rooms/x/neighbours/y"}, {"POST", "/api/alerts/a-1/acknowledge"}}) {
+            String what = c[0] + " " + c[1];
+            assertEquals(what, 401, call(c[0], c[1], null, null, false).statusCode());
+            HttpResponse<String> noCsrf = call(c[0], c[1], null, installer, false);
+            assertEquals(what, 403, noCsrf.statusCode());
+            assertTrue(what + ": " + noCsrf.body(), noCsrf.body().contains("CSRF"));
+            if (!c[1].endsWith("/acknowledge")) {
+                HttpResponse<String> role = call(c[0], c[1], null, caregiver, true);
+                assertEquals(what, 403, role.statusCode());
+                assertTrue(what + ": " + role.body(), role.body().contains("log in as installer"));
+            }
+        }
     }
 
     @Test

@@ -135,7 +135,7 @@ public final class ApiServlet extends HttpServlet {
                 }
             }
             case "applications" -> {
-                return applications(method, p, req);
+                return applications.route(method, p, req);
             }
             case "alerts" -> {
                 if (n == 1 && method.equals("GET")) {
@@ -185,26 +185,6 @@ public final class ApiServlet extends HttpServlet {
             default -> {
                 // not found below
             }
-        }
-        throw ApiException.notFound("no such API call: " + method + " /api/" + String.join("/", p));
-    }
-
-    private Object applications(String method, List<String> p, HttpServletRequest req) throws IOException {
-        int n = p.size();
-        if (n == 1 && method.equals("GET")) {
-            return applications.list();
-        }
-        if (n == 1 && method.equals("POST")) {
-            return applications.upload(JarUpload.read(req));
-        }
-        if (n == 2 && p.get(1).equals("reload") && method.equals("POST")) {
-            return applications.reload();
-        }
-        if (n == 2 && method.equals("DELETE")) {
-            return applications.remove(p.get(1));
-        }
-        if (n == 3 && method.equals("POST") && (p.get(2).equals("enable") || p.get(2).equals("disable"))) {
-            return applications.setEnabled(p.get(1), p.get(2).equals("enable"));
         }
         throw ApiException.notFound("no such API call: " + method + " /api/" + String.join("/", p));
     }

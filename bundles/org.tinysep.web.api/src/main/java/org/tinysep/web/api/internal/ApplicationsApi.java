@@ -1,23 +1,15 @@
 package org.tinysep.web.api.internal;
 
-import java.io.ByteArrayInputStream;
+import jakarta.servlet.http.HttpServletRequest;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
-import org.osgi.framework.BundleException;
-import org.osgi.framework.startlevel.BundleStartLevel;
-import org.osgi.framework.wiring.FrameworkWiring;
-import org.slf4j.Logger;
-import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Driver;
-import org.tinysep.device.support.AtomicFiles;
 
 /**
  * {@code /api/applications}: the drivers list of thesis 3.4 as the console shows it. An application is a bundle at
@@ -29,18 +21,40 @@ import org.tinysep.device.support.AtomicFiles;
 final class ApplicationsApi {
 
     static final int APP_LEVEL = 5;
-    private static final Logger LOG = LoggerFactory.getLogger(ApplicationsApi.class);
 
     private final BundleContext context;
     private final PlatformView platform;
     private final DriversListShell list;
     private final Path uploads;
+    private final ApplicationInstaller installer;
 
     ApplicationsApi(BundleContext context, PlatformView platform, Path uploads) {
         this.context = context;
         this.platform = platform;
         this.list = new DriversListShell(platform);
         this.uploads = uploads;
+        this.installer = new ApplicationInstaller(context, uploads, this::json);
+    }
+
+    /** Routes {@code /api/applications…} ({@code p} = the path's parts, the first being "applications"). */
+    Object route(String method, List<String> p, HttpServletRequest req) throws IOException {
+        int n = p.size();
+        if (n == 1 && method.equals("GET")) {
+            return list();
+        }
+        if (n == 1 && method.equals("POST")) {
+            return installer.upload(JarUpload.read(req));
+        }
+        if (n == 2 && p.get(1).equals("reload") && method.equals("POST")) {
+            return reload();
+        }
+        if (n == 2 && method.equals("DELETE")) {
+            return installer.remove(p.get(1));
+        }
+        if (n == 3 && method.equals("POST") && (p.get(2).equals("enable") || p.get(2).equals("disable"))) {
+            return setEnabled(p.get(1), p.get(2).equals("enable"));
+        }
+        throw ApiException.notFound("no such API call: " + method + " /api/" + String.join("/", p));
     }
 
     /** GET /api/applications */
@@ -48,7 +62,7 @@ final class ApplicationsApi {
         Map<String, DriversListShell.Entry> entries = list.entries();
         List<Object> out = new ArrayList<>();
         for (Bundle b : context.getBundles()) {
-            if (b.getSymbolicName() != null && level(b) >= APP_LEVEL) {
+            if (b.getSymbolicName() != null && ApplicationInstaller.level(b) >= APP_LEVEL) {
                 out.add(json(b, entries.remove(b.getSymbolicName())));
             }
         }
@@ -72,70 +86,11 @@ final class ApplicationsApi {
         return out;
     }
 
-    /** POST /api/applications with a jar: installs it, or updates the installed bundle of the same name */
-    Map<String, Object> upload(JarUpload jar) {
-        Optional<Bundle> existing = bundle(jar.symbolicName());
-        Path file = uploads.resolve(jar.symbolicName() + ".jar");
-        String location = file.toUri().toString();
-        try {
-            if (existing.isEmpty()) {
-                AtomicFiles.write(file, jar.bytes());
-                Bundle b = context.installBundle(location);
-                b.adapt(BundleStartLevel.class).setStartLevel(APP_LEVEL);
-                try {
-                    b.start();
-                } catch (BundleException e) {
-                    uninstall(b);
-                    Files.deleteIfExists(file);
-                    throw ApiException.badRequest(jar.symbolicName() + " cannot start, so it was not kept: " + e.getMessage());
-                }
-                LOG.info("Web console: installed {} {} from an upload ({})", b.getSymbolicName(), b.getVersion(), file);
-                return answer("installed", b, "");
-            }
-            Bundle b = changeable(existing.get());
-            if (b.getLocation().equals(location)) {
-                AtomicFiles.write(file, jar.bytes());
-                b.update();
-                LOG.info("Web console: updated {} to {} ({})", b.getSymbolicName(), b.getVersion(), file);
-                return answer("updated", b, "");
-            }
-            b.update(new ByteArrayInputStream(jar.bytes()));
-            LOG.info("Web console: updated {} to {} from an upload (until restart; listed file {})", b.getSymbolicName(),
-                    b.getVersion(), b.getLocation());
-            return answer("updated", b, "This update lasts until the platform restarts: the drivers list then loads "
-                    + b.getLocation() + " again. To keep it, replace that file, or uninstall the application here and "
-                    + "upload it again.");
-        } catch (BundleException e) {
-            throw ApiException.badRequest(jar.symbolicName() + " could not be installed or updated: " + e.getMessage());
-        } catch (IOException e) {
-            throw new ApiException(500, "could not keep the uploaded jar in " + file + ": " + e.getMessage());
-        }
-    }
-
-    /** DELETE /api/applications/{bsn} */
-    Map<String, Object> remove(String bsn) {
-        Bundle b = changeable(bundle(DriversListShell.checked(bsn))
-                .orElseThrow(() -> ApiException.notFound("no installed application " + bsn)));
-        String location = b.getLocation();
-        uninstall(b);
-        try {
-            if (location.equals(uploads.resolve(bsn + ".jar").toUri().toString())) {
-                Files.deleteIfExists(uploads.resolve(bsn + ".jar"));
-            }
-        } catch (IOException e) {
-            LOG.warn("Web console: could not delete the uploaded jar of {}: {}", bsn, e.getMessage());
-        }
-        LOG.info("Web console: uninstalled {}", bsn);
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("uninstalled", bsn);
-        return m;
-    }
-
     /** POST /api/applications/{bsn}/enable or /disable */
     Map<String, Object> setEnabled(String bsn, boolean enabled) {
         DriversListShell.checked(bsn);
-        if (bundle(bsn).isPresent()) {
-            changeable(bundle(bsn).get());
+        if (installer.bundle(bsn).isPresent()) {
+            installer.changeable(installer.bundle(bsn).get());
         } else if (!list.entries().containsKey(bsn)) {
             throw ApiException.notFound("no application " + bsn + " (neither installed nor in the drivers list)");
         }
@@ -151,49 +106,7 @@ final class ApplicationsApi {
         return m;
     }
 
-    private Bundle changeable(Bundle b) {
-        if (level(b) < APP_LEVEL) {
-            throw new ApiException(409, b.getSymbolicName() + " is a platform bundle (start level " + level(b)
-                    + "): the console changes applications only");
-        }
-        if (b.getSymbolicName().startsWith("org.tinysep.web.")) {
-            throw new ApiException(409, b.getSymbolicName() + " is the web console itself: change it from the shell");
-        }
-        return b;
-    }
-
-    private void uninstall(Bundle b) {
-        try {
-            b.uninstall();
-        } catch (BundleException e) {
-            throw ApiException.badRequest(b.getSymbolicName() + " could not be uninstalled: " + e.getMessage());
-        }
-        context.getBundle(0).adapt(FrameworkWiring.class).refreshBundles(List.of(b));
-    }
-
-    private Optional<Bundle> bundle(String bsn) {
-        for (Bundle b : context.getBundles()) {
-            if (bsn.equals(b.getSymbolicName())) {
-                return Optional.of(b);
-            }
-        }
-        return Optional.empty();
-    }
-
-    private static int level(Bundle b) {
-        BundleStartLevel l = b.adapt(BundleStartLevel.class);
-        return l == null ? 0 : l.getStartLevel();
-    }
-
-    private Map<String, Object> answer(String action, Bundle b, String note) {
-        Map<String, Object> m = new LinkedHashMap<>();
-        m.put("action", action);
-        m.put("application", json(b, null));
-        m.put("note", note);
-        return m;
-    }
-
-    private Map<String, Object> json(Bundle b, DriversListShell.Entry entry) {
+    Map<String, Object> json(Bundle b, DriversListShell.Entry entry) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("symbolicName", b.getSymbolicName());
         String name = b.getHeaders().get("Bundle-Name");
