@@ -61,5 +61,11 @@ if "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
 else
   mkdir -p "$var"
 fi
+# the web console's address (etc/org.apache.felix.http.cfg, docs/web-api.md) and how to get in
+http_cfg="${demo:+$demo/home/}etc/org.apache.felix.http.cfg"
+http_host=$(sed -n 's/^[[:space:]]*org\.apache\.felix\.http\.host[[:space:]]*[=:][[:space:]]*\([^[:space:]]*\).*/\1/p' "$http_cfg" 2>/dev/null | tail -1 || true)
+http_port=$(sed -n 's/^[[:space:]]*org\.osgi\.service\.http\.port[[:space:]]*[=:][[:space:]]*\([0-9]*\).*/\1/p' "$http_cfg" 2>/dev/null | tail -1 || true)
+echo "Web console: http://${http_host:-127.0.0.1}:${http_port:-8080}/ - set a password first, in the TinySEP shell:"
+echo "  tinysep:web-password installer <password>   (and: tinysep:web-password caregiver <password>)"
 # shellcheck disable=SC2086 # JAVA_OPTS is a list of options; given later, it wins over demo_opts
 exec java ${demo_opts:-} ${JAVA_OPTS:-} -jar tinysep.jar "${launch[@]}" "$@"

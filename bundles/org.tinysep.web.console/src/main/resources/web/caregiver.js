@@ -1,5 +1,6 @@
 'use strict';
-// The caregiver view: is the flat occupied, where and when the last activity was, the inactivity watch, per room.
+// The caregiver view: is the flat occupied, where and when the last activity was, the inactivity watch, alerts,
+// per room its activity over the last 24 h or 7 days (a plot) and its last activity.
 function ago(iso, now) {
   const minutes = Math.round((new Date(now) - new Date(iso)) / 60000);
   if (isNaN(minutes)) return '';
@@ -54,11 +55,88 @@ async function refresh() {
   }
 }
 
+// Alerts: the alert service's open alerts with an acknowledge button once that service exists; until then what
+// the API says ("no alert service") and Inactivity Recognition's own alert.
+async function alerts() {
+  const a = await Tiny.api('GET', 'alerts');
+  document.getElementById('alert-service').textContent = a.alertService ? 'Open alerts:' : a.message;
+  const list = Tiny.clear(document.getElementById('alert-list'));
+  for (const alert of a.alerts) {
+    const out = Tiny.el('span', {class: 'muted'});
+    list.append(Tiny.el('p', {class: 'error alert'}, alert.text + ' ', Tiny.el('button', {type: 'button', class: 'acknowledge',
+      onclick: async () => {
+        try { await Tiny.api('POST', 'alerts/' + encodeURIComponent(alert.id) + '/acknowledge'); await alerts(); }
+        catch (e) { out.textContent = e.message; }
+      }}, 'Acknowledge'), ' ', out));
+  }
+  const i = a.inactivity;
+  if (!i) {
+    list.append(Tiny.el('p', {id: 'inactivity-alert'}, 'Inactivity Recognition is not running: nobody watches for a fall.'));
+  } else if (i.alert) {
+    list.append(Tiny.el('p', {id: 'inactivity-alert', class: 'error'}, 'Inactivity Recognition: no activity in ' + i.alert.room
+      + ' since ' + Tiny.time(i.alert.lastActivityAt) + ' (' + i.alert.lastActivity + '); help was called at '
+      + Tiny.time(i.alert.raisedAt) + '.'));
+  } else {
+    list.append(Tiny.el('p', {id: 'inactivity-alert', class: 'ok'}, 'Inactivity Recognition: no alert ('
+      + (i.state === 'WATCHING' ? 'watching' : 'not watching: nobody seems to be home') + ').'));
+  }
+}
+
+// The activity timeline: one row per room, one bar per slot (30 min over 24 h, 2 h over 7 days), the bar's height
+// the number of movement/door/window reports in that slot, drawn as SVG.
+const SVG_NS = 'http://www.w3.org/2000/svg';
+function svg(tag, attrs, text) {
+  const e = document.createElementNS(SVG_NS, tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, String(v));
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
+
+function days() {
+  return document.querySelector('input[name="days"]:checked').value;
+}
+
+async function timeline() {
+  const t = await Tiny.api('GET', 'caregiver/timeline?days=' + days());
+  const box = Tiny.clear(document.getElementById('timeline'));
+  document.getElementById('timeline-range').textContent = Tiny.time(t.from) + ' – ' + Tiny.time(t.to)
+    + (t.complete ? '' : ' (the oldest part is missing: too many entries)');
+  const slots = t.rooms.length ? t.rooms[0].counts.length : 0;
+  const W = 720, LABEL = 130, H = 34, bar = (W - LABEL) / Math.max(1, slots);
+  const max = Math.max(1, ...t.rooms.flatMap(r => r.counts));
+  const from = new Date(t.from).getTime(), slotMs = t.slotMinutes * 60000;
+  const root = svg('svg', {id: 'timeline-svg', width: W, height: H * t.rooms.length + 18, role: 'img',
+    'aria-label': 'activity per room, ' + (days() === '1' ? 'last 24 hours' : 'last 7 days')});
+  t.rooms.forEach((r, row) => {
+    const y = row * H;
+    root.append(svg('text', {x: 0, y: y + H / 2 + 4, class: 'room-label'}, r.name.length > 20 ? r.name.substring(0, 19) + '…' : r.name));
+    root.append(svg('rect', {x: LABEL, y: y + 4, width: W - LABEL, height: H - 8, class: 'empty'}));
+    r.counts.forEach((c, i) => {
+      if (!c) return;
+      const h = Math.max(2, (H - 8) * c / max);
+      const rect = svg('rect', {x: LABEL + i * bar, y: y + H - 4 - h, width: Math.max(1, bar - 1), height: h, class: 'slot'});
+      rect.append(svg('title', {}, r.name + ': ' + c + ' activity reports from ' + Tiny.time(new Date(from + i * slotMs).toISOString())));
+      root.append(rect);
+    });
+  });
+  const ticks = days() === '1' ? 8 : 7;
+  for (let k = 0; k <= ticks; k++) {
+    const x = LABEL + k * (W - LABEL) / ticks;
+    const at = new Date(from + k * slots * slotMs / ticks);
+    root.append(svg('text', {x, y: H * t.rooms.length + 14, 'text-anchor': k === 0 ? 'start' : k === ticks ? 'end' : 'middle'},
+      days() === '1' ? at.toLocaleTimeString([], {hour: '2-digit', minute: '2-digit'}) : at.toLocaleDateString([], {weekday: 'short'})));
+  }
+  box.append(Tiny.el('div', {class: 'timeline'}, root));
+  box.dataset.slots = slots;
+}
+
 async function init() {
   try {
     await Tiny.start('caregiver.html');
     await refresh();
-    setInterval(() => refresh().catch(() => {}), 10000);
+    await Promise.all([alerts(), timeline()]);
+    for (const radio of document.querySelectorAll('input[name="days"]')) radio.addEventListener('change', () => timeline().catch(() => {}));
+    setInterval(() => Promise.all([refresh(), alerts(), timeline()]).catch(() => {}), 10000);
   } catch (e) {
     Tiny.fail('caregiver-box', e);
   }

@@ -59,8 +59,8 @@ const Tiny = {
   async start(active) {
     Tiny.session = await Tiny.api('GET', 'session');
     const nav = document.getElementById('nav');
-    const pages = [['index.html', 'Event log'], ['devices.html', 'Devices'], ['graph.html', 'Connections'], ['packets.html', 'Packet log'],
-      ['caregiver.html', 'Caregiver view']];
+    const pages = [['index.html', 'Event log'], ['devices.html', 'Devices'], ['graph.html', 'Connections'], ['drivers.html', 'Drivers'],
+      ['house.html', 'House plan'], ['packets.html', 'Packet log'], ['caregiver.html', 'Caregiver view']];
     for (const [href, label] of pages) {
       nav.append(Tiny.el('a', {href, class: href === active ? 'active' : null}, label));
     }

@@ -35,6 +35,13 @@ function field(d, p) {
     }
     return select;
   }
+  if (p.options && p.options.length) { // an enumerated parameter: its values as a drop-down
+    const select = Tiny.el('select', {name: p.key, id: 'param-' + p.key});
+    const values = p.options.includes(p.value) || p.value === '' ? p.options : [p.value, ...p.options];
+    if (p.value === '') select.append(Tiny.el('option', {value: ''}, '(not set)'));
+    for (const v of values) select.append(Tiny.el('option', {value: v, selected: v === p.value}, v));
+    return select;
+  }
   return Tiny.el('input', {name: p.key, id: 'param-' + p.key, value: p.value});
 }
 

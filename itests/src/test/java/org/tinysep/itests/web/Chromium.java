@@ -170,6 +170,20 @@ final class Chromium implements AutoCloseable {
                 + "(at " + eval("location.href") + ") " + last);
     }
 
+    /** Chooses {@code file} in the page's file input {@code selector} (as a user picking it in the dialog). */
+    void setFile(String selector, Path file) {
+        Matcher root = Pattern.compile("\"root\":\\{\"nodeId\":(\\d+)").matcher(command("DOM.getDocument", "{\"depth\":0}"));
+        if (!root.find()) {
+            throw new AssertionError("no document node");
+        }
+        Matcher node = Pattern.compile("\"nodeId\":(\\d+)").matcher(command("DOM.querySelector",
+                "{\"nodeId\":" + root.group(1) + ",\"selector\":" + quote(selector) + "}"));
+        if (!node.find() || node.group(1).equals("0")) {
+            throw new AssertionError("no element " + selector + " in the page");
+        }
+        command("DOM.setFileInputFiles", "{\"files\":[" + quote(file.toAbsolutePath().toString()) + "],\"nodeId\":" + node.group(1) + "}");
+    }
+
     void screenshot(Path file) {
         String answer = command("Page.captureScreenshot", "{\"format\":\"png\",\"captureBeyondViewport\":false}");
         Matcher m = Pattern.compile("\"data\":\"([^\"]+)\"").matcher(answer);

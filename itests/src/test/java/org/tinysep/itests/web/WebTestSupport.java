@@ -64,7 +64,38 @@ public abstract class WebTestSupport extends TinySepTestSupport {
         return configs;
     }
 
-    private static int freePort() {
+    /** Sends {@code bytes} as the body with {@code contentType} (e.g. a bundle jar). */
+    protected HttpResponse<String> upload(String path, byte[] bytes, String contentType, Login login, boolean csrf) {
+        HttpRequest.Builder b = HttpRequest.newBuilder(URI.create(base() + path)).timeout(Duration.ofSeconds(60))
+                .header("Content-Type", contentType).POST(HttpRequest.BodyPublishers.ofByteArray(bytes));
+        if (login != null) {
+            b.header("Cookie", login.cookie());
+            if (csrf) {
+                b.header("X-CSRF-Token", login.csrf());
+            }
+        }
+        try {
+            HttpResponse<String> r = http.send(b.build(), HttpResponse.BodyHandlers.ofString());
+            log.info("POST {} ({} bytes) -> {} {}", path, bytes.length, r.statusCode(), r.body());
+            return r;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
+    }
+
+    /** @return the bytes of a reactor bundle's jar */
+    protected static byte[] reactorJar(String artifactId) {
+        try {
+            return Files.readAllBytes(java.nio.file.Path.of(URI.create(bundleUrl(artifactId))));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    static int freePort() {
         try (ServerSocket s = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
             return s.getLocalPort();
         } catch (IOException e) {

@@ -48,6 +48,9 @@ public final class ApiServlet extends HttpServlet {
     private final transient LogsApi logs;
     private final transient CaregiverApi caregiver;
     private final transient LiveStreams streams;
+    private final transient ApplicationsApi applications;
+    private final transient TimelineApi timeline;
+    private final transient AlertsApi alerts;
 
     @Activate
     public ApiServlet(BundleContext context, @Reference WebSecurity security, @Reference(name = "eventLog") EventLog events,
@@ -60,6 +63,11 @@ public final class ApiServlet extends HttpServlet {
         this.rooms = new RoomsApi(platform);
         this.logs = new LogsApi(platform);
         this.caregiver = new CaregiverApi(platform);
+        java.nio.file.Path web = org.tinysep.device.support.StateFolder.resolveOrDataArea(null, context, "web");
+        this.applications = new ApplicationsApi(context, platform,
+                (web == null ? java.nio.file.Path.of("tinysep-web") : web).resolve("uploads").toAbsolutePath());
+        this.timeline = new TimelineApi(platform);
+        this.alerts = new AlertsApi(context, platform);
         NameCache names = new NameCache(platform);
         this.streams = new LiveStreams(
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
@@ -126,6 +134,17 @@ public final class ApiServlet extends HttpServlet {
                     return devices.drivers();
                 }
             }
+            case "applications" -> {
+                return applications.route(method, p, req);
+            }
+            case "alerts" -> {
+                if (n == 1 && method.equals("GET")) {
+                    return alerts.status();
+                }
+                if (n == 3 && p.get(2).equals("acknowledge") && method.equals("POST")) {
+                    return alerts.acknowledge(p.get(1));
+                }
+            }
             case "rooms" -> {
                 if (n == 1 && method.equals("GET")) {
                     return rooms.list();
@@ -139,6 +158,9 @@ public final class ApiServlet extends HttpServlet {
                 if (n == 2 && method.equals("DELETE")) {
                     return rooms.remove(p.get(1));
                 }
+                if (n == 4 && p.get(2).equals("neighbours") && (method.equals("PUT") || method.equals("DELETE"))) {
+                    return rooms.link(p.get(1), p.get(3), method.equals("PUT"));
+                }
             }
             case "events" -> {
                 if (n == 1 && method.equals("GET")) {
@@ -151,10 +173,13 @@ public final class ApiServlet extends HttpServlet {
                 }
             }
             case "caregiver" -> {
+                Instant now = platform.withService(TimeControllerProvider.class, TimeControllerProvider::now)
+                        .orElse(Instant.now());
                 if (n == 1 && method.equals("GET")) {
-                    Instant now = platform.withService(TimeControllerProvider.class, TimeControllerProvider::now)
-                            .orElse(Instant.now());
                     return caregiver.status(events, now);
+                }
+                if (n == 2 && p.get(1).equals("timeline") && method.equals("GET")) {
+                    return timeline.timeline(events, now, req.getParameterMap());
                 }
             }
             default -> {

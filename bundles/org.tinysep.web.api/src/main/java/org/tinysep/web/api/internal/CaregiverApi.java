@@ -46,23 +46,16 @@ public final class CaregiverApi {
             m.put("since", f.since());
             return m;
         }).orElse(null));
-        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, r -> {
-            Map<String, Object> m = new LinkedHashMap<>();
-            m.put("state", r.state());
-            m.put("alert", r.alert().map(CaregiverApi::alert).orElse(null));
-            return m;
-        }).orElse(null));
-        Map<String, String> sensorRoom = new HashMap<>();
-        for (Class<?> type : List.of(MovementProvider.class, DoorProvider.class, WindowProvider.class)) {
-            sensorRoom.putAll(platform.providersWithRoom(type));
-        }
+        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, CaregiverApi::inactivity)
+                .orElse(null));
+        Map<String, String> sensorRoom = sensorRooms(platform);
         Map<String, EventEntry> lastByRoom = new HashMap<>();
         if (!sensorRoom.isEmpty()) {
             List<EventEntry> entries = log.query(new LogQuery(now.minus(Duration.ofDays(DAYS)), null,
                     sensorRoom.keySet(), Set.of("DEVICE_EVENT"), 5000)).entries();
             for (EventEntry e : entries) { // oldest first: later ones overwrite
                 String room = sensorRoom.get(e.origin());
-                if (room != null && ACTIVITY.matcher(e.message()).lookingAt()) {
+                if (room != null && isActivity(e.message())) {
                     lastByRoom.put(room, e);
                 }
             }
@@ -90,12 +83,33 @@ public final class CaregiverApi {
         return out;
     }
 
+    /** @return sensor UID → room UID of every movement, door and window sensor placed in a room */
+    static Map<String, String> sensorRooms(PlatformView platform) {
+        Map<String, String> sensorRoom = new HashMap<>();
+        for (Class<?> type : List.of(MovementProvider.class, DoorProvider.class, WindowProvider.class)) {
+            sensorRoom.putAll(platform.providersWithRoom(type));
+        }
+        return sensorRoom;
+    }
+
+    /** @return whether an event-log message of a sensor is activity (movement, a door or window opened or closed) */
+    static boolean isActivity(String message) {
+        return ACTIVITY.matcher(message).lookingAt();
+    }
+
     private static Map<String, Object> activity(EventEntry e, Map<String, String> names, Room room) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("time", e.time());
         m.put("room", room.name());
         m.put("device", names.getOrDefault(e.origin(), e.origin()));
         m.put("message", e.message());
+        return m;
+    }
+
+    static Map<String, Object> inactivity(InactivityRecognitionProvider r) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("state", r.state());
+        m.put("alert", r.alert().map(CaregiverApi::alert).orElse(null));
         return m;
     }
 

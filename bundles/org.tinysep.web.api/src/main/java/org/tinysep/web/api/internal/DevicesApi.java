@@ -151,6 +151,7 @@ public final class DevicesApi {
             pm.put("value", p.value());
             pm.put("writable", p.writable());
             pm.put("description", p.description());
+            pm.put("options", ParameterOptions.of(p));
             out.add(pm);
         }
         return out;

@@ -73,7 +73,18 @@ public final class LogsApi {
         m.put("hex", HexFormat.ofDelimiter(" ").formatHex(p.bytes()));
         m.put("decimal", p.decimal());
         m.put("note", p.note());
+        m.put("decoded", PacketDecoder.decode(p.origin(), p.bytes()));
+        m.put("node", node(p.origin()));
         return m;
+    }
+
+    /** @return the node address an origin such as {@code node 1.17 via udp …} names, else empty */
+    static String node(String origin) {
+        if (!origin.startsWith("node ")) {
+            return "";
+        }
+        int end = origin.indexOf(' ', 5);
+        return end < 0 ? origin.substring(5) : origin.substring(5, end);
     }
 
     private static Map<String, Object> answer(List<Object> entries, LogHistory<?> h) {

@@ -73,6 +73,21 @@ public final class PlatformView {
         return out;
     }
 
+    /** @return the drivers registered by {@code bundle} */
+    public List<Driver> drivers(org.osgi.framework.Bundle bundle) {
+        List<Driver> out = new ArrayList<>();
+        for (ServiceReference<Driver> ref : refs(Driver.class, null)) {
+            if (bundle.equals(ref.getBundle())) {
+                Driver d = context.getService(ref);
+                if (d != null) {
+                    out.add(d);
+                    context.ungetService(ref);
+                }
+            }
+        }
+        return out;
+    }
+
     /** @return UID → name of every device and driver, for showing log origins */
     public Map<String, String> names() {
         Map<String, String> names = new LinkedHashMap<>();

@@ -8,7 +8,7 @@ import java.util.function.Function;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
 
-/** {@code /api/rooms}: House Information's rooms; add, rename/retype, remove (503 while House Information is not running). */
+/** {@code /api/rooms}: House Information's rooms; add, rename/retype, link/unlink neighbours, remove (503 while House Information is not running). */
 public final class RoomsApi {
 
     private final PlatformView platform;
@@ -46,6 +46,23 @@ public final class RoomsApi {
                 throw ApiException.notFound("no room with UID " + uid);
             }
             return Map.of("removed", uid);
+        });
+    }
+
+    /** PUT /api/rooms/{uid}/neighbours/{other} (linked both ways) or DELETE (unlinked); @return the room */
+    public Map<String, Object> link(String uid, String other, boolean linked) {
+        return house(h -> {
+            h.room(uid).orElseThrow(() -> ApiException.notFound("no room with UID " + uid));
+            h.room(other).orElseThrow(() -> ApiException.notFound("no room with UID " + other + " to link to"));
+            if (uid.equals(other)) {
+                throw ApiException.badRequest("a room cannot be its own neighbour");
+            }
+            if (linked) {
+                h.link(uid, other);
+            } else {
+                h.unlink(uid, other);
+            }
+            return json(h.room(uid).orElseThrow(() -> ApiException.notFound("no room with UID " + uid)));
         });
     }
 

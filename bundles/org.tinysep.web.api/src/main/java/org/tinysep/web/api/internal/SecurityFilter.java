@@ -37,6 +37,8 @@ public final class SecurityFilter implements Filter {
     static final String CSP = "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
             + "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'";
 
+    private static final java.util.regex.Pattern ACKNOWLEDGE = java.util.regex.Pattern.compile("/api/alerts/[^/]+/acknowledge");
+
     private final WebSecurity security;
 
     @Activate
@@ -83,7 +85,7 @@ public final class SecurityFilter implements Filter {
                 return;
             }
             boolean logout = path.equals("/api/session") && method.equals("DELETE");
-            if (s.role() != Role.INSTALLER && !logout) {
+            if (s.role() != Role.INSTALLER && !logout && !caregiverMay(method, path)) {
                 deny(resp, 403, "the " + s.role().id() + " may look but not change anything: log in as installer");
                 return;
             }
@@ -91,6 +93,11 @@ public final class SecurityFilter implements Filter {
         req.setAttribute(SessionApi.SESSION_ATTRIBUTE, s);
         req.setAttribute(SessionApi.ROLE_ATTRIBUTE, s.role().id());
         chain.doFilter(req, resp);
+    }
+
+    /** The one change a caregiver may make: acknowledging an alert. */
+    static boolean caregiverMay(String method, String path) {
+        return method.equals("POST") && ACKNOWLEDGE.matcher(path).matches();
     }
 
     static void headers(HttpServletResponse resp) {

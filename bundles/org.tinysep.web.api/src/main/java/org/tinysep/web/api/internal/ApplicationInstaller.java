@@ -1,0 +1,142 @@
+package org.tinysep.web.api.internal;
+
+import java.io.ByteArrayInputStream;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.BiFunction;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.BundleException;
+import org.osgi.framework.startlevel.BundleStartLevel;
+import org.osgi.framework.wiring.FrameworkWiring;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.device.support.AtomicFiles;
+
+/**
+ * Installs, updates and uninstalls applications for {@link ApplicationsApi}: an upload is kept as
+ * {@code <uploads>/<symbolic name>.jar} (written atomically) and installed from there at start level
+ * {@value ApplicationsApi#APP_LEVEL}; a new bundle that cannot start is uninstalled again. Only bundles at that level
+ * or above, and not the console's own, may be changed (else 409).
+ */
+final class ApplicationInstaller {
+
+    private static final Logger LOG = LoggerFactory.getLogger(ApplicationInstaller.class);
+
+    private final BundleContext context;
+    private final Path uploads;
+    private final BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json;
+
+    ApplicationInstaller(BundleContext context, Path uploads, BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json) {
+        this.context = context;
+        this.uploads = uploads;
+        this.json = json;
+    }
+
+    /** POST /api/applications with a jar: installs it, or updates the installed bundle of the same name */
+    Map<String, Object> upload(JarUpload jar) {
+        Optional<Bundle> existing = bundle(jar.symbolicName());
+        Path file = uploads.resolve(jar.symbolicName() + ".jar");
+        String location = file.toUri().toString();
+        try {
+            if (existing.isEmpty()) {
+                AtomicFiles.write(file, jar.bytes());
+                Bundle b = context.installBundle(location);
+                b.adapt(BundleStartLevel.class).setStartLevel(ApplicationsApi.APP_LEVEL);
+                try {
+                    b.start();
+                } catch (BundleException e) {
+                    uninstall(b);
+                    Files.deleteIfExists(file);
+                    throw ApiException.badRequest(jar.symbolicName() + " cannot start, so it was not kept: " + e.getMessage());
+                }
+                LOG.info("Web console: installed {} {} from an upload ({})", b.getSymbolicName(), b.getVersion(), file);
+                return answer("installed", b, "");
+            }
+            Bundle b = changeable(existing.get());
+            if (b.getLocation().equals(location)) {
+                AtomicFiles.write(file, jar.bytes());
+                b.update();
+                LOG.info("Web console: updated {} to {} ({})", b.getSymbolicName(), b.getVersion(), file);
+                return answer("updated", b, "");
+            }
+            b.update(new ByteArrayInputStream(jar.bytes()));
+            LOG.info("Web console: updated {} to {} from an upload (until restart; listed file {})", b.getSymbolicName(),
+                    b.getVersion(), b.getLocation());
+            return answer("updated", b, "This update lasts until the platform restarts: the drivers list then loads "
+                    + b.getLocation() + " again. To keep it, replace that file, or uninstall the application here and "
+                    + "upload it again.");
+        } catch (BundleException e) {
+            throw ApiException.badRequest(jar.symbolicName() + " could not be installed or updated: " + e.getMessage());
+        } catch (IOException e) {
+            throw new ApiException(500, "could not keep the uploaded jar in " + file + ": " + e.getMessage());
+        }
+    }
+
+    /** DELETE /api/applications/{bsn} */
+    Map<String, Object> remove(String bsn) {
+        Bundle b = changeable(bundle(DriversListShell.checked(bsn))
+                .orElseThrow(() -> ApiException.notFound("no installed application " + bsn)));
+        String location = b.getLocation();
+        uninstall(b);
+        try {
+            if (location.equals(uploads.resolve(bsn + ".jar").toUri().toString())) {
+                Files.deleteIfExists(uploads.resolve(bsn + ".jar"));
+            }
+        } catch (IOException e) {
+            LOG.warn("Web console: could not delete the uploaded jar of {}: {}", bsn, e.getMessage());
+        }
+        LOG.info("Web console: uninstalled {}", bsn);
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("uninstalled", bsn);
+        return m;
+    }
+
+    Bundle changeable(Bundle b) {
+        if (level(b) < ApplicationsApi.APP_LEVEL) {
+            throw new ApiException(409, b.getSymbolicName() + " is a platform bundle (start level " + level(b)
+                    + "): the console changes applications only");
+        }
+        if (b.getSymbolicName().startsWith("org.tinysep.web.")) {
+            throw new ApiException(409, b.getSymbolicName() + " is the web console itself: change it from the shell");
+        }
+        return b;
+    }
+
+    private void uninstall(Bundle b) {
+        try {
+            b.uninstall();
+        } catch (BundleException e) {
+            throw ApiException.badRequest(b.getSymbolicName() + " could not be uninstalled: " + e.getMessage());
+        }
+        context.getBundle(0).adapt(FrameworkWiring.class).refreshBundles(List.of(b));
+    }
+
+    Optional<Bundle> bundle(String bsn) {
+        for (Bundle b : context.getBundles()) {
+            if (bsn.equals(b.getSymbolicName())) {
+                return Optional.of(b);
+            }
+        }
+        return Optional.empty();
+    }
+
+    static int level(Bundle b) {
+        BundleStartLevel l = b.adapt(BundleStartLevel.class);
+        return l == null ? 0 : l.getStartLevel();
+    }
+
+    private Map<String, Object> answer(String action, Bundle b, String note) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("action", action);
+        m.put("application", json.apply(b, null));
+        m.put("note", note);
+        return m;
+    }
+
+}

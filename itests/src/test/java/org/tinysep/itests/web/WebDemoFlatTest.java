@@ -1,0 +1,208 @@
+package org.tinysep.itests.web;
+
+import static org.junit.Assert.assertTrue;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.ops4j.pax.exam.Option;
+import org.ops4j.pax.exam.junit.PaxExam;
+import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
+import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.api.device.Driver;
+import org.tinysep.itests.TestSyncKey;
+import org.tinysep.simulator.cli.Run;
+
+/**
+ * Every console page on the demo flat of {@code ./run.sh} (flat A, scenario demo-day, seed 1, played by the real
+ * simulator in lock-step over UDP from 06:00 to 15:00, while Inactivity Recognition's bathroom alert is open), in
+ * Debian's headless Chromium: each page is opened and waited on until it shows the flat, then photographed into
+ * {@code target/web-demo-screenshots/}. With {@code -Dtinysep.web.screenshots=docs} (or the environment variable
+ * {@code TINYSEP_WEB_SCREENSHOTS=docs}) the pictures also replace {@code docs/images/web-*.png}; CI never asks, so
+ * it never rewrites files. Measures the event log page's weight and time to first render with the demo's history.
+ */
+@RunWith(PaxExam.class)
+@ExamReactorStrategy(PerClass.class)
+public class WebDemoFlatTest extends WebTestSupport {
+
+    private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
+    private static final Duration WAIT = Duration.ofSeconds(60);
+
+    @Override
+    protected List<Option> options() {
+        List<Option> o = super.options();
+        o.addAll(sunSpotBundles(5));
+        o.add(reactorBundle("org.tinysep.simulator", 5));
+        return o;
+    }
+
+    @Override
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
+        configs.put("org.tinysep.timecontroller", TestSyncKey.timeConfig("EXTERNAL"));
+        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000"));
+        try {
+            Path house = Files.createTempDirectory("tinysep-web-demo-house-").resolve("house.xml");
+            Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
+            configs.put("org.tinysep.houseinformation", Map.of("file", house.toString()));
+            configs.put("org.tinysep.houseinformation.placement", Map.of("placements", placements()));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return configs;
+    }
+
+    /** {@code address=room} for every node of flat A except pet collars (as scripts/demo-flat.sh). */
+    private static String placements() throws IOException {
+        List<String> entries = new ArrayList<>();
+        for (String line : Files.readAllLines(FLAT_A.resolve("nodes.txt"))) {
+            String[] f = line.strip().split("\\|", -1);
+            if (line.strip().startsWith("#") || f.length < 5 || (f.length > 5 && f[5].contains("agent="))) {
+                continue;
+            }
+            entries.add(f[2].strip() + "=" + f[4].strip());
+        }
+        return String.join(", ", entries);
+    }
+
+    private int syncPort() {
+        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
+        awaitService(Driver.class, filter, TIMEOUT);
+        try {
+            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
+                    .getProperty("tinysep.sync.port")).intValue();
+        } catch (Exception e) {
+            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
+        }
+    }
+
+    private void simulate(ExecutorService executor, String from, String until) throws Exception {
+        List<String> args = new ArrayList<>(List.of("--lockstep", "--amica-port", Integer.toString(udpPortOf("BusRadioAmicaUdp")),
+                "--sunspot-port", Integer.toString(udpPortOf("BusRadioSunSpot")), "--sync-port", Integer.toString(syncPort()),
+                "--sync-key", TestSyncKey.file().toString(), "--flat", "flat-a", "--scenario", "demo-day", "--seed", "1",
+                "--progress", "600", "--from", from, "--until", until));
+        executor.submit(() -> {
+            Run.simulate(args.toArray(new String[0]));
+            return null;
+        }).get(180, TimeUnit.SECONDS);
+    }
+
+    @Test
+    public void everyPageShowsTheDemoFlat() throws Exception {
+        setPasswords();
+        String base = base();
+        Login api = login("installer", INSTALLER_PASSWORD);
+        ExecutorService executor = Executors.newSingleThreadExecutor();
+        try {
+            simulate(executor, "06:00", "06:05");
+            await(WAIT, () -> call("GET", "/api/devices", null, api, false).body().split("\"nodeAddress\":\"[0-9]").length > 20,
+                    "flat A's AmICA devices");
+            simulate(executor, "06:05", "15:00");
+            await(WAIT, () -> call("GET", "/api/caregiver", null, api, false).body().contains("\"state\":\"ALERT\""),
+                    "Inactivity Recognition's bathroom alert");
+        } finally {
+            executor.shutdownNow();
+        }
+        try (Chromium browser = Chromium.start(WAIT)) {
+            String step = "login";
+            try {
+                browser.navigate(base + "/login.html");
+                browser.waitFor("document.readyState === 'complete' && document.getElementById('submit') !== null", WAIT, "the login page");
+                shot(browser, "login");
+                browser.eval("(document.getElementById('password').value = " + Chromium.quote(INSTALLER_PASSWORD)
+                        + ", document.getElementById('submit').click(), 1)");
+                step = "event log";
+                browser.waitFor("location.pathname === '/index.html' && performance.getEntriesByName('events-shown').length > 0"
+                        + " && document.querySelectorAll('#events tr').length > 50", WAIT, "the event log with the demo day");
+                metrics(browser);
+                shot(browser, "events");
+                step = "devices";
+                page(browser, base, "devices.html", "document.querySelectorAll('#devices tr[data-uid]').length > 20", "the demo flat's devices");
+                shot(browser, "devices");
+                step = "device settings";
+                browser.eval("(location.hash = Array.from(document.querySelectorAll('#devices tr[data-uid]'))"
+                        + ".find(r => r.textContent.includes('AmicaDoor')).dataset.uid, 1)");
+                browser.waitFor("document.getElementById('param-room') !== null && document.getElementById('param-kind') !== null", WAIT,
+                        "a door's settings with the room and kind drop-downs");
+                shot(browser, "device-settings");
+                step = "connection graph";
+                page(browser, base, "graph.html", "document.querySelectorAll('#graph .node').length > 20", "the demo flat's graph");
+                shot(browser, "graph");
+                step = "drivers";
+                page(browser, base, "drivers.html", "document.querySelectorAll('#applications .driver').length > 10", "the drivers");
+                shot(browser, "drivers");
+                step = "house plan";
+                page(browser, base, "house.html", "document.querySelectorAll('#rooms tr[data-uid]').length === 6"
+                        + " && document.querySelectorAll('#plan-svg line').length > 4", "flat A's six rooms and their links");
+                shot(browser, "house");
+                step = "packet log";
+                page(browser, base, "packets.html", "Array.from(document.querySelectorAll('#packets td.decoded')).filter(d => d.textContent).length > 20",
+                        "decoded packets");
+                shot(browser, "packets");
+                step = "caregiver view";
+                page(browser, base, "caregiver.html", "document.querySelectorAll('#timeline-svg rect.slot').length > 10"
+                        + " && document.getElementById('inactivity-alert').textContent.includes('Bathroom')", "the activity plot and the open alert");
+                shot(browser, "caregiver");
+            } catch (AssertionError | RuntimeException e) {
+                Path file = Path.of("target", "web-demo-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
+                try {
+                    browser.screenshot(file);
+                    log.error("Demo flat browser test failed at '{}'; screenshot: {}", step, file);
+                } catch (AssertionError | RuntimeException ignored) {
+                    log.error("Demo flat browser test failed at '{}'; no screenshot could be taken", step);
+                }
+                throw e;
+            }
+        }
+    }
+
+    private static void page(Chromium browser, String base, String page, String condition, String what) throws InterruptedException {
+        browser.navigate(base + "/" + page);
+        browser.waitFor("location.pathname === '/" + page + "' && document.readyState === 'complete' && (" + condition + ")", WAIT, what);
+    }
+
+    /** The event log page with the demo day's history: weight and time to first render, printed. */
+    private void metrics(Chromium browser) {
+        String json = browser.eval("(() => { const n = performance.getEntriesByType('navigation')[0];"
+                + " const r = performance.getEntriesByType('resource');"
+                + " const stat = r.filter(e => !e.name.includes('/api/'));"
+                + " const api = r.filter(e => e.name.includes('/api/') && !e.name.includes('/api/stream/'));"
+                + " const paint = performance.getEntriesByName('first-contentful-paint')[0];"
+                + " const shown = performance.getEntriesByName('events-shown')[0];"
+                + " return {pageBytes: n.transferSize + stat.reduce((s, e) => s + e.transferSize, 0),"
+                + " pageFiles: 1 + stat.length, apiBytes: api.reduce((s, e) => s + e.transferSize, 0),"
+                + " firstContentfulPaintMs: paint ? Math.round(paint.startTime) : null,"
+                + " eventsShownMs: shown ? Math.round(shown.startTime) : null,"
+                + " domContentLoadedMs: Math.round(n.domContentLoadedEventEnd)}; })()");
+        System.out.println("WebDemoFlatTest: event log page (demo flat): " + json);
+        log.info("Event log page on the demo flat: {}", json);
+        assertTrue(json, json.contains("\"firstContentfulPaintMs\":"));
+    }
+
+    private void shot(Chromium browser, String page) throws Exception {
+        browser.waitFor("document.readyState === 'complete'", WAIT, "the page loaded");
+        browser.screenshot(Path.of("target", "web-demo-screenshots", page + ".png").toAbsolutePath());
+        String wanted = System.getProperty("tinysep.web.screenshots", "");
+        if (!wanted.equals("docs")) {
+            wanted = System.getenv().getOrDefault("TINYSEP_WEB_SCREENSHOTS", "");
+        }
+        String docs = System.getProperty("tinysep.docs.images", "");
+        if (wanted.equals("docs") && !docs.isEmpty() && !docs.startsWith("${")) {
+            browser.screenshot(Path.of(docs, "web-" + page + ".png"));
+        }
+    }
+}
