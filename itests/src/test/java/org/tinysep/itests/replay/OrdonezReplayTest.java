@@ -30,6 +30,7 @@ import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.simulator.cli.Replay;
 import org.tinysep.simulator.cli.ReplayResult;
 import org.tinysep.simulator.cli.Run;
+import org.tinysep.simulator.measure.KernelDrops;
 import org.tinysep.simulator.replay.Agreement;
 import org.tinysep.simulator.replay.Evaluation;
 import org.tinysep.simulator.replay.Interval;
@@ -85,15 +86,15 @@ public class OrdonezReplayTest extends LockStepTestSupport {
         ExecutorService executor = Executors.newSingleThreadExecutor();
         try (ReplayRecord record = new ReplayRecord(context)) {
             int radioPort = udpPortOf("BusRadioAmicaUdp");
-            long dropsBefore = kernelDrops(radioPort);
+            long dropsBefore = KernelDrops.at(radioPort);
             String[] args = {"--replay", SENSORS.toString(), "--mapping", "ordonez-a", "--lockstep", "--rate", RATE,
                     "--amica-port", Integer.toString(radioPort),
                     "--sync-port", Integer.toString(syncPort()), syncKeyArgs()[0], syncKeyArgs()[1],
                     "--progress", "1440"};
             ReplayResult result = executor.submit(() -> Run.replay(args)).get(10, TimeUnit.MINUTES);
-            long dropped = kernelDrops(radioPort) - dropsBefore;
+            long dropped = KernelDrops.at(radioPort) - dropsBefore;
             System.out.printf("OrdonezReplayTest: datagrams the kernel dropped at the AmICA radio's full socket "
-                    + "buffer: %s%n", dropsBefore < 0 ? "n/a" : Long.toString(dropped));
+                    + "buffer (/proc/net/udp and udp6): %s%n", dropsBefore < 0 ? "n/a" : Long.toString(dropped));
             ReplayPlan plan = result.replay().plan();
             List<SensorEvent> events = OrdonezReader.readSensors(SENSORS);
 
@@ -140,24 +141,6 @@ public class OrdonezReplayTest extends LockStepTestSupport {
         NavigableMap<String, Integer> out = new TreeMap<>();
         byAddress.forEach((address, n) -> out.put(sensorOf.getOrDefault(address, "?" + address), n));
         return out;
-    }
-
-    /**
-     * @return the kernel's count of datagrams dropped at the UDP socket bound to {@code port} on 127.0.0.1 (last
-     *         column of Linux {@code /proc/net/udp}), or -1 where that file does not exist
-     */
-    private static long kernelDrops(int port) {
-        Path udp = Path.of("/proc/net/udp");
-        if (!Files.isReadable(udp)) {
-            return -1;
-        }
-        String local = String.format("0100007F:%04X", port);
-        try {
-            return Files.readAllLines(udp).stream().map(String::trim).filter(l -> l.contains(" " + local + " "))
-                    .mapToLong(l -> Long.parseLong(l.substring(l.lastIndexOf(' ') + 1))).sum();
-        } catch (IOException | RuntimeException e) {
-            return -1;
-        }
     }
 
 }
