@@ -38,11 +38,12 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
         Path var = work.resolve(name + "/var");
         Files.createDirectories(var);
         int port = Platform.freeUdpPort();
-        Platform.install(dist, home, port);
-        return new Installed(home, var, port);
+        int syncPort = Platform.freeUdpPort();
+        Platform.install(dist, home, port, syncPort);
+        return new Installed(home, var, port, syncPort);
     }
 
-    record Installed(Path home, Path var, int amicaPort) {
+    record Installed(Path home, Path var, int amicaPort, int syncPort) {
         Platform start(List<String> options) throws IOException {
             return Platform.start(home, var, amicaPort, options);
         }
@@ -55,7 +56,7 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
             String[] cells = line.split("\\|");
             if (cells.length >= 4) {
                 try {
-                    out.merge(cells[1].strip(), Integer.parseInt(cells[3].strip()), Integer::sum);
+                    out.merge(cells[0].strip(), Integer.parseInt(cells[2].strip()), Integer::sum);
                 } catch (NumberFormatException notARow) {
                     // header or another table
                 }
@@ -78,15 +79,22 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
         return (System.nanoTime() - t0) / 1e6;
     }
 
-    /** @return the sum of the {@code packets=} parameters of the listed devices (valid packets the radio took) */
-    static long packets(Platform p, String filter) {
-        long sum = 0;
-        Matcher m = Pattern.compile("packets=(\\d+)").matcher(String.join("\n",
-                p.command("tinysep:devices " + filter, Duration.ofSeconds(120))));
-        while (m.find()) {
-            sum += Long.parseLong(m.group(1));
+    /** The AmICA UDP radio's own counters ({@code tinysep:drivers}): datagrams received and rejected. */
+    record RadioCounters(long received, long rejected) {
+    }
+
+    static RadioCounters radio(Platform p) {
+        for (String line : p.command("tinysep:drivers", Duration.ofSeconds(120))) {
+            if (line.startsWith("BusRadioAmicaUdp ")) {
+                return new RadioCounters(counter(line, "received"), counter(line, "rejected"));
+            }
         }
-        return sum;
+        throw new IllegalStateException("no BusRadioAmicaUdp in tinysep:drivers");
+    }
+
+    private static long counter(String line, String key) {
+        Matcher m = Pattern.compile("[ ,]" + key + "=(\\d+)").matcher(line);
+        return m.find() ? Long.parseLong(m.group(1)) : -1;
     }
 
     static void sleep(double seconds) throws InterruptedException {

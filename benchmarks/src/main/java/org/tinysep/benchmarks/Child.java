@@ -26,7 +26,7 @@ final class Child implements AutoCloseable {
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT);
         Platform.environment(jvmOptions, pb);
         long t0 = System.nanoTime();
-        process = pb.start();
+        process = Children.track(pb.start());
         out = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
         in = process.getOutputStream();
         String first = out.readLine();

@@ -39,8 +39,18 @@ public final class Main {
         step("throughput", report, () -> new Throughput().run(b));
         step("latency", report, () -> new Latency().run(b));
         step("scale", report, () -> new Scale().run(b, footprint.chosenIdleRssKb));
+        step("lockstep", report, () -> new LockStep72h().run(b));
         String loadAfter = Machine.load();
         StringBuilder md = new StringBuilder();
+        if (List.of(args).contains("--append") && Files.isRegularFile(out)) {
+            // sections run later (--only …) added below an earlier run's, with their own machine load
+            md.append(Files.readString(out)).append("\n---\n\n# Added by a later run (").append(Instant.now())
+                    .append(", sections: ").append(String.join(", ", only)).append("; load average before ")
+                    .append(loadBefore).append(", after ").append(loadAfter).append(")\n");
+            md.append(report.markdown());
+            Files.writeString(out, md.toString());
+            return report.problems.isEmpty() ? 0 : 1;
+        }
         md.append("# TinySEP benchmarks").append(smoke ? " (smoke run: a few seconds each, figures not meaningful)" : "")
                 .append("\n\nWritten by `./benchmarks/run.sh").append(smoke ? " --smoke" : "").append("` on ")
                 .append(Instant.now()).append(" in ").append(Report.f("%.0f s", (System.nanoTime() - t0) / 1e9))

@@ -49,8 +49,8 @@ final class Platform implements AutoCloseable {
         reader.start();
     }
 
-    /** Copies the distribution to {@code home} (once) and sets its ports: AmICA {@code amicaPort}, the rest free. */
-    static Path install(Path dist, Path home, int amicaPort) throws IOException {
+    /** Copies the distribution to {@code home} and sets its ports: AmICA, Time Controller as given, the rest free. */
+    static Path install(Path dist, Path home, int amicaPort, int syncPort) throws IOException {
         if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
             throw new IOException("no distribution at " + dist.toAbsolutePath() + " (mvn -B -o package first)");
         }
@@ -67,6 +67,7 @@ final class Platform implements AutoCloseable {
         Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
                 "port=" + amicaPort + "\nbindAddress=127.0.0.1\n");
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
+        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"), "syncPort=" + syncPort + "\n");
         Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
                 "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + freeTcpPort() + "\n");
         return home;
@@ -82,7 +83,7 @@ final class Platform implements AutoCloseable {
                 .redirectError(ProcessBuilder.Redirect.appendTo(home.resolve("platform.log").toFile()));
         environment(jvmOptions, pb);
         long t0 = System.nanoTime();
-        Process p = pb.start();
+        Process p = Children.track(pb.start());
         Platform platform = new Platform(home, amicaPort, p, t0);
         platform.command("echo ready", Duration.ofSeconds(180));
         return platform;

@@ -53,7 +53,7 @@ final class Scale {
         r.heading("Scale: devices in one framework");
         r.text("N movement nodes announce themselves (keep-alives at 1,000/s), making 2N devices; then an orderly "
                 + "stop and a restart from the backup. Floor: the idle platform's RSS in this run ("
-                + Report.mb((long) idleRssKb) + ").");
+                + (Double.isNaN(idleRssKb) ? "not measured" : Report.mb((long) idleRssKb)) + ").");
         List<List<String>> table = new ArrayList<>();
         for (Row x : rows) {
             table.add(List.of(Integer.toString(x.nodes()), Integer.toString(2 * x.nodes()),

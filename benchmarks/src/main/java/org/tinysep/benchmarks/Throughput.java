@@ -8,8 +8,7 @@ import org.tinysep.simulator.measure.KernelDrops;
 /**
  * Maximum zero-loss throughput: N AmICA movement nodes send motion frames round-robin, the rate stepped up until
  * the first loss. Loss at the platform: the kernel's drops at the radio's socket ({@code /proc/net/udp} and
- * {@code udp6}), the radio's own counters (frames taken, {@code packets=} of every node's bus device, against the
- * frames sent) . The bare receiver (a JVM that only counts) is stepped the same way in the same run.
+ * {@code udp6}), the radio's own counters ({@code received} minus {@code rejected}) against the frames sent. The bare receiver (a JVM that only counts) is stepped the same way in the same run.
  */
 final class Throughput {
 
@@ -51,13 +50,14 @@ final class Throughput {
             sender.announce(2_000);
             Bench.awaitDevices(p, "AmicaMovement", nodes, Duration.ofMinutes(2));
             for (int rate : rates) {
-                long before = Bench.packets(p, "AmICA");
+                Bench.RadioCounters before = Bench.radio(p);
                 long dropsBefore = KernelDrops.at(inst.amicaPort());
                 long sentBefore = sender.sent;
                 double wall = sender.motion((long) (rate * seconds), rate);
                 long sent = sender.sent - sentBefore;
-                long taken = settle(() -> Bench.packets(p, "AmICA") - before, sent);
-                Step s = new Step(rate, sent / wall, sent, taken, KernelDrops.at(inst.amicaPort()) - dropsBefore);
+                long taken = settle(() -> Bench.radio(p).received() - before.received(), sent);
+                long rejected = Bench.radio(p).rejected() - before.rejected();
+                Step s = new Step(rate, sent / wall, sent, taken - rejected, KernelDrops.at(inst.amicaPort()) - dropsBefore);
                 platform.add(s);
                 if (!s.lossless()) {
                     break;
@@ -69,7 +69,7 @@ final class Throughput {
         Report r = b.report();
         r.heading("Maximum zero-loss throughput (" + nodes + " AmICA movement nodes, motion frames)");
         r.text("Each step sends for " + seconds + " s at the offered rate (one sender thread, paced per ms); a step is "
-                + "loss-free when every frame sent was taken (platform: the sum of the nodes' `packets=` counters; "
+                + "loss-free when every frame sent was taken (platform: the radio's own `received` counter minus `rejected`, from `tinysep:drivers`; "
                 + "bare receiver: its count) and the kernel dropped none at the socket (`/proc/net/udp` + `udp6`). "
                 + "Stepping stops at the first loss. The full path runs: radio → movement devices → Flat Occupancy, "
                 + "Follow Me Light, Inactivity Recognition (the default bundle set).");

@@ -24,7 +24,8 @@ class BenchmarksSmokeTest {
         String md = Files.readString(results);
         System.out.println(md);
         for (String section : List.of("## Footprint and start", "## Thesis scenarios 1–5",
-                "## Maximum zero-loss throughput", "## Latency floor", "## Scale", "load average after")) {
+                "## Maximum zero-loss throughput", "## Latency floor", "## Scale", "virtual hours in lock-step",
+                "load average after")) {
             assertTrue(md.contains(section), "RESULTS.md has " + section);
         }
         for (String png : List.of("bench-footprint.png", "bench-thesis.png", "bench-throughput.png", "bench-scale.png")) {
