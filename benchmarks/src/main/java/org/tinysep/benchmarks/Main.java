@@ -63,7 +63,18 @@ public final class Main {
                 .append("| JVM | ").append(Machine.jvm()).append(" |\n")
                 .append("| load average (1, 5, 15 min) before | ").append(loadBefore).append(" |\n")
                 .append("| load average after | ").append(loadAfter).append(" |\n\n");
+        if (busy(loadBefore) || busy(loadAfter)) {
+            md.append("**The machine was busy during this run** (load average above its ").append(Machine.cores())
+                    .append(" cores): other processes competed for the CPUs, so times and CPU shares are noisy and "
+                            + "pessimistic; compare the ratios to the floors measured beside them, and re-run on a "
+                            + "quiet machine before quoting a figure (a quiet re-run is due).\n\n");
+        }
         md.append(report.markdown());
+        if (only.isEmpty()) {
+            try (var notes = Main.class.getResourceAsStream("/closing-notes.md")) {
+                md.append(new String(notes.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8));
+            }
+        }
         Files.createDirectories(out.toAbsolutePath().getParent());
         Files.writeString(out, md.toString());
         System.out.println("benchmarks: wrote " + out + (report.problems.isEmpty() ? "" : "; failed: " + report.problems));
@@ -86,6 +97,14 @@ public final class Main {
         } catch (Exception e) {
             e.printStackTrace();
             report.problem(name, e);
+        }
+    }
+
+    private static boolean busy(String load) {
+        try {
+            return Double.parseDouble(load.split(" ")[0]) > Machine.cores();
+        } catch (RuntimeException e) {
+            return false;
         }
     }
 

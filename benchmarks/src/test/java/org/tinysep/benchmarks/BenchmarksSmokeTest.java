@@ -24,11 +24,12 @@ class BenchmarksSmokeTest {
         String md = Files.readString(results);
         System.out.println(md);
         for (String section : List.of("## Footprint and start", "## Thesis scenarios 1–5",
-                "## Maximum zero-loss throughput", "## Latency floor", "## Scale", "virtual hours in lock-step",
+                "## Maximum zero-loss throughput", "## Packet → reaction latency", "## Scale", "virtual hours in lock-step",
                 "load average after")) {
             assertTrue(md.contains(section), "RESULTS.md has " + section);
         }
-        for (String png : List.of("bench-footprint.png", "bench-thesis.png", "bench-throughput.png", "bench-scale.png")) {
+        for (String png : List.of("bench-footprint.png", "bench-thesis.png", "bench-throughput.png", "bench-scale.png",
+                "bench-latency.png")) {
             assertTrue(Files.size(out.resolve("images").resolve(png)) > 1000, png + " drawn");
         }
         assertEquals(0, rc, "every benchmark ran (failures are named in RESULTS.md)");
