@@ -2,7 +2,8 @@
 # Builds TinySEP and runs its distribution in the foreground with the interactive Gogo shell.
 # Extra arguments go to the launcher:  ./run.sh --daemon   (no shell; stops on SIGTERM / Ctrl-C)
 # Environment: SKIP_BUILD=1 skips the Maven build; TINYSEP_DEMO=0 skips the simulated demo flat; JAVA_OPTS is passed to java
-#   (e.g. JAVA_OPTS=-Dorg.slf4j.simpleLogger.defaultLogLevel=debug).
+#   (e.g. JAVA_OPTS=-Dorg.slf4j.simpleLogger.defaultLogLevel=debug), after the distribution's etc/jvm.options (the
+#   gateway's JVM options; TINYSEP_JVM_OPTIONS=none: the JVM's defaults).
 set -euo pipefail
 cd "$(dirname "$0")"
 if [[ "${SKIP_BUILD:-0}" != "1" ]]; then
@@ -67,5 +68,7 @@ http_host=$(sed -n 's/^[[:space:]]*org\.apache\.felix\.http\.host[[:space:]]*[=:
 http_port=$(sed -n 's/^[[:space:]]*org\.osgi\.service\.http\.port[[:space:]]*[=:][[:space:]]*\([0-9]*\).*/\1/p' "$http_cfg" 2>/dev/null | tail -1 || true)
 echo "Web console: http://${http_host:-127.0.0.1}:${http_port:-8080}/ - set a password first, in the TinySEP shell:"
 echo "  tinysep:web-password installer <password>   (and: tinysep:web-password caregiver <password>)"
-# shellcheck disable=SC2086 # JAVA_OPTS is a list of options; given later, it wins over demo_opts
-exec java ${demo_opts:-} ${JAVA_OPTS:-} -jar tinysep.jar "${launch[@]}" "$@"
+# The gateway's JVM options (heap cap, serial GC, C1 only, ...: etc/jvm.options, figures in benchmarks/RESULTS.md)
+# come from the distribution's launcher script bin/tinysep; JAVA_OPTS is given after them, so it wins over them and
+# over demo_opts (TINYSEP_JVM_OPTIONS=none: the JVM's own defaults)
+JAVA_OPTS="${demo_opts:-} ${JAVA_OPTS:-}" exec bin/tinysep "${launch[@]}" "$@"

@@ -64,7 +64,7 @@ final class PlatformRun {
             while (handedOver(var, before) > smtp.subjects().size() && System.nanoTime() < deadline) {
                 Thread.sleep(100);
             }
-            long drops = org.tinysep.simulator.replay.KernelDrops.at127(platform.amicaPort());
+            long drops = org.tinysep.simulator.measure.KernelDrops.at(platform.amicaPort());
             platform.close();
             List<LogEntry> entries = LogEntry.read(var).stream().filter(e -> e.sequence() > before).toList();
             return new Outcome(entries, smtp.subjects(), results, handedOver(var, before), drops);

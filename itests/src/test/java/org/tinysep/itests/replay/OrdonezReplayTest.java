@@ -30,10 +30,10 @@ import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.simulator.cli.Replay;
 import org.tinysep.simulator.cli.ReplayResult;
 import org.tinysep.simulator.cli.Run;
+import org.tinysep.simulator.measure.KernelDrops;
 import org.tinysep.simulator.replay.Agreement;
 import org.tinysep.simulator.replay.Evaluation;
 import org.tinysep.simulator.replay.Interval;
-import org.tinysep.simulator.replay.KernelDrops;
 import org.tinysep.simulator.replay.Label;
 import org.tinysep.simulator.replay.NodeSpec;
 import org.tinysep.simulator.replay.OrdonezReader;
@@ -86,13 +86,13 @@ public class OrdonezReplayTest extends LockStepTestSupport {
         ExecutorService executor = Executors.newSingleThreadExecutor();
         try (ReplayRecord record = new ReplayRecord(context)) {
             int radioPort = udpPortOf("BusRadioAmicaUdp");
-            long dropsBefore = KernelDrops.at127(radioPort);
+            long dropsBefore = KernelDrops.at(radioPort);
             String[] args = {"--replay", SENSORS.toString(), "--mapping", "ordonez-a", "--lockstep", "--rate", RATE,
                     "--amica-port", Integer.toString(radioPort),
                     "--sync-port", Integer.toString(syncPort()), syncKeyArgs()[0], syncKeyArgs()[1],
                     "--progress", "1440"};
             ReplayResult result = executor.submit(() -> Run.replay(args)).get(10, TimeUnit.MINUTES);
-            long dropped = KernelDrops.at127(radioPort) - dropsBefore;
+            long dropped = KernelDrops.at(radioPort) - dropsBefore;
             System.out.printf("OrdonezReplayTest: datagrams the kernel dropped at the AmICA radio's full socket "
                     + "buffer (/proc/net/udp and udp6): %s%n", dropsBefore < 0 ? "n/a" : Long.toString(dropped));
             ReplayPlan plan = result.replay().plan();

@@ -79,6 +79,12 @@ public final class AtomicFiles {
      * replaces the target (a test seam for crash simulations).
      */
     public static void write(Path target, byte[] bytes, Runnable beforeRename) throws IOException {
+        replace(target, bytes, beforeRename);
+        syncDirectory(target.toAbsolutePath().getParent());
+    }
+
+    /** The write without the folder sync (the caller syncs: {@link AtomicBatch}). */
+    static void replace(Path target, byte[] bytes, Runnable beforeRename) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
         createPrivateDirectories(dir);
         Path tmp = Files.createTempFile(dir, target.getFileName() + ".", ".tmp");
@@ -96,7 +102,6 @@ public final class AtomicFiles {
         } finally {
             Files.deleteIfExists(tmp);
         }
-        syncDirectory(dir);
     }
 
     /** Moves {@code from} to {@code to} atomically (same file system) and syncs both folders. */

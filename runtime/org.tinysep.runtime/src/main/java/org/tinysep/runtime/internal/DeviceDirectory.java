@@ -3,17 +3,26 @@ package org.tinysep.runtime.internal;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeSet;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.LongAdder;
 
 /**
  * The thread-safe store behind {@link Inventory}: drivers, devices and provider services keyed by service id.
- * Lock-free (concurrent maps of immutable records), so service events on any thread never wait here.
+ * Lock-free (concurrent maps of immutable records), so service events on any thread never wait here. Provider
+ * services are also indexed by device UID, so a device's interfaces ({@link #interfacesOf}, asked once per new
+ * device) cost the same with 10 or 10,000 devices (issue 14: a scan of every provider per new device made creation
+ * quadratic).
  */
 final class DeviceDirectory implements Inventory {
 
     private final Map<Long, DriverRecord> drivers = new ConcurrentHashMap<>();
     private final Map<Long, DeviceRecord> devices = new ConcurrentHashMap<>();
     private final Map<Long, ProviderRecord> providers = new ConcurrentHashMap<>();
+    /** device UID → its provider services by service id */
+    private final Map<String, Map<Long, ProviderRecord>> providersByDevice = new ConcurrentHashMap<>();
+    /** provider records read by {@link #interfacesOf} since creation: tests check it does not grow with the count */
+    private final LongAdder providersRead = new LongAdder();
 
     void put(DriverRecord r) {
         drivers.put(r.serviceId(), r);
@@ -24,7 +33,15 @@ final class DeviceDirectory implements Inventory {
     }
 
     void put(ProviderRecord r) {
-        providers.put(r.serviceId(), r);
+        ProviderRecord old = providers.put(r.serviceId(), r);
+        if (old != null && !old.deviceUid().equals(r.deviceUid())) {
+            unindex(old);
+        }
+        providersByDevice.compute(r.deviceUid(), (uid, byId) -> {
+            Map<Long, ProviderRecord> m = byId == null ? new ConcurrentHashMap<>() : byId;
+            m.put(r.serviceId(), r);
+            return m;
+        });
     }
 
     void removeDriver(long serviceId) {
@@ -36,7 +53,17 @@ final class DeviceDirectory implements Inventory {
     }
 
     void removeProvider(long serviceId) {
-        providers.remove(serviceId);
+        ProviderRecord old = providers.remove(serviceId);
+        if (old != null) {
+            unindex(old);
+        }
+    }
+
+    private void unindex(ProviderRecord r) {
+        providersByDevice.computeIfPresent(r.deviceUid(), (uid, byId) -> {
+            byId.remove(r.serviceId(), r);
+            return byId.isEmpty() ? null : byId;
+        });
     }
 
     @Override
@@ -56,9 +83,20 @@ final class DeviceDirectory implements Inventory {
 
     @Override
     public List<String> interfacesOf(String deviceUid) {
-        return providers.values().stream()
-                .filter(p -> p.deviceUid().equals(deviceUid))
-                .flatMap(p -> p.interfaces().stream())
-                .distinct().sorted().toList();
+        Map<Long, ProviderRecord> own = providersByDevice.get(deviceUid);
+        if (own == null) {
+            return List.of();
+        }
+        TreeSet<String> names = new TreeSet<>();
+        for (ProviderRecord p : own.values()) {
+            providersRead.increment();
+            names.addAll(p.interfaces());
+        }
+        return List.copyOf(names);
+    }
+
+    /** @return how many provider records {@link #interfacesOf} has read in all */
+    long providersRead() {
+        return providersRead.sum();
     }
 }

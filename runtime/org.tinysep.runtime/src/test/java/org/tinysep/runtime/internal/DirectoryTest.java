@@ -34,6 +34,21 @@ class DirectoryTest {
     }
 
     @Test
+    void aNewDevicesInterfacesAreFoundWithoutReadingEveryOtherDevice() {
+        // issue 14: interfacesOf scanned every provider service for each new device (quadratic creation)
+        DeviceDirectory dir = new DeviceDirectory();
+        int devices = 2_000;
+        for (int i = 0; i < devices; i++) {
+            dir.put(ProviderRecord.of(i, "dev-" + i, new String[] {"x.MovementProvider"}));
+            assertEquals(List.of("MovementProvider"), dir.interfacesOf("dev-" + i)); // as DeviceTracking asks
+        }
+        assertEquals(devices, dir.providersRead(), "provider records read: one per new device, not all of them");
+        dir.put(ProviderRecord.of(7, "moved", new String[] {"x.DoorProvider"})); // a modified service, other uid
+        assertTrue(dir.interfacesOf("dev-7").isEmpty());
+        assertEquals(List.of("DoorProvider"), dir.interfacesOf("moved"));
+    }
+
+    @Test
     void nodeInfoReadsStringArraysCollectionsAndSingleValues() {
         Map<String, Object> props = new HashMap<>();
         props.put(DeviceProperties.NODE_TYPE, new String[] {"movement", "pet-collar"});

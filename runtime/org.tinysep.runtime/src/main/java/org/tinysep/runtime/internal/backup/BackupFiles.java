@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.stream.Stream;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.device.support.AtomicBatch;
 import org.tinysep.device.support.AtomicFiles;
 
 /**
@@ -82,14 +83,10 @@ final class BackupFiles {
         damaged.accept(f, problem + "; moved aside to " + layout.root().relativize(aside));
     }
 
-    /** Writes the backup to its file; returns that file. */
-    Path write(ComponentBackup b) throws IOException {
+    /** Writes the backup to its file, durable at the batch's commit; returns that file. */
+    Path write(ComponentBackup b, AtomicBatch batch) throws IOException {
         Path file = layout.fileOf(b);
-        AtomicFiles.write(file, codec.write(b));
+        batch.write(file, codec.write(b));
         return file;
-    }
-
-    void delete(Path file) throws IOException {
-        AtomicFiles.delete(file);
     }
 }

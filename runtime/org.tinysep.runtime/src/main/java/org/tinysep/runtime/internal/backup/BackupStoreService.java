@@ -119,6 +119,11 @@ public final class BackupStoreService implements BackupStore {
         writer.drain(); // whatever was queued after the last run
     }
 
+    /** @return folder syncs of the writer so far (a burst of saves syncs each folder once, not once per file) */
+    long foldersSynced() {
+        return writer.foldersSynced();
+    }
+
     /** @return the codec of the backup files (shared: a JAXB context is costly) */
     BackupCodec codec() {
         return files.codec();

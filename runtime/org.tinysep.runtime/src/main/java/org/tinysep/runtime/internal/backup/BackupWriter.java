@@ -10,6 +10,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
 import org.tinysep.api.backup.ComponentBackup;
+import org.tinysep.device.support.AtomicBatch;
 
 /**
  * Writes backups on the store's own thread: saves of one component before its write are coalesced (the newest
@@ -32,6 +33,8 @@ final class BackupWriter {
     private boolean scheduled;
     /** Serialises drains (the executor's, and the caller's on stop or reload), so writes of one UID keep order. */
     private final Object writing = new Object();
+    /** The group commit of each drain; used under {@link #writing}. */
+    private final AtomicBatch batch = new AtomicBatch();
 
     BackupWriter(BackupFiles files, Map<String, Path> written, ScheduledExecutorService executor, long delayMillis,
             BiConsumer<String, String> problem) {
@@ -92,27 +95,42 @@ final class BackupWriter {
         }
     }
 
+    /**
+     * Writes one batch: each file atomically (temp, forced, renamed), then each folder synced once (a group commit:
+     * a burst of device creations costs one folder sync per driver, not one per device); the futures complete
+     * after the sync, so a completed save is durable.
+     */
     private void write(List<Op> ops) {
+        List<Op> done = new ArrayList<>(ops.size());
         for (Op op : ops) {
             try {
                 Path old = written.get(op.uid());
                 if (op.backup() == null) {
                     if (old != null) {
-                        files.delete(old);
+                        batch.delete(old);
                     }
                     written.remove(op.uid());
                 } else {
-                    Path now = files.write(op.backup());
+                    Path now = files.write(op.backup(), batch);
                     written.put(op.uid(), now);
                     if (old != null && !old.equals(now)) {
-                        files.delete(old);
+                        batch.delete(old);
                     }
                 }
-                op.done().forEach(f -> f.complete(null));
+                done.add(op);
             } catch (Exception e) {
                 problem.accept(op.uid(), e.toString());
                 op.done().forEach(f -> f.completeExceptionally(e));
             }
+        }
+        batch.commit();
+        done.forEach(op -> op.done().forEach(f -> f.complete(null)));
+    }
+
+    /** @return folder syncs so far (one per folder per batch; tests check a burst does not sync per file) */
+    long foldersSynced() {
+        synchronized (writing) {
+            return batch.foldersSynced();
         }
     }
 }

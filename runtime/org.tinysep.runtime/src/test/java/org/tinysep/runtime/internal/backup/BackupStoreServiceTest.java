@@ -46,6 +46,28 @@ class BackupStoreServiceTest {
     }
 
     @Test
+    void aBurstOfDeviceCreationsSyncsEachFolderOncePerBatchNotOncePerFile() throws Exception {
+        // issue 14: every device's backup synced its folder on its own: 1,000 new nodes, 1,000+ folder syncs
+        BackupStoreService store = new BackupStoreService(root, 60_000, events); // the burst lands in one batch
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        int devices = 500;
+        List<java.util.concurrent.CompletableFuture<Void>> saves = new ArrayList<>();
+        for (int i = 0; i < devices; i++) {
+            saves.add(store.save(device("u-" + i, "Node " + i, "", t)).toCompletableFuture());
+        }
+        assertTrue(store.flush(java.time.Duration.ofSeconds(60)), "flushed");
+        for (java.util.concurrent.CompletableFuture<Void> f : saves) {
+            assertTrue(f.isDone() && !f.isCompletedExceptionally(), "every save acknowledged after the flush");
+        }
+        try (Stream<Path> files = Files.list(root.resolve("BusRadioAmicaUdp"))) {
+            assertEquals(devices, files.filter(p -> p.toString().endsWith(".xml")).count(), "one file per device");
+        }
+        assertEquals(1, store.foldersSynced(), "one folder, one batch: one folder sync");
+        store.deactivate();
+        assertEquals(devices, new BackupStoreService(root, 0, events).all().size(), "all back after a restart");
+    }
+
+    @Test
     void aSavedBackupIsOnDiskWhenItsFutureCompletesAndComesBackAfterARestart() throws Exception {
         BackupStoreService store = new BackupStoreService(root, 0, events);
         Instant t = Instant.parse("2026-11-22T10:00:00Z");

@@ -1,0 +1,107 @@
+package org.tinysep.benchmarks;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.net.InetSocketAddress;
+import java.net.SocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.DatagramChannel;
+import java.util.HashMap;
+import java.util.concurrent.atomic.AtomicLong;
+import org.osgi.framework.launch.Framework;
+
+/**
+ * The floors, each run as its own JVM with the same options as the platform: {@code receiver <port>} counts
+ * datagrams (a DatagramChannel with the radio's 4 MB receive buffer) and prints the count for every line on stdin;
+ * {@code echo <port>} sends every datagram back; {@code idle} does nothing; {@code felix} starts a bare Felix
+ * framework (system bundle only). Each prints {@code ready} once listening or started.
+ */
+public final class Bare {
+
+    private Bare() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        switch (args[0]) {
+            case "receiver" -> receiver(Integer.parseInt(args[1]));
+            case "echo" -> echo(Integer.parseInt(args[1]));
+            case "idle" -> idle();
+            case "felix" -> felix(args[1]);
+            default -> throw new IllegalArgumentException(args[0]);
+        }
+    }
+
+    private static DatagramChannel open(int port) throws Exception {
+        DatagramChannel ch = DatagramChannel.open();
+        ch.setOption(StandardSocketOptions.SO_RCVBUF, 4 << 20);
+        ch.bind(new InetSocketAddress("127.0.0.1", port));
+        return ch;
+    }
+
+    private static void receiver(int port) throws Exception {
+        DatagramChannel ch = open(port);
+        AtomicLong count = new AtomicLong();
+        Thread t = new Thread(() -> {
+            ByteBuffer b = ByteBuffer.allocate(2048);
+            try {
+                while (true) {
+                    b.clear();
+                    ch.receive(b);
+                    count.incrementAndGet();
+                }
+            } catch (Exception end) {
+                // closed
+            }
+        }, "bare-receiver");
+        t.setDaemon(true);
+        t.start();
+        answer(() -> Long.toString(count.get()));
+    }
+
+    private static void echo(int port) throws Exception {
+        DatagramChannel ch = open(port);
+        Thread t = new Thread(() -> {
+            ByteBuffer b = ByteBuffer.allocate(2048);
+            try {
+                while (true) {
+                    b.clear();
+                    SocketAddress from = ch.receive(b);
+                    b.flip();
+                    ch.send(b, from);
+                }
+            } catch (Exception end) {
+                // closed
+            }
+        }, "bare-echo");
+        t.setDaemon(true);
+        t.start();
+        answer(() -> "ok");
+    }
+
+    private static void idle() throws Exception {
+        answer(() -> "ok");
+    }
+
+    private static void felix(String cache) throws Exception {
+        HashMap<String, String> config = new HashMap<>();
+        config.put("org.osgi.framework.storage", cache);
+        config.put("org.osgi.framework.storage.clean", "onFirstInit");
+        Framework f = new org.apache.felix.framework.FrameworkFactory().newFramework(config);
+        f.start();
+        answer(() -> f.getState() == org.osgi.framework.Bundle.ACTIVE ? "active" : "state " + f.getState());
+        f.stop();
+        f.waitForStop(10_000);
+    }
+
+    /** Prints ready, then one answer per input line, until end of input. */
+    private static void answer(java.util.function.Supplier<String> what) throws Exception {
+        System.out.println("ready");
+        System.out.flush();
+        BufferedReader in = new BufferedReader(new InputStreamReader(System.in));
+        while (in.readLine() != null) {
+            System.out.println(what.get());
+            System.out.flush();
+        }
+    }
+}

@@ -1,0 +1,83 @@
+package org.tinysep.benchmarks;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Footprint and start, with the JVM's default options and with the chosen ones: bare JVM and bare Felix (the
+ * floors), then the distribution idle (full default bundle set, no devices): start to banner ("n/n bundles
+ * active"), to the shell's first answer, idle RSS, live heap after a full GC.
+ */
+final class Footprint {
+
+    /** idle RSS and start of the platform with the chosen options, for the other sections' ratios */
+    double chosenIdleRssKb = Double.NaN;
+    double chosenStartMs = Double.NaN;
+
+    void run(Bench b) throws Exception {
+        Report r = b.report();
+        r.heading("Footprint and start: JVM defaults vs the chosen options");
+        r.text("Chosen options (`etc/jvm.options` of the distribution, used by `./run.sh` and `bin/tinysep`): `"
+                + String.join(" ", b.chosen()) + "`. Idle = the full default bundle set, no devices, "
+                + (b.smoke() ? 2 : 10) + " s after the shell answered. Floors: a bare JVM that only waits for input, "
+                + "and a bare Felix framework (system bundle only), each with the same options.");
+        List<List<String>> rows = new ArrayList<>();
+        List<Double> rss = new ArrayList<>();
+        List<Double> floorsJvm = new ArrayList<>();
+        List<Double> floorsFelix = new ArrayList<>();
+        for (List<String> opts : List.of(Bench.DEFAULTS, b.chosen())) {
+            String label = opts.isEmpty() ? "JVM defaults" : "chosen";
+            long jvmRss;
+            double jvmStart;
+            try (Child idle = new Child(opts, "idle")) {
+                Bench.sleep(1);
+                jvmRss = Proc.rssKb(idle.pid());
+                jvmStart = idle.msToReady;
+            }
+            long felixRss;
+            double felixStart;
+            try (Child felix = new Child(opts, "felix", b.work().resolve("felix-cache-" + rows.size()).toString())) {
+                Bench.sleep(1);
+                felixRss = Proc.rssKb(felix.pid());
+                felixStart = felix.msToReady;
+            }
+            Bench.Installed inst = b.install("footprint-" + (opts.isEmpty() ? "default" : "chosen"));
+            double banner;
+            double ready;
+            long idleRss;
+            long heap;
+            String bannerText;
+            try (Platform p = inst.start(opts)) {
+                ready = p.msSinceStart();
+                banner = p.msToBanner();
+                bannerText = p.banner();
+                Bench.sleep(b.smoke() ? 2 : 10);
+                idleRss = p.rssKb();
+                heap = p.liveHeapKb();
+            }
+            if (!opts.isEmpty()) {
+                chosenIdleRssKb = idleRss;
+                chosenStartMs = banner;
+            }
+            rss.add(idleRss / 1024.0);
+            floorsJvm.add(jvmRss / 1024.0);
+            floorsFelix.add(felixRss / 1024.0);
+            rows.add(List.of(label, Report.mb(idleRss), Report.mb(heap), Report.mb(jvmRss), Report.mb(felixRss),
+                    Report.ratio(idleRss, jvmRss), Report.ratio(idleRss, felixRss),
+                    Report.f("%.0f ms", banner), Report.f("%.0f ms", ready), Report.f("%.0f ms", jvmStart),
+                    Report.f("%.0f ms", felixStart), Report.ratio(banner, felixStart)));
+            r.text("Banner (" + label + "): `" + bannerText + "`");
+        }
+        r.table(List.of("JVM options", "TinySEP idle RSS", "live heap after GC", "bare JVM RSS", "bare Felix RSS",
+                "× bare JVM", "× bare Felix", "start to banner (all bundles active)", "start to shell answer",
+                "bare JVM start", "bare Felix start", "start × bare Felix"), rows);
+        r.text("Goals: idle RSS ≤ 72 MB: " + Report.goalAtMost(chosenIdleRssKb / 1024, 72, "MB")
+                + "; start to ready ≤ 1 s: " + Report.goalAtMost(chosenStartMs / 1000, 1, "s") + ".");
+        Path png = b.images().resolve("bench-footprint.png");
+        Plot.bars(png, "Resident memory (MB): JVM defaults vs chosen options", "MB", List.of("JVM defaults", "chosen"),
+                List.of(new Plot.Series("TinySEP idle", rss), new Plot.Series("bare Felix", floorsFelix),
+                        new Plot.Series("bare JVM", floorsJvm)));
+        r.text("![footprint](../docs/images/bench-footprint.png)");
+    }
+}

@@ -1,0 +1,211 @@
+package org.tinysep.benchmarks;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+
+/**
+ * The real distribution run as a user runs it: {@code java <options> -jar tinysep.jar --var <state>} in a copy of
+ * {@code runtime/org.tinysep.launcher/target/tinysep}, with its interactive shell on stdin (commands end with an
+ * {@code echo} marker), its log in {@code <home>/platform.log}. Its radios listen on free loopback ports.
+ */
+final class Platform implements AutoCloseable {
+
+    private static final String EOF = "\u0000EOF";
+
+    final Path home;
+    final int amicaPort;
+    private final Process process;
+    private final OutputStream stdin;
+    private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
+    private final long startNanos;
+    private volatile long bannerNanos;
+    private volatile String banner = "";
+    private int marker;
+
+    private Platform(Path home, int amicaPort, Process process, long startNanos) {
+        this.home = home;
+        this.amicaPort = amicaPort;
+        this.process = process;
+        this.stdin = process.getOutputStream();
+        this.startNanos = startNanos;
+        Thread reader = new Thread(this::read, "platform-stdout");
+        reader.setDaemon(true);
+        reader.start();
+    }
+
+    /** Copies the distribution to {@code home} and sets its ports: AmICA, Time Controller as given, the rest free. */
+    static Path install(Path dist, Path home, int amicaPort, int syncPort) throws IOException {
+        if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
+            throw new IOException("no distribution at " + dist.toAbsolutePath() + " (mvn -B -o package first)");
+        }
+        try (Stream<Path> files = Files.walk(dist)) {
+            for (Path f : files.filter(p -> !dist.relativize(p).startsWith("var")).toList()) {
+                Path target = home.resolve(dist.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
+                }
+            }
+        }
+        Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
+                "port=" + amicaPort + "\nbindAddress=127.0.0.1\n");
+        Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
+        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"), "syncPort=" + syncPort + "\n");
+        Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
+                "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + freeTcpPort() + "\n");
+        return home;
+    }
+
+    /** Starts {@code java <jvmOptions> -jar tinysep.jar --var <var>} in {@code home}; waits for the shell. */
+    static Platform start(Path home, Path var, int amicaPort, List<String> jvmOptions) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Machine.java());
+        cmd.addAll(jvmArgs(jvmOptions));
+        cmd.addAll(List.of("-jar", "tinysep.jar", "--var", var.toString()));
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(home.toFile())
+                .redirectError(ProcessBuilder.Redirect.appendTo(home.resolve("platform.log").toFile()));
+        environment(jvmOptions, pb);
+        long t0 = System.nanoTime();
+        Process p = Children.track(pb.start());
+        Platform platform = new Platform(home, amicaPort, p, t0);
+        platform.command("echo ready", Duration.ofSeconds(180));
+        return platform;
+    }
+
+    private void read() {
+        try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(),
+                StandardCharsets.UTF_8))) {
+            for (String line; (line = r.readLine()) != null; ) {
+                if (bannerNanos == 0 && line.contains("bundles active")) {
+                    bannerNanos = System.nanoTime();
+                    banner = line.strip();
+                }
+                lines.add(line);
+            }
+        } catch (IOException ignored) {
+            // the process ended
+        }
+        lines.add(EOF);
+    }
+
+    long pid() {
+        return process.pid();
+    }
+
+    /** @return wall time from {@code java -jar} to the banner "…: n/n bundles active", in ms */
+    double msToBanner() {
+        return bannerNanos == 0 ? Double.NaN : (bannerNanos - startNanos) / 1e6;
+    }
+
+    double msSinceStart() {
+        return (System.nanoTime() - startNanos) / 1e6;
+    }
+
+    String banner() {
+        return banner;
+    }
+
+    /** Runs one shell command; @return its output lines (prompts removed) */
+    List<String> command(String commandLine, Duration timeout) {
+        String end = "@@END-" + (++marker) + "@@";
+        try {
+            stdin.write((commandLine + "\necho " + end + "\n").getBytes(StandardCharsets.UTF_8));
+            stdin.flush();
+        } catch (IOException e) {
+            throw new IllegalStateException("platform stdin closed: " + e.getMessage(), e);
+        }
+        List<String> out = new ArrayList<>();
+        long deadline = System.nanoTime() + timeout.toNanos();
+        try {
+            while (true) {
+                String line = lines.poll(Math.max(1, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+                if (line == null) {
+                    throw new IllegalStateException("no answer to '" + commandLine + "' within " + timeout);
+                }
+                if (line.equals(EOF)) {
+                    lines.add(line);
+                    throw new IllegalStateException("platform ended during '" + commandLine + "' (log: "
+                            + home.resolve("platform.log") + ")");
+                }
+                String clean = line.replace("g! ", "");
+                if (clean.contains(end)) {
+                    return out;
+                }
+                if (!clean.isBlank()) {
+                    out.add(clean);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted", e);
+        }
+    }
+
+    long rssKb() {
+        return Proc.rssKb(pid());
+    }
+
+    long liveHeapKb() {
+        return Proc.liveHeapKb(pid());
+    }
+
+    @Override
+    public void close() throws InterruptedException {
+        if (process.isAlive()) {
+            try {
+                stdin.close(); // end of input: the shell stops the framework cleanly
+            } catch (IOException ignored) {
+                // closed
+            }
+            if (!process.waitFor(60, TimeUnit.SECONDS)) {
+                process.destroyForcibly();
+                process.waitFor();
+            }
+        }
+    }
+
+    /** @return the JVM arguments of an options list (entries starting with '-') */
+    static List<String> jvmArgs(List<String> options) {
+        return options.stream().filter(o -> o.startsWith("-")).toList();
+    }
+
+    /** Puts the environment entries of an options list ({@code NAME=value}, as etc/jvm.options has them) in pb's. */
+    static void environment(List<String> options, ProcessBuilder pb) {
+        pb.environment().remove("MALLOC_ARENA_MAX");
+        pb.environment().remove("JAVA_TOOL_OPTIONS");
+        for (String o : options) {
+            if (!o.startsWith("-") && o.contains("=")) {
+                pb.environment().put(o.substring(0, o.indexOf('=')), o.substring(o.indexOf('=') + 1));
+            }
+        }
+    }
+
+    static int freeUdpPort() throws IOException {
+        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getByName("127.0.0.1"))) {
+            return s.getLocalPort();
+        }
+    }
+
+    static int freeTcpPort() throws IOException {
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            return s.getLocalPort();
+        }
+    }
+}
