@@ -24,8 +24,8 @@ import org.tinysep.inactivity.internal.learn.Sighting;
  */
 final class HistoryFromLog {
 
-    /** At most this many entries are read. */
-    static final int MAX_ENTRIES = 2_000_000;
+    /** At most this many entries are read (the newest; sensors log changes only, a home logs far fewer a month). */
+    static final int MAX_ENTRIES = 500_000;
 
     private static final Set<String> ACTIVITY = Set.of("movement detected", "door opened",
             "door closed", "window opened", "window closed", "bed on", "bed off", "seat on", "seat off",

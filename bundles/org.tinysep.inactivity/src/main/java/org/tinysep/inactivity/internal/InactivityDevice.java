@@ -54,7 +54,7 @@ final class InactivityDevice extends AbstractDevice
     private final HistoryFromLog fromLog;
     /** The activity sources connected so far (devices whose logged entries count as history). */
     private final Set<String> sources = ConcurrentHashMap.newKeySet();
-    private volatile long lastResolve;
+    private volatile long lastResolve = System.nanoTime() - HEARTBEAT_NANOS;
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
         this(context, directory, limits, words, LimitPolicy.thesis(), null);
