@@ -29,6 +29,11 @@ final class Heartbeat implements AutoCloseable {
     /** One liveness check: returns when the platform answers, throws saying what does not. */
     interface Probe {
         void check() throws Exception;
+
+        /** @return whether a clean stop is under way (then a failed check is no news) */
+        default boolean stopping() {
+            return false;
+        }
     }
 
     private final Probe probe;
@@ -76,6 +81,9 @@ final class Heartbeat implements AutoCloseable {
             Thread.currentThread().interrupt();
             return;
         } catch (Exception e) {
+            if (e.getCause() instanceof LivenessProbe.Stopping) {
+                return; // a clean stop under way: no beat, no warning
+            }
             fail(Failures.describe(e.getCause() == null ? e : e.getCause()));
             return;
         }
@@ -92,7 +100,7 @@ final class Heartbeat implements AutoCloseable {
     }
 
     private void fail(String why) {
-        if (!failing) {
+        if (!failing && !probe.stopping()) {
             failing = true;
             LOG.warn("TinySEP is not responding ({}): the heartbeat stops, so the supervisor or systemd restarts it",
                     why);

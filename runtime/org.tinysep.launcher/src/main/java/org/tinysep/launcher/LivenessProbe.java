@@ -28,6 +28,9 @@ final class LivenessProbe implements Heartbeat.Probe {
     /** @throws IllegalStateException saying in plain words what does not answer */
     @Override
     public void check() throws Exception {
+        if ((framework.getState() & (Bundle.STOPPING | Bundle.RESOLVED)) != 0) {
+            throw new Stopping();
+        }
         if (framework.getState() != Bundle.ACTIVE) {
             throw new IllegalStateException("the OSGi framework is not active (state " + framework.getState() + ")");
         }
@@ -35,6 +38,20 @@ final class LivenessProbe implements Heartbeat.Probe {
         call(context, SCR, "Declarative Services (SCR)", "getComponentDescriptionDTOs", new Class<?>[] {Bundle[].class},
                 (Object) new Bundle[0]);
         call(context, EVENT_LOG, "the event log", "recent", new Class<?>[] {int.class}, 1);
+    }
+
+    @Override
+    public boolean stopping() {
+        return (framework.getState() & (Bundle.STOPPING | Bundle.RESOLVED)) != 0;
+    }
+
+    /** The framework is stopping (a clean stop): no heartbeat, and nothing to warn about. */
+    static final class Stopping extends IllegalStateException {
+        private static final long serialVersionUID = 1L;
+
+        Stopping() {
+            super("TinySEP is stopping");
+        }
     }
 
     private static void call(BundleContext context, String type, String what, String method, Class<?>[] types,
