@@ -42,7 +42,8 @@ final class Scale {
     }
 
     void run(Bench b, double idleRssKb) throws Exception {
-        int[] counts = b.smoke() ? new int[] {20} : new int[] {100, 1_000, 10_000};
+        // nodes; each makes 2 devices (bus + movement): 100, 1,000 and 10,000 devices
+        int[] counts = b.smoke() ? new int[] {20} : new int[] {50, 500, 5_000};
         List<Row> rows = new ArrayList<>();
         List<String> failed = new ArrayList<>();
         for (int n : counts) {
