@@ -4,6 +4,10 @@ import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.function.Supplier;
+import java.util.stream.Collectors;
+import org.tinysep.api.health.UnmonitoredRoom;
 import org.tinysep.api.service.InactivityAlert;
 import org.tinysep.inactivity.internal.learn.Words;
 
@@ -12,10 +16,32 @@ final class AlertMail {
 
     private final DateTimeFormatter clock;
     private final DateTimeFormatter full;
+    private final Supplier<List<UnmonitoredRoom>> unwatched;
 
     AlertMail(ZoneId zone) {
+        this(zone, List::of);
+    }
+
+    /** @param unwatched the rooms none of whose sensors can be heard now (Sensor Health; empty without it) */
+    AlertMail(ZoneId zone, Supplier<List<UnmonitoredRoom>> unwatched) {
         this.clock = DateTimeFormatter.ofPattern("HH:mm").withZone(zone);
         this.full = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss z").withZone(zone);
+        this.unwatched = unwatched;
+    }
+
+    /**
+     * @return e.g. "Bathroom (no sensor heard since 09:12)", the rooms that could not be watched, joined by ", ";
+     *         empty when every room can be heard
+     */
+    String unwatchedRooms() {
+        List<UnmonitoredRoom> rooms;
+        try {
+            rooms = unwatched.get();
+        } catch (RuntimeException e) { // Sensor Health going away: the alert goes out without this line
+            return "";
+        }
+        return rooms.stream().map(r -> r.roomName() + (r.since() == null ? " (no sensor heard)"
+                : " (no sensor heard since " + clock.format(r.since()) + ")")).collect(Collectors.joining(", "));
     }
 
     String subject(InactivityAlert alert) {
@@ -52,12 +78,20 @@ final class AlertMail {
 
     /** @return for the event log: "; quiet for 1 h 10 min; usually at most ..." (empty without explanation) */
     String why(InactivityAlert alert) {
-        return alert.explanation().isEmpty() ? ""
-                : "; quiet for " + quiet(alert) + " after " + alert.lastActivity() + "; " + alert.explanation();
+        String rooms = unwatchedRooms();
+        return (alert.explanation().isEmpty() ? ""
+                : "; quiet for " + quiet(alert) + " after " + alert.lastActivity() + "; " + alert.explanation())
+                + (rooms.isEmpty() ? "" : "; could not be watched: " + rooms);
     }
 
     private static String quiet(InactivityAlert alert) {
         return Words.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt()));
+    }
+
+    private String unwatchedLine() {
+        String rooms = unwatchedRooms();
+        return rooms.isEmpty() ? "" : "Could not be watched: " + rooms + ". Sensors there are offline (battery or "
+                + "radio), so activity there would not have been seen.\n";
     }
 
     String body(InactivityAlert alert) {
@@ -68,6 +102,7 @@ final class AlertMail {
                 + "Last activity at: " + full.format(alert.lastActivityAt()) + "\n"
                 + "Quiet for: " + quiet(alert) + "\n"
                 + (alert.explanation().isEmpty() ? "" : "Why this is unusual: " + alert.explanation() + "\n")
+                + unwatchedLine()
                 + "Alert raised at: " + full.format(alert.raisedAt()) + "\n\n"
                 + "Please check on the person. The alert clears by itself with the next activity in the flat.\n";
     }

@@ -5,6 +5,8 @@ import java.time.ZoneId;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import org.osgi.service.component.annotations.Reference;
+import org.tinysep.api.health.SensorHealthProvider;
+import org.tinysep.api.health.UnmonitoredRoom;
 import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
 import org.osgi.service.component.annotations.ReferencePolicyOption;
@@ -66,6 +68,10 @@ public final class InactivityDriver extends AbstractDriver {
             policyOption = ReferencePolicyOption.GREEDY)
     private volatile EventLog eventLog;
 
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    private volatile SensorHealthProvider sensorHealth;
+
     public InactivityDriver() {
         super(NAME);
     }
@@ -74,7 +80,7 @@ public final class InactivityDriver extends AbstractDriver {
     void activate(BundleContext bundleContext, InactivityConfig config) {
         limits = LimitTable.parse(config.defaultLimitMinutes(), config.typeLimits(), config.roomLimits());
         ZoneId zone = zone(config.timeZone());
-        words = new AlertMail(zone);
+        words = new AlertMail(zone, this::unmonitoredRooms);
         start(bundleContext);
         policy = policy(config, zone);
         directory = new TrackedPlacements(bundleContext);
@@ -91,6 +97,12 @@ public final class InactivityDriver extends AbstractDriver {
             loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "inactivity-history"));
             loader.execute(() -> loadHistory(days));
         }
+    }
+
+    /** @return the rooms Sensor Health says cannot be heard now (empty without Sensor Health) */
+    private List<UnmonitoredRoom> unmonitoredRooms() {
+        SensorHealthProvider h = sensorHealth;
+        return h == null ? List.of() : h.unmonitoredRooms();
     }
 
     /** THESIS: fixed limits. LEARNED: a learner fed from the event log's history and live activity. */
