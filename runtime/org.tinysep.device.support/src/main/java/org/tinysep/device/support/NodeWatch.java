@@ -26,6 +26,8 @@ public final class NodeWatch {
     private Instant silentSince;
     private int lastSequence = -1;
     private long sequenceGaps;
+    private long lastHeardNanos = System.nanoTime();
+    private long realGuardNanos;
 
     /**
      * @param interval  the node's report interval (silence is counted in these)
@@ -37,6 +39,16 @@ public final class NodeWatch {
         this.lastHeard = lastHeard;
         this.silenceBase = lastHeard;
         java.util.Arrays.fill(bucketOf, Long.MIN_VALUE);
+    }
+
+    /**
+     * Also requires this much real time without a frame before the node counts as silent. For links whose frames
+     * are handled on their own receive thread rather than on the platform tick (serial, Sun SPOT): in lock-step
+     * virtual time a day passes in seconds, and a receive thread lagging a fraction of a second behind the ticks
+     * would otherwise make a node look silent for minutes of platform time. Default none.
+     */
+    public synchronized void realSilenceGuard(Duration guard) {
+        this.realGuardNanos = guard.toNanos();
     }
 
     /** The node's types changed: new report interval and rate. */
@@ -60,6 +72,7 @@ public final class NodeWatch {
         }
         lastHeard = at;
         silenceBase = at;
+        lastHeardNanos = System.nanoTime();
         long bucket = Math.floorDiv(at.getEpochSecond(), BUCKET_SECONDS);
         int slot = (int) Math.floorMod(bucket, (long) BUCKETS);
         if (bucketOf[slot] != bucket) {
@@ -97,6 +110,9 @@ public final class NodeWatch {
         }
         if (Duration.between(silenceBase, now).compareTo(interval.multipliedBy(Math.max(1, missedIntervals))) < 0) {
             return false;
+        }
+        if (realGuardNanos > 0 && System.nanoTime() - lastHeardNanos < realGuardNanos) {
+            return false; // the receive thread may only be behind the platform ticks
         }
         silentSince = lastHeard;
         return true;

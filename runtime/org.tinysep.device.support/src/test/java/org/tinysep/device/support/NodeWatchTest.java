@@ -40,6 +40,16 @@ class NodeWatchTest {
     }
 
     @Test
+    void aRealTimeGuardKeepsALaggingReceiverFromLookingSilentInVirtualTime() {
+        NodeWatch w = new NodeWatch(Duration.ofSeconds(2), 0.5, null);
+        w.realSilenceGuard(Duration.ofHours(1));
+        w.heard(T0, -1);
+        assertFalse(w.checkSilence(T0.plusSeconds(3600), 3), "an hour of platform time in a moment of real time");
+        w.realSilenceGuard(Duration.ZERO);
+        assertTrue(w.checkSilence(T0.plusSeconds(3600), 3));
+    }
+
+    @Test
     void theClockGoingBackDoesNotFreezeTheSilenceCheck() {
         NodeWatch w = new NodeWatch(Duration.ofSeconds(2), 0.5, null);
         w.heard(T0, -1);

@@ -103,6 +103,11 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         this.policy = policy;
     }
 
+    /** Sets the real time a node must also be silent for (see {@code NodeWatch.realSilenceGuard}). */
+    public void realSilenceGuard(Duration guard) {
+        watch.realSilenceGuard(guard);
+    }
+
     /**
      * Re-creates the bus device of a node known before the restart (docs/backup.md): its last keep-alive and last
      * seen time come from the backup, it has no route until the node is heard again, and its status says so.

@@ -58,6 +58,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private final UnaryOperator<AmicaBusDevice<R>> register;
     private final AtomicLong overCap = new AtomicLong();
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
+    private volatile java.time.Duration realSilenceGuard = java.time.Duration.ZERO;
 
     /**
      * @param deviceType the type of the bus devices, e.g. {@code BusRadioAmicaUdp}
@@ -75,6 +76,16 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     @Override
     public AmicaBusDevice<R> find(AmicaAddress address) {
         return nodes.get(address);
+    }
+
+    /**
+     * For a transport whose frames are handled on its own thread, not on the platform tick (serial): a node must
+     * also be silent this long in real time before it goes OFFLINE, so a receive thread lagging behind lock-step
+     * ticks does not make nodes look silent. The UDP bus radio drains its socket on each tick and needs none.
+     */
+    public void realSilenceGuard(java.time.Duration guard) {
+        this.realSilenceGuard = guard;
+        nodes.values().forEach(d -> d.realSilenceGuard(guard));
     }
 
     /** Sets the health and capacity settings, for the nodes known and those to come. */
@@ -103,6 +114,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         }
         AmicaBusDevice<R> device = new AmicaBusDevice<>(context, deviceType, address, keepAlive, from, this);
         device.policy(p);
+        device.realSilenceGuard(realSilenceGuard);
         nodes.put(address, device);
         return register.apply(device);
     }
@@ -140,6 +152,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         return Backups.recreate(context, saved, b -> {
             AmicaBusDevice<R> d = AmicaBusDevice.restored(context, deviceType, b, this);
             d.policy(policy);
+            d.realSilenceGuard(realSilenceGuard);
             return d;
         }, d -> nodes.putIfAbsent(d.address(), d) == null, register);
     }

@@ -38,6 +38,12 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
 
     /** The report interval of a Sun SPOT of no known type (cannot happen: a device has the type it was made by). */
     private static final Duration FALLBACK_INTERVAL = Duration.ofSeconds(10);
+    /**
+     * Real time a Sun SPOT must also be silent for before it is OFFLINE ({@code NodeWatch.realSilenceGuard}):
+     * packets are handled on each link's own thread, not on the platform tick, and in lock-step virtual time a
+     * lagging receive thread must not make a node look silent.
+     */
+    static final Duration REAL_SILENCE_GUARD = Duration.ofSeconds(2);
 
     private final SunSpotAddress address;
     private final Listeners<BusRadioSunSpotListener> listeners;
@@ -63,6 +69,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {first.typeName()});
         this.watch = new NodeWatch(ReportRates.interval(nodeTypes, FALLBACK_INTERVAL),
                 ReportRates.perSecond(nodeTypes), null);
+        watch.realSilenceGuard(REAL_SILENCE_GUARD);
         publish(this, BusRadioSunSpotProvider.class, NodeHealthSource.class);
     }
 
@@ -134,6 +141,11 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         if (lostLink.equals(link)) {
             status(DeviceStatus.State.OFFLINE, detail);
         }
+    }
+
+    /** Changes the real-time silence guard (tests: none). */
+    void realSilenceGuard(Duration guard) {
+        watch.realSilenceGuard(guard);
     }
 
     /** Checks for silence on a platform tick (sensor health): OFFLINE with a PROBLEM after the missed intervals. */

@@ -100,7 +100,11 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     /** Sets the health and capacity settings of the nodes. */
     void policy(NodePolicy policy) {
         nodes.policy(policy);
+        nodes.realSilenceGuard(REAL_SILENCE_GUARD); // frames arrive on the port's thread, not on the tick
     }
+
+    /** Real time a node must also be silent for (lock-step virtual time runs far ahead of a lagging reader). */
+    static final java.time.Duration REAL_SILENCE_GUARD = java.time.Duration.ofSeconds(2);
 
     /** A platform tick: silent nodes go OFFLINE, the summary of rejected input not kept is written. */
     void tick(Instant now) {
