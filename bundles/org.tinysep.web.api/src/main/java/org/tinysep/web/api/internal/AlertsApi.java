@@ -3,60 +3,76 @@ package org.tinysep.web.api.internal;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.regex.Pattern;
-import org.osgi.framework.BundleContext;
-import org.osgi.framework.InvalidSyntaxException;
+import org.tinysep.api.alert.Alert;
+import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 
 /**
- * {@code /api/alerts}: open alerts and their acknowledgement. The platform has no alert service yet (another
- * change brings one, with acknowledgement); until it exists this answers {@code alertService: false} with a plain
- * sentence, and Inactivity Recognition's state (its alert, if raised) as the only alert source;
- * {@code POST /api/alerts/{id}/acknowledge} answers 503. This class is the one place to connect that service:
- * {@link #status()} and {@link #acknowledge(String)}; the login filter already lets the caregiver acknowledge.
+ * {@code /api/alerts}: the alert service's open alerts ({@code org.tinysep.alerts}) and their acknowledgement, the
+ * same service the shell's {@code tinysep:alerts} and {@code tinysep:ack} use. Without that service running this
+ * answers {@code alertService: false} with a plain sentence and Inactivity Recognition's state (its alert, if
+ * raised) as the only alert source; {@code POST /api/alerts/{id}/acknowledge} then answers 503.
  */
 final class AlertsApi {
 
-    /** The alert service's interface name, looked up by name only: this bundle does not depend on it. */
-    static final String ALERT_SERVICE = "org.tinysep.api.service.AlertService";
-    static final String NO_SERVICE = "no alert service: the platform has no alert service with acknowledgement yet; "
-            + "Inactivity Recognition's own alert is shown, and it ends by itself when activity is seen again";
+    static final String NO_SERVICE = "no alert service: the alert service (bundle org.tinysep.alerts) is not "
+            + "running, so alerts cannot be acknowledged here; Inactivity Recognition's own alert is shown, and it "
+            + "ends by itself when activity is seen again";
     private static final Pattern ID = Pattern.compile("[A-Za-z0-9_.:-]{1,100}");
 
-    private final BundleContext context;
     private final PlatformView platform;
 
-    AlertsApi(BundleContext context, PlatformView platform) {
-        this.context = context;
+    AlertsApi(PlatformView platform) {
         this.platform = platform;
     }
 
     /** GET /api/alerts */
     Map<String, Object> status() {
+        Optional<List<Alert>> open = platform.withService(AlertService.class, AlertService::open);
         Map<String, Object> out = new LinkedHashMap<>();
-        boolean present = serviceRegistered();
-        out.put("alertService", false);
-        out.put("message", present ? "an alert service is running, but this console does not know it yet: "
-                + "update the web console" : NO_SERVICE);
-        out.put("alerts", List.of());
+        out.put("alertService", open.isPresent());
+        out.put("message", open.isPresent() ? (open.get().isEmpty() ? "No open alert." : "Open alerts:")
+                : NO_SERVICE);
+        out.put("alerts", open.orElse(List.of()).stream().map(AlertsApi::json).toList());
         out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, CaregiverApi::inactivity)
                 .orElse(null));
         return out;
     }
 
-    /** POST /api/alerts/{id}/acknowledge */
-    Map<String, Object> acknowledge(String id) {
+    /** POST /api/alerts/{id}/acknowledge, by the logged-in role ("caregiver (web console)") */
+    Map<String, Object> acknowledge(String id, String role) {
         if (!ID.matcher(id).matches()) {
             throw ApiException.badRequest("'" + Strings.shorten(id, 40) + "' is not an alert id");
         }
-        throw new ApiException(503, NO_SERVICE);
+        String by = role + " (web console)";
+        return platform.withService(AlertService.class, s -> {
+            if (s.alert(id).isEmpty()) {
+                throw ApiException.notFound("no alert " + id);
+            }
+            try {
+                return json(s.acknowledge(id, by));
+            } catch (IllegalStateException e) { // closed meanwhile: says since when and why
+                throw new ApiException(409, e.getMessage());
+            } catch (IllegalArgumentException e) {
+                throw ApiException.badRequest(e.getMessage());
+            }
+        }).orElseThrow(() -> new ApiException(503, NO_SERVICE));
     }
 
-    private boolean serviceRegistered() {
-        try {
-            return context.getAllServiceReferences(ALERT_SERVICE, null) != null;
-        } catch (InvalidSyntaxException e) {
-            return false;
-        }
+    private static Map<String, Object> json(Alert a) {
+        Map<String, Object> m = new LinkedHashMap<>();
+        m.put("id", a.id());
+        m.put("kind", a.kind().name());
+        m.put("room", a.roomName());
+        m.put("raisedAt", a.raisedAt().toString());
+        m.put("subject", a.subject());
+        m.put("text", a.subject());
+        m.put("details", a.text());
+        m.put("state", a.state().name());
+        m.put("contactsReached", a.contactsReached());
+        m.put("closedBy", a.closedBy());
+        return m;
     }
 }

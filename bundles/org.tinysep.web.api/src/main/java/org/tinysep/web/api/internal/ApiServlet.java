@@ -67,7 +67,7 @@ public final class ApiServlet extends HttpServlet {
         this.applications = new ApplicationsApi(context, platform,
                 (web == null ? java.nio.file.Path.of("tinysep-web") : web).resolve("uploads").toAbsolutePath());
         this.timeline = new TimelineApi(platform);
-        this.alerts = new AlertsApi(context, platform);
+        this.alerts = new AlertsApi(platform);
         NameCache names = new NameCache(platform);
         this.streams = new LiveStreams(
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
@@ -142,7 +142,7 @@ public final class ApiServlet extends HttpServlet {
                     return alerts.status();
                 }
                 if (n == 3 && p.get(2).equals("acknowledge") && method.equals("POST")) {
-                    return alerts.acknowledge(p.get(1));
+                    return alerts.acknowledge(p.get(1), String.valueOf(req.getAttribute(SessionApi.ROLE_ATTRIBUTE)));
                 }
             }
             case "rooms" -> {

@@ -1,0 +1,73 @@
+package org.tinysep.itests.web;
+
+import static org.junit.Assert.assertEquals;
+import static org.junit.Assert.assertTrue;
+
+import java.net.http.HttpResponse;
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.Before;
+import org.junit.Test;
+import org.junit.runner.RunWith;
+import org.ops4j.pax.exam.junit.PaxExam;
+import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
+import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.api.alert.Alert;
+import org.tinysep.api.alert.AlertKind;
+import org.tinysep.api.alert.AlertRequest;
+import org.tinysep.api.alert.AlertService;
+import org.tinysep.api.alert.AlertState;
+
+/**
+ * The console's alerts over real HTTP with the real alert service (issues 12.3 and 13): an open alert is listed for
+ * the caregiver, who acknowledges it (the service records who); acknowledging it again is refused (409) in words,
+ * an unknown id is 404, a bad id 400; no CSRF token 403, no login 401.
+ */
+@RunWith(PaxExam.class)
+@ExamReactorStrategy(PerClass.class)
+public class WebAlertsTest extends WebTestSupport {
+
+    @Override
+    protected List<String> applications() {
+        List<String> all = new ArrayList<>(super.applications());
+        all.add("org.tinysep.alerts");
+        return all;
+    }
+
+    @Before
+    public void passwords() {
+        setPasswords();
+    }
+
+    @Test
+    public void theCaregiverSeesAndAcknowledgesAnOpenAlert() {
+        AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);
+        Login caregiver = login("caregiver", CAREGIVER_PASSWORD);
+        await(TIMEOUT, () -> call("GET", "/api/alerts", null, caregiver, false).body()
+                .startsWith("{\"alertService\":true"), "the console to see the alert service");
+
+        Alert raised = alerts.raise(new AlertRequest(AlertKind.INACTIVITY, "web-test", "", "Bathroom <b>1</b>",
+                Instant.parse("2026-11-25T14:00:00Z"), "TinySEP: no activity in Bathroom <b>1</b> since 13:15",
+                "Inactivity Recognition raised an alert."));
+        String list = call("GET", "/api/alerts", null, caregiver, false).body();
+        assertTrue(list, list.contains("\"id\":\"" + raised.id() + "\"") && list.contains("\"state\":\"OPEN\""));
+        assertTrue("user text stays text in JSON: " + list, list.contains("Bathroom \\u003cb\\u003e1")
+                || list.contains("Bathroom <b>1"));
+
+        String ack = "/api/alerts/" + raised.id() + "/acknowledge";
+        assertEquals(401, call("POST", ack, null, null, false).statusCode());
+        assertEquals(403, call("POST", ack, null, caregiver, false).statusCode());
+        assertEquals(404, call("POST", "/api/alerts/no-such-alert/acknowledge", null, caregiver, true)
+                .statusCode());
+        assertEquals(400, call("POST", "/api/alerts/a%20b/acknowledge", null, caregiver, true).statusCode());
+        HttpResponse<String> done = call("POST", ack, null, caregiver, true);
+        assertEquals(done.body(), 200, done.statusCode());
+        Alert after = alerts.alert(raised.id()).orElseThrow();
+        assertEquals(AlertState.ACKNOWLEDGED, after.state());
+        assertEquals("caregiver (web console)", after.closedBy());
+        HttpResponse<String> again = call("POST", ack, null, caregiver, true);
+        assertEquals(again.body(), 409, again.statusCode());
+        assertTrue(call("GET", "/api/alerts", null, caregiver, false).body().contains("\"alerts\":[]"));
+    }
+}
