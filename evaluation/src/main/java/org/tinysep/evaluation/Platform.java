@@ -70,7 +70,11 @@ final class Platform implements AutoCloseable {
         }
         int amica = freeUdpPort();
         int sync = freeUdpPort();
-        write(etc, "org.tinysep.amica.busradio.udp", "port=" + amica + "\nbindAddress=127.0.0.1\n");
+        // a recording carries changes only; the replayed nodes add a keep-alive a minute, not the thesis's status
+        // report every 1-2 s that sensor health expects: 600 missed reports (10-20 min without even a keep-alive)
+        // before a node counts as OFFLINE, else every node would flap OFFLINE/ONLINE each minute
+        write(etc, "org.tinysep.amica.busradio.udp", "port=" + amica + "\nbindAddress=127.0.0.1\n"
+                + "silentAfterIntervals=600\n");
         write(etc, "org.tinysep.sunspot.busradio", "udpPort=0\nudpBindAddress=127.0.0.1\n");
         write(etc, "org.apache.felix.http", "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=0\n");
         write(etc, "org.tinysep.timecontroller", "mode=EXTERNAL\nsyncPort=" + sync

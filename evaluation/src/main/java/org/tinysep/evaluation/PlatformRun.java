@@ -61,13 +61,13 @@ final class PlatformRun {
                 results.add(Run.replay(args.toArray(String[]::new)));
             }
             long deadline = System.nanoTime() + MAIL_WAIT_NANOS;
-            while (handedOver(var, before) > smtp.subjects().size() && System.nanoTime() < deadline) {
+            while (handedOver(var, before) > alertMails(smtp.subjects()).size() && System.nanoTime() < deadline) {
                 Thread.sleep(100);
             }
             long drops = org.tinysep.simulator.measure.KernelDrops.at(platform.amicaPort());
             platform.close();
             List<LogEntry> entries = LogEntry.read(var).stream().filter(e -> e.sequence() > before).toList();
-            return new Outcome(entries, smtp.subjects(), results, handedOver(var, before), drops);
+            return new Outcome(entries, alertMails(smtp.subjects()), results, handedOver(var, before), drops);
         }
     }
 
@@ -81,9 +81,19 @@ final class PlatformRun {
     record Segment(List<SensorEvent> events, LocalDate firstDay, LocalDateTime end) {
     }
 
+    /**
+     * @return each alert's first mail (the alert service's repeats, escalations and all clears, and Sensor Health's
+     *         notices, are not alerts)
+     */
+    static List<String> alertMails(List<String> subjects) {
+        return subjects.stream().filter(s -> s.startsWith("TinySEP: no activity")).toList();
+    }
+
+    /** @return the alerts Inactivity Recognition handed on: to the alert service, or without it the Mail Manager */
     private static long handedOver(Path var, long after) throws IOException {
         return LogEntry.read(var).stream()
-                .filter(e -> e.sequence() > after && e.message().startsWith("alert handed to the Mail Manager"))
+                .filter(e -> e.sequence() > after && (e.message().startsWith("alert handed to the Mail Manager")
+                        || e.message().startsWith("alert handed to the alert service")))
                 .count();
     }
 
@@ -91,7 +101,7 @@ final class PlatformRun {
      * What one run produced.
      *
      * @param entries    the event-log entries this run wrote
-     * @param mails      subjects of the mails the SMTP sink received
+     * @param mails      subjects of the alert mails the SMTP sink received (each alert's first)
      * @param replays    the replays' results (their virtual-time placement)
      * @param handedOver alerts the platform handed to its Mail Manager (event log)
      * @param kernelDrops datagrams the kernel dropped at the platform's AmICA radio socket (-1: not measurable)

@@ -40,7 +40,7 @@ final class Report {
         row(b, rs, "UNOCCUPIED vs labelled Leaving: precision", r -> f3(r.test().occupancy().precision()));
         row(b, rs, "at-home time not watched (blind)", r -> String.format(Locale.ROOT, "%.1f %%",
                 100 * r.test().blindShare()));
-        row(b, rs, "test-half run: alerts in the test half / alerts handed to the Mail Manager / mails at the SMTP "
+        row(b, rs, "test-half run: alerts in the test half / alerts handed on (alert service or Mail Manager) / alert mails at the SMTP "
                 + "sink (both incl. the restart's, below)", r -> (r.test().alertsDay() + r.test().alertsNight()) + " / "
                 + r.handedOver() + " / " + r.mails());
         row(b, rs, "datagrams the kernel dropped at the radio (all runs)", r -> r.kernelDrops() < 0 ? "n/a"

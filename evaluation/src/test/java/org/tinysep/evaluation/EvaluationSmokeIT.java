@@ -42,7 +42,7 @@ class EvaluationSmokeIT {
             double recall = t.occupancy().recall();
             assertTrue(Double.isNaN(recall) || recall >= 0 && recall <= 1, t.toString());
             assertTrue(r.handedOver() >= t.alertsDay() + t.alertsNight(), "every test-half alert handed over: " + r);
-            assertEquals(r.handedOver(), r.mails(), "every alert handed to the Mail Manager reached the SMTP sink");
+            assertEquals(r.handedOver(), r.mails(), "every alert handed on reached the SMTP sink as its first mail");
             assertTrue(!r.testRun().entries().isEmpty(), "the platform wrote its event log");
         }
     }

@@ -120,7 +120,7 @@ class KillRestartIT {
                     + " (Inactivity Recognition was not running from "), alert);
             assertTrue(alert.contains("; this alert is late)"), alert);
             System.out.println("after an outage past the deadline (due " + due + "): " + alert);
-            assertTrue(p.command("tinysep:log 300").contains("alert handed to the Mail Manager"));
+            assertTrue(p.command("tinysep:log 300").contains("alert handed to the alert service"));
         }
     }
 

@@ -26,7 +26,7 @@ final class HelpCall {
     static final String SOURCE = "inactivity";
 
     /** What became of a call. */
-    enum Outcome { HANDED_OVER, ALREADY_HANDED_OVER, NO_MAIL_MANAGER }
+    enum Outcome { HANDED_OVER, HANDED_TO_ALERT_SERVICE, ALREADY_HANDED_OVER, NO_MAIL_MANAGER }
 
     private final AlertMail words;
     private final Map<String, MailManagerProvider> mailers = new ConcurrentHashMap<>();
@@ -34,6 +34,8 @@ final class HelpCall {
     /** When the alert handed over last was due (kept in the backup), or null. */
     private volatile Instant handedOverDue;
     private volatile Outage outage;
+    /** Whether the last hand-over went to the alert service. */
+    private volatile boolean toService;
 
     HelpCall(AlertMail words) {
         this.words = words;
@@ -53,10 +55,11 @@ final class HelpCall {
         if (alert.equals(sent) || alert.raisedAt().equals(handedOverDue)) {
             return Outcome.ALREADY_HANDED_OVER;
         }
-        if (toAlertService(alert)) {
+        toService = toAlertService(alert);
+        if (toService) {
             sent = alert;
             handedOverDue = alert.raisedAt();
-            return Outcome.HANDED_OVER;
+            return Outcome.HANDED_TO_ALERT_SERVICE;
         }
         MailManagerProvider m = mailers.values().stream().findFirst().orElse(null);
         if (m == null) {
@@ -91,6 +94,13 @@ final class HelpCall {
         } catch (RuntimeException e) { // stopping, or the alert service failed: the Mail Manager, if any, takes it
             return false;
         }
+    }
+
+    /** @return for the event log: to whom the last call handed {@code alert}, and its subject */
+    String outcomeWords(InactivityAlert alert) {
+        return (toService ? "alert handed to the alert service (it tells the contacts, repeats and escalates until "
+                + "someone acknowledges): " : "alert handed to the Mail Manager (it queues, sends and logs the "
+                + "delivery): ") + subject(alert);
     }
 
     /** @return the alert's subject; an alert that fell due while nothing ran says it is late */

@@ -225,16 +225,15 @@ final class InactivityDevice extends AbstractDevice
         });
     }
 
-    /** Sends the current alert once, as soon as a Mail Manager is there. */
+    /** Hands the current alert on once, as soon as the alert service or a Mail Manager is there. */
     private void mailPendingAlert() {
         Optional<InactivityAlert> a = alert();
         if (a.isEmpty()) {
             return;
         }
         switch (help.call(a.get())) {
-            case HANDED_OVER -> {
-                event("alert handed to the Mail Manager (it queues, sends and logs the delivery): "
-                        + help.subject(a.get()));
+            case HANDED_OVER, HANDED_TO_ALERT_SERVICE -> {
+                event(help.outcomeWords(a.get()));
                 status(DeviceStatus.State.ONLINE, "");
                 saveBackup(); // not handed over twice after a restart
             }
