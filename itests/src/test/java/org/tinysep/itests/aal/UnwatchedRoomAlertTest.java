@@ -100,6 +100,11 @@ public class UnwatchedRoomAlertTest extends AalTestSupport {
             String since = HH_MM.format(health.unmonitoredRooms().stream()
                     .filter(r -> r.roomName().equals("Bathroom")).findFirst().orElseThrow().since());
             assertTrue(body, body.contains("Could not be watched: Bathroom (no sensor heard since " + since + ")"));
+            Device flat = awaitService(Device.class, "(" + DeviceProperties.DRIVER_NAME + "=FlatOccupancy)", TIMEOUT);
+            String unmonitored = flat.parameters().stream().filter(p -> p.key().equals("unmonitoredRooms"))
+                    .map(p -> p.value()).findFirst().orElse("");
+            assertTrue("Flat Occupancy says which room cannot be heard: " + unmonitored,
+                    unmonitored.startsWith("Bathroom (no sensor heard since "));
             assertTrue(body, !body.contains("Could not be watched: Bathroom (no sensor heard since " + since
                     + "), Kitchen"));
         }

@@ -41,6 +41,7 @@ public class WebBrowserTest extends WebTestSupport {
     protected List<String> applications() {
         List<String> all = new ArrayList<>(super.applications());
         all.remove(WINDOW);
+        all.add("org.tinysep.alerts");
         return all;
     }
 
@@ -194,8 +195,21 @@ public class WebBrowserTest extends WebTestSupport {
                         WAIT, "the last activity's room");
                 browser.waitFor("document.querySelectorAll('#timeline-svg rect.slot').length > 0 && document.querySelectorAll('#timeline-svg .room-label').length === 4",
                         WAIT, "the activity plot of the last 24 hours");
-                browser.waitFor("document.getElementById('alert-service').textContent.startsWith('no alert service')"
-                        + " && document.getElementById('inactivity-alert') !== null", WAIT, "the alerts section without an alert service");
+                // an open alert from the alert service, acknowledged with the page's button
+                org.tinysep.api.alert.AlertService alertService = awaitService(
+                        org.tinysep.api.alert.AlertService.class, null, TIMEOUT);
+                org.tinysep.api.alert.Alert open = alertService.raise(new org.tinysep.api.alert.AlertRequest(
+                        org.tinysep.api.alert.AlertKind.INACTIVITY, "browser-test", "", "Kitchen",
+                        java.time.Instant.parse("2026-11-25T14:00:00Z"),
+                        "TinySEP: no activity in Kitchen since 13:00", "Inactivity Recognition raised an alert."));
+                browser.waitFor("document.getElementById('alert-service').textContent === 'Open alerts:'"
+                        + " && document.querySelector('button.acknowledge') !== null"
+                        + " && document.getElementById('inactivity-alert') !== null", WAIT, "the open alert with its button");
+                browser.eval("(document.querySelector('button.acknowledge').click(), 1)");
+                await(WAIT, () -> alertService.alert(open.id()).orElseThrow().state()
+                        == org.tinysep.api.alert.AlertState.ACKNOWLEDGED, "the alert acknowledged from the page");
+                browser.waitFor("document.querySelector('button.acknowledge') === null", WAIT,
+                        "the acknowledged alert gone from the open ones");
                 browser.eval("(document.querySelector('input[name=\"days\"][value=\"7\"]').click(), 1)");
                 browser.waitFor("document.getElementById('timeline').dataset.slots === '84' && document.querySelectorAll('#timeline-svg rect.slot').length > 0",
                         WAIT, "the activity plot of the last 7 days");

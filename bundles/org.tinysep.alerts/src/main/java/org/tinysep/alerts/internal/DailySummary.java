@@ -7,6 +7,8 @@ import java.util.List;
 import org.osgi.framework.BundleContext;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.device.Device;
+import org.tinysep.api.health.SensorHealth;
+import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.device.DeviceStatus;
 
 /**
@@ -19,12 +21,15 @@ final class DailySummary implements AutoCloseable {
 
     private final AlertSettings settings;
     private final ServiceTracker<Device, Device> devices;
+    private final ServiceTracker<SensorHealthProvider, SensorHealthProvider> health;
     private final SummaryText text;
 
     DailySummary(BundleContext context, AlertSettings settings, java.nio.file.Path stateFolder) {
         this.settings = settings;
         this.devices = new ServiceTracker<>(context, Device.class, null);
         this.devices.open();
+        this.health = new ServiceTracker<>(context, SensorHealthProvider.class, null);
+        this.health.open();
         this.text = new SummaryText(new Words(settings.zone()), stateFolder);
     }
 
@@ -55,7 +60,7 @@ final class DailySummary implements AutoCloseable {
         ZonedDateTime due = today.atTime(settings.summaryTime()).atZone(settings.zone());
         boolean late = local.isAfter(due.plusMinutes(5));
         var mail = notifier.sendPlain(text.subject(today, book.open().size(), offline.size()),
-                text.body(now, due.toInstant(), late, book.open(), offline));
+                text.body(now, due.toInstant(), late, book.open(), offline, lowBatteries()));
         if (mail.isPresent()) {
             book.lastSummary(today); // saved: one summary per day, also across restarts
             notifier.events().accept("daily summary sent to the Mail Manager's recipients" + (late
@@ -66,6 +71,20 @@ final class DailySummary implements AutoCloseable {
 
     @Override
     public void close() {
+        health.close();
         devices.close();
+    }
+
+    /** @return Sensor Health's nodes with a low battery, or null when Sensor Health is not running */
+    private List<SensorHealth> lowBatteries() {
+        SensorHealthProvider h = health.getService();
+        if (h == null) {
+            return null;
+        }
+        try {
+            return h.sensors().stream().filter(s -> s.node().batteryLow()).toList();
+        } catch (RuntimeException e) { // Sensor Health going away: the summary still goes out
+            return null;
+        }
     }
 }

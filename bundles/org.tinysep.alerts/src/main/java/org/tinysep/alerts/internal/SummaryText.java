@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.alert.Alert;
 import org.tinysep.api.device.Device;
+import org.tinysep.api.health.SensorHealth;
 
 /** The words of the daily summary: open alerts, devices offline or failing, disk use of the state folder. */
 final class SummaryText {
@@ -30,7 +31,11 @@ final class SummaryText {
                 + " OPEN ALERT(S)") + ", " + (offline == 0 ? "all devices online" : offline + " device(s) offline");
     }
 
-    String body(Instant now, Instant due, boolean late, List<Alert> open, List<Device> offline) {
+    /**
+     * @param lowBatteries the nodes Sensor Health reports with a low battery, or null without Sensor Health
+     */
+    String body(Instant now, Instant due, boolean late, List<Alert> open, List<Device> offline,
+            List<SensorHealth> lowBatteries) {
         StringBuilder b = new StringBuilder("TinySEP is running. This summary comes every day at "
                 + words.time(due) + "; if one does not come, TinySEP may have stopped: please check on it.\n");
         if (late) {
@@ -42,9 +47,15 @@ final class SummaryText {
                 .append(": ").append(a.subject()).append(" (acknowledge: tinysep:ack ").append(a.id()).append(")\n"));
         b.append("\nDevices offline or failing: ").append(offline.isEmpty() ? "none" : offline.size()).append('\n');
         offline.forEach(d -> b.append("  ").append(d.name()).append(": ").append(d.status()).append('\n'));
-        // LOW BATTERIES: to be filled in once the sensor-health API of issue 12 item 1 exists (battery level per
-        // bus device); until then the summary cannot name them.
-        b.append("\nLow batteries: not known yet (this TinySEP version does not read battery levels)\n");
+        if (lowBatteries == null) {
+            b.append("\nLow batteries: not known (Sensor Health, which reads the nodes' battery levels, is not "
+                    + "running)\n");
+        } else {
+            b.append("\nLow batteries: ").append(lowBatteries.isEmpty() ? "none" : lowBatteries.size()).append('\n');
+            lowBatteries.forEach(h -> b.append("  ").append(h.name())
+                    .append(h.roomName() == null ? "" : " in " + h.roomName()).append(": ")
+                    .append(h.node().batteryMillivolts()).append(" mV, replace or recharge it soon\n"));
+        }
         b.append("\nState folder ").append(stateFolder).append(": ").append(disk()).append('\n');
         return b.toString();
     }

@@ -41,6 +41,8 @@ import org.tinysep.device.support.Uids;
 final class FlatOccupancyDevice extends AbstractDevice
         implements FlatOccupancyProvider, MovementListener, DoorListener, WindowListener, PresenceListener {
 
+    /** Sensor Health's unmonitored rooms in words ("Bathroom since 09:12"); empty without Sensor Health. */
+    private volatile java.util.function.Supplier<String> unmonitored = () -> "";
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
@@ -275,6 +277,11 @@ final class FlatOccupancyDevice extends AbstractDevice
         return false;
     }
 
+    /** Where the device reads the rooms that cannot be watched now (the driver's Sensor Health, optional). */
+    void unmonitored(java.util.function.Supplier<String> rooms) {
+        unmonitored = rooms;
+    }
+
     @Override
     protected List<Parameter> moreParameters() {
         synchronized (logic) {
@@ -285,6 +292,8 @@ final class FlatOccupancyDevice extends AbstractDevice
                             "end of the pending leave check"),
                     Parameter.readOnly("someoneHere", String.join(", ", logic.here()),
                             "bed or seat mats that are ON (the flat stays occupied while any is)"),
+                    Parameter.readOnly("unmonitoredRooms", unmonitored.get(), "rooms none of whose sensors can be "
+                            + "heard now (Sensor Health): activity there cannot cancel a leave check"),
                     Parameter.readOnly("leaveTimeoutSeconds", leaveTimeout.toSeconds(),
                             "configured in pid org.tinysep.flatoccupancy"));
         }

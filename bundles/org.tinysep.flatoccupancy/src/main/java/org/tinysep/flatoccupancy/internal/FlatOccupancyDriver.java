@@ -12,6 +12,11 @@ import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
+import org.tinysep.api.health.SensorHealthProvider;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
@@ -39,6 +44,10 @@ public final class FlatOccupancyDriver extends AbstractDriver {
     private final Map<String, WindowProvider> windowsSeen = new ConcurrentHashMap<>();
     private ProviderTracker<PresenceProvider> presences;
     private PlatformTicker ticker;
+
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    private volatile SensorHealthProvider sensorHealth;
 
     public FlatOccupancyDriver() {
         super(NAME);
@@ -101,7 +110,19 @@ public final class FlatOccupancyDriver extends AbstractDriver {
             return all.get(0);
         }
         FlatOccupancyDevice d = addDevice(new FlatOccupancyDevice(context(), leaveTimeout, exitGrace));
+        d.unmonitored(this::unmonitoredRooms);
         windowsSeen.values().forEach(d::watch);
         return d;
+    }
+
+    /** @return e.g. "Bathroom (no sensor heard since 2026-11-25T09:12:00Z)", or "" (all heard, or no Sensor Health) */
+    private String unmonitoredRooms() {
+        SensorHealthProvider h = sensorHealth;
+        try {
+            return h == null ? "" : h.unmonitoredRooms().stream().map(u -> u.roomName() + " (no sensor heard since "
+                    + u.since() + ")").collect(java.util.stream.Collectors.joining(", "));
+        } catch (RuntimeException e) { // Sensor Health going away
+            return "";
+        }
     }
 }
