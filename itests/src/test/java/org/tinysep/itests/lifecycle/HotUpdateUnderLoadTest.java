@@ -67,6 +67,7 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
     private String swapOnce(int run, int port, Bundle movement, ConsumerTaps taps, ExecutorService sender)
             throws Exception {
         MovementFlood flood = new MovementFlood(port, NODES, 40, FRAMES_PER_SECOND, 200_000, 30_000);
+        long kernelBefore = kernelDrops(port);
         flood.keepAlives(60);
         await(TIMEOUT, () -> movementUids().size() == NODES, NODES + " AmicaMovement devices");
         await(TIMEOUT, () -> CONSUMERS.stream().allMatch(c -> consumes(Topology.of(context), c)),
@@ -99,10 +100,12 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
         flood.stop();
         sending.get(30, TimeUnit.SECONDS);
         try {
-            await(TIMEOUT, () -> ledger.radioCount() == flood.sent(), "every frame sent to reach the radio");
+            await(TIMEOUT, () -> ledger.radioCount() + kernelDrops(port) - kernelBefore == flood.sent(),
+                    "every frame sent to reach the radio or be counted as dropped by the kernel");
         } catch (AssertionError e) {
             log.warn("UDP lost {} of {} frames before the radio", flood.sent() - ledger.radioCount(), flood.sent());
         }
+        long kernel = kernelDrops(port) - kernelBefore;
 
         assertEquals("new build active", new Version(0, 1, 100 + run, "swap"), movement.getVersion());
         assertEquals(Bundle.ACTIVE, movement.getState());
@@ -113,18 +116,46 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
         long droppedBefore = dropped.stream().filter(r -> r.nanos() < t0).count();
         String line = String.format(Locale.ROOT, "swap %d: update() %.1f ms, graph back %.1f ms after update(); "
                 + "frames sent %d, received by the radio %d (during the swap %d), delivered to movement consumers %d; "
-                + "dropped %d (before update() %d, during the swap %d, after the swap %d)", run,
+                + "dropped %d (before update() %d, during the swap %d, after the swap %d); dropped by the kernel at the "
+                + "radio's full socket buffer %d", run,
                 (returned - t0) / 1e6, (done - t0) / 1e6, flood.sent(), ledger.radioCount(),
                 ledger.radioBetween(t0, done), ledger.consumerCount(), dropped.size(), droppedBefore,
-                dropped.size() - droppedBefore - droppedAfter, droppedAfter);
+                dropped.size() - droppedBefore - droppedAfter, droppedAfter, kernel);
         log.info(line);
-        assertEquals("UDP: frames sent = frames received by the radio", flood.sent(), ledger.radioCount());
+        // a CPU-starved machine (a CI run beside other work) can overflow the socket buffer before the radio reads:
+        // those frames never reached the platform and are counted by the kernel (/proc/net/udp and udp6); every
+        // frame the radio did receive must still reach its consumers (below)
+        assertEquals("UDP: frames sent = frames received by the radio + dropped by the kernel: " + line,
+                flood.sent(), ledger.radioCount() + kernel);
         assertEquals("frames received after the swap completed but delivered to no consumer: " + line, 0,
                 droppedAfter);
         assertEquals("frames received before update() but not delivered: " + line, 0, droppedBefore);
         assertEquals("frames received during the swap but not delivered (the bus devices hold them for the new "
                 + "AmicaMovement devices): " + line, 0, dropped.size());
         return line;
+    }
+
+    /**
+     * @return datagrams the kernel dropped at the port's full socket buffer so far (the last column of
+     *         /proc/net/udp and udp6, where the JVM's dual-stack sockets are listed), 0 where it cannot tell. The
+     *         simulator's {@code KernelDrops} says the same but is not provisioned in this framework.
+     */
+    private static long kernelDrops(int port) {
+        String local = String.format(Locale.ROOT, ":%04X", port);
+        long drops = 0;
+        for (String table : List.of("/proc/net/udp", "/proc/net/udp6")) {
+            try {
+                for (String line : java.nio.file.Files.readAllLines(java.nio.file.Path.of(table))) {
+                    String[] f = line.trim().split("\\s+");
+                    if (f.length > 12 && f[1].endsWith(local)) {
+                        drops += Long.parseLong(f[f.length - 1]);
+                    }
+                }
+            } catch (java.io.IOException | RuntimeException e) {
+                // not Linux, or the table changed shape: counts as no drops
+            }
+        }
+        return drops;
     }
 
     private static Set<String> minus(Set<String> a, Set<String> b) {
