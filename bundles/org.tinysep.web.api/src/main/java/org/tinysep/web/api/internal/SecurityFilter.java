@@ -62,7 +62,7 @@ public final class SecurityFilter implements Filter {
         }
         if (path.equals("/api/session") && method.equals("POST")) { // logging in: no session yet
             if (!sameOrigin(req)) {
-                deny(resp, 403, "cross-site request refused");
+                deny(req, resp, 403, "cross-site request refused");
                 return;
             }
             chain.doFilter(req, resp);
@@ -71,7 +71,7 @@ public final class SecurityFilter implements Filter {
         Optional<Session> session = security.sessions().find(SessionApi.token(req));
         if (session.isEmpty()) {
             if (api) {
-                deny(resp, 401, "log in first");
+                deny(req, resp, 401, "log in first");
             } else {
                 resp.setStatus(302);
                 resp.setHeader("Location", "/login.html");
@@ -81,12 +81,12 @@ public final class SecurityFilter implements Filter {
         Session s = session.get();
         if (!reads) {
             if (!sameOrigin(req) || !csrfMatches(req.getHeader(CSRF_HEADER), s.csrf())) {
-                deny(resp, 403, "missing or wrong CSRF token (header " + CSRF_HEADER + ")");
+                deny(req, resp, 403, "missing or wrong CSRF token (header " + CSRF_HEADER + ")");
                 return;
             }
             boolean logout = path.equals("/api/session") && method.equals("DELETE");
             if (s.role() != Role.INSTALLER && !logout && !caregiverMay(method, path)) {
-                deny(resp, 403, "the " + s.role().id() + " may look but not change anything: log in as installer");
+                deny(req, resp, 403, "the " + s.role().id() + " may look but not change anything: log in as installer");
                 return;
             }
         }
@@ -122,7 +122,24 @@ public final class SecurityFilter implements Filter {
                 expected.getBytes(StandardCharsets.UTF_8));
     }
 
-    private static void deny(HttpServletResponse resp, int status, String message) throws IOException {
+    private static void deny(HttpServletRequest req, HttpServletResponse resp, int status, String message)
+            throws IOException {
+        drain(req);
         ApiServlet.send(resp, status, Map.of("error", message));
+    }
+
+    /**
+     * Reads and drops a refused request's body (up to 16 MiB): a client still writing it, e.g. a jar upload, then
+     * reads the refusal instead of meeting a closed connection ("Broken pipe", seen once in a CI-like run).
+     */
+    private static void drain(HttpServletRequest req) {
+        long length = req.getContentLengthLong();
+        if (length <= 0 || length > (16L << 20)) {
+            return;
+        }
+        try {
+            req.getInputStream().transferTo(java.io.OutputStream.nullOutputStream());
+        } catch (IOException | RuntimeException e) { // the client gave up: nothing to answer
+        }
     }
 }
