@@ -41,7 +41,10 @@ import org.tinysep.device.support.Uids;
 final class FlatOccupancyDevice extends AbstractDevice
         implements FlatOccupancyProvider, MovementListener, DoorListener, WindowListener, PresenceListener {
 
-    /** Sensor Health's unmonitored rooms in words ("Bathroom since 09:12"); empty without Sensor Health. */
+    /**
+     * Sensor Health's unmonitored rooms in words, e.g. "Bathroom (no sensor heard since 2026-11-25T09:12:00Z)";
+     * empty without Sensor Health.
+     */
     private volatile java.util.function.Supplier<String> unmonitored = () -> "";
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
