@@ -1,5 +1,6 @@
 'use strict';
 // The caregiver view: is the flat occupied, where and when the last activity was, the inactivity watch, alerts,
+// sensors offline or with a low battery,
 // per room its activity over the last 24 h or 7 days (a plot) and its last activity.
 function ago(iso, now) {
   const minutes = Math.round((new Date(now) - new Date(iso)) / 60000);
@@ -82,6 +83,19 @@ async function alerts() {
   }
 }
 
+// Sensors (the Sensor Health service, optional): rooms nobody can watch now, each sensor offline and each low
+// battery, in plain words ("The Bathroom has no working motion sensor since 14:02: a fall … cannot be noticed").
+async function sensors() {
+  const s = await Tiny.api('GET', 'caregiver/sensors');
+  document.getElementById('sensor-health').textContent = s.message;
+  const list = Tiny.clear(document.getElementById('sensor-problems'));
+  const line = (cls, x, withSince) => list.append(Tiny.el('li', {class: cls}, x.summary
+    + (withSince && x.since ? ' since ' + Tiny.time(x.since) : '') + ': ' + x.meaning + '.'));
+  for (const r of s.unmonitored) line('error unmonitored', r, true);
+  for (const o of s.offline) line('error offline', o, true);
+  for (const b of s.lowBattery) line('warning low-battery', b, false);
+}
+
 // The activity timeline: one row per room, one bar per slot (30 min over 24 h, 2 h over 7 days), the bar's height
 // the number of movement/door/window reports in that slot, drawn as SVG.
 const SVG_NS = 'http://www.w3.org/2000/svg';
@@ -134,9 +148,9 @@ async function init() {
   try {
     await Tiny.start('caregiver.html');
     await refresh();
-    await Promise.all([alerts(), timeline()]);
+    await Promise.all([alerts(), sensors(), timeline()]);
     for (const radio of document.querySelectorAll('input[name="days"]')) radio.addEventListener('change', () => timeline().catch(() => {}));
-    setInterval(() => Promise.all([refresh(), alerts(), timeline()]).catch(() => {}), 10000);
+    setInterval(() => Promise.all([refresh(), alerts(), sensors(), timeline()]).catch(() => {}), 10000);
   } catch (e) {
     Tiny.fail('caregiver-box', e);
   }

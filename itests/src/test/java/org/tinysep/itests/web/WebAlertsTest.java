@@ -7,6 +7,10 @@ import java.net.http.HttpResponse;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.itests.AmicaNode;
 import org.junit.Before;
 import org.junit.Test;
 import org.junit.runner.RunWith;
@@ -22,7 +26,9 @@ import org.tinysep.api.alert.AlertState;
 /**
  * The console's alerts over real HTTP with the real alert service (issues 12.3 and 13): an open alert is listed for
  * the caregiver, who acknowledges it (the service records who); acknowledging it again is refused (409) in words,
- * an unknown id is 404, a bad id 400; no CSRF token 403, no login 401.
+ * an unknown id is 404, a bad id 400; no CSRF token 403, no login 401. With the Sensor Health service (issue 13,
+ * caregiver view): a movement node in the Bathroom reporting a low battery, then falling silent, shows up in
+ * {@code GET /api/caregiver/sensors} in plain words (low battery, offline, the Bathroom unmonitored).
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
@@ -32,7 +38,16 @@ public class WebAlertsTest extends WebTestSupport {
     protected List<String> applications() {
         List<String> all = new ArrayList<>(super.applications());
         all.add("org.tinysep.alerts");
+        all.add("org.tinysep.sensorhealth");
         return all;
+    }
+
+    @Override
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = super.initialConfigurations();
+        // a movement node promises a report every 2 s: OFFLINE after 3 missed reports (6 s of silence)
+        configs.put(UDP_PID, Map.of("port", "0", "bindAddress", "127.0.0.1", "silentAfterIntervals", "3"));
+        return configs;
     }
 
     @Before
@@ -69,5 +84,37 @@ public class WebAlertsTest extends WebTestSupport {
         HttpResponse<String> again = call("POST", ack, null, caregiver, true);
         assertEquals(again.body(), 409, again.statusCode());
         assertTrue(call("GET", "/api/alerts", null, caregiver, false).body().contains("\"alerts\":[]"));
+    }
+
+    @Test
+    public void theCaregiverSeesOfflineSensorsLowBatteriesAndUnmonitoredRooms() throws Exception {
+        Login caregiver = login("caregiver", CAREGIVER_PASSWORD);
+        assertEquals(401, call("GET", "/api/caregiver/sensors", null, null, false).statusCode());
+        await(TIMEOUT, () -> call("GET", "/api/caregiver/sensors", null, caregiver, false).body()
+                .startsWith("{\"sensorHealth\":true"), "the console to see the sensor health service");
+        shell("tinysep:room-add Bathroom Bathroom");
+        try (AmicaNode node = new AmicaNode(1, 21, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT)) {
+            node.keepAlive();
+            String movement = awaitDevice(caregiver, "AmicaMovement", "1.21");
+            shell("tinysep:set " + movement + " room Bathroom");
+            // two AA cells near empty (the bus radio's lowBatteryMillivolts is 2200)
+            node.send(new KeepAlive(300, 2150, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)), 4242));
+            await(TIMEOUT, () -> call("GET", "/api/caregiver/sensors", null, caregiver, false).body()
+                    .contains("in the Bathroom is low (2150 mV): replace or recharge it soon"), "the low battery");
+            // then the node falls silent
+            await(TIMEOUT, () -> call("GET", "/api/caregiver/sensors", null, caregiver, false).body()
+                    .contains("\"unmonitored\":[{"), "the Bathroom unmonitored");
+            String sensors = call("GET", "/api/caregiver/sensors", null, caregiver, false).body();
+            assertTrue(sensors, sensors.contains("\"summary\":\"The Bathroom has no working motion sensor\""));
+            assertTrue(sensors, sensors.contains("a fall or a long stillness there cannot be noticed"));
+            assertTrue(sensors, sensors.contains("\"offline\":[{\"deviceUid\":"));
+            assertTrue(sensors, sensors.contains("(node 1.21) in the Bathroom has been silent\""));
+            assertTrue(sensors, sensors.contains("\"since\":\"20"));
+            assertTrue(sensors, sensors.contains("the Bathroom has no working sensor now"));
+
+            node.keepAlive(); // reports again: no longer offline, the room watched again
+            await(TIMEOUT, () -> call("GET", "/api/caregiver/sensors", null, caregiver, false).body()
+                    .contains("\"unmonitored\":[],\"offline\":[]"), "the node back online");
+        }
     }
 }

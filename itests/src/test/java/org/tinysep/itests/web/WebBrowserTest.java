@@ -141,6 +141,8 @@ public class WebBrowserTest extends WebTestSupport {
                 browser.waitFor("document.querySelectorAll('#applications tr[data-bsn]').length >= 5 && !document.getElementById('upload').hidden",
                         WAIT, "the drivers list with its upload form");
                 assertEquals("false", browser.eval("document.querySelector('#applications tr[data-bsn=\"" + WINDOW + "\"]') !== null"));
+                assertEquals("Pax Exam's probe is infrastructure, not an application", "0",
+                        browser.eval("document.querySelectorAll('#applications tr[data-bsn^=\"PAXEXAM\"]').length"));
                 browser.setFile("#jar", jar);
                 browser.eval("(document.getElementById('upload-button').click(), 1)");
                 browser.waitFor("document.getElementById('message').textContent.includes('" + WINDOW + "')", WAIT, "the upload's answer");
@@ -195,6 +197,8 @@ public class WebBrowserTest extends WebTestSupport {
                         WAIT, "the last activity's room");
                 browser.waitFor("document.querySelectorAll('#timeline-svg rect.slot').length > 0 && document.querySelectorAll('#timeline-svg .room-label').length === 4",
                         WAIT, "the activity plot of the last 24 hours");
+                browser.waitFor("document.getElementById('sensor-health').textContent.startsWith('no sensor health service: the Sensor"
+                        + " Health bundle (org.tinysep.sensorhealth) is not running')", WAIT, "the sensors section without Sensor Health");
                 // an open alert from the alert service, acknowledged with the page's button
                 org.tinysep.api.alert.AlertService alertService = awaitService(
                         org.tinysep.api.alert.AlertService.class, null, TIMEOUT);

@@ -42,6 +42,19 @@ public class WebConsoleApiTest extends WebTestSupport {
         setPasswords();
     }
 
+    /** Pax Exam's probe bundle runs at the application level; the drivers list leaves it out as infrastructure. */
+    @Test
+    public void theDriversListLeavesOutTheTestProbe() {
+        Login installer = login("installer", INSTALLER_PASSWORD);
+        String all = call("GET", "/api/applications?all=true", null, installer, false).body();
+        assertTrue("the probe is at the application level: " + all, all.matches(
+                "(?s).*\\{\"symbolicName\":\"PAXEXAM-PROBE[^{]*\"infrastructure\":true.*"));
+        String apps = call("GET", "/api/applications", null, installer, false).body();
+        assertFalse(apps, apps.contains("PAXEXAM"));
+        assertTrue(apps, apps.contains("\"symbolicName\":\"org.tinysep.amica.protocol\""));
+        assertFalse(apps, apps.contains("\"infrastructure\""));
+    }
+
     @Test
     public void anApplicationIsUploadedUpdatedSwitchedAndUninstalled() {
         Login installer = login("installer", INSTALLER_PASSWORD);
@@ -199,5 +212,13 @@ public class WebConsoleApiTest extends WebTestSupport {
         assertTrue(ack.body(), ack.body().contains("no alert service"));
         assertEquals(400, call("POST", "/api/alerts/a%20b/acknowledge", null, installer, true).statusCode());
         assertEquals(403, call("POST", "/api/alerts/a-1/dismiss", null, caregiver, true).statusCode());
+
+        // no Sensor Health bundle here: the caregiver's sensor list says so plainly
+        HttpResponse<String> sensors = call("GET", "/api/caregiver/sensors", null, caregiver, false);
+        assertEquals(200, sensors.statusCode());
+        assertTrue(sensors.body(), sensors.body().startsWith("{\"sensorHealth\":false,\"message\":\"no sensor health "
+                + "service: the Sensor Health bundle (org.tinysep.sensorhealth) is not running"));
+        assertEquals(401, call("GET", "/api/caregiver/sensors", null, null, false).statusCode());
+        assertEquals("read only", 404, call("POST", "/api/caregiver/sensors", null, installer, true).statusCode());
     }
 }

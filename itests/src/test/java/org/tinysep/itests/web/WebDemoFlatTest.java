@@ -21,8 +21,11 @@ import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
+import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
+import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.simulator.cli.Run;
 
@@ -33,6 +36,10 @@ import org.tinysep.simulator.cli.Run;
  * {@code target/web-demo-screenshots/}. With {@code -Dtinysep.web.screenshots=docs} (or the environment variable
  * {@code TINYSEP_WEB_SCREENSHOTS=docs}) the pictures also replace {@code docs/images/web-*.png}; CI never asks, so
  * it never rewrites files. Measures the event log page's weight and time to first render with the demo's history.
+ * As in the distribution, the alert service and Sensor Health run: the bathroom alert has its Acknowledge button,
+ * and the caregiver view lists the sensors in trouble: the Study's motion sensor, whose battery runs empty at 14:30
+ * (a line added to demo-day: the Study is then unmonitored), and a window sensor in the Bathroom (node 1.21, sent by
+ * the test) whose last keep-alive reported a low battery before it fell silent.
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
@@ -40,6 +47,16 @@ public class WebDemoFlatTest extends WebTestSupport {
 
     private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
     private static final Duration WAIT = Duration.ofSeconds(60);
+    /** A window sensor the simulator does not play: it reports a low battery once, then falls silent. */
+    private static final String DYING_NODE = "1.21";
+
+    @Override
+    protected List<String> applications() {
+        List<String> all = new ArrayList<>(super.applications());
+        all.add("org.tinysep.alerts");
+        all.add("org.tinysep.sensorhealth");
+        return all;
+    }
 
     @Override
     protected List<Option> options() {
@@ -76,7 +93,16 @@ public class WebDemoFlatTest extends WebTestSupport {
             }
             entries.add(f[2].strip() + "=" + f[4].strip());
         }
+        entries.add(DYING_NODE + "=Bathroom");
         return String.join(", ", entries);
+    }
+
+    /** demo-day with the Study's motion sensor's battery running empty at 14:30 (so the Study is unmonitored). */
+    private static Path scenario() throws IOException {
+        Path file = Files.createTempDirectory("tinysep-web-demo-scenario-").resolve("demo-day-battery.txt");
+        String demo = Files.readString(FLAT_A.resolve("..").resolve("..").resolve("scenarios").resolve("demo-day.txt"));
+        Files.writeString(file, demo + "\n14:30 battery study-motion off    # the web console test: the Study unmonitored\n");
+        return file;
     }
 
     private int syncPort() {
@@ -90,10 +116,12 @@ public class WebDemoFlatTest extends WebTestSupport {
         }
     }
 
+    private Path scenarioFile;
+
     private void simulate(ExecutorService executor, String from, String until) throws Exception {
         List<String> args = new ArrayList<>(List.of("--lockstep", "--amica-port", Integer.toString(udpPortOf("BusRadioAmicaUdp")),
                 "--sunspot-port", Integer.toString(udpPortOf("BusRadioSunSpot")), "--sync-port", Integer.toString(syncPort()),
-                "--sync-key", TestSyncKey.file().toString(), "--flat", "flat-a", "--scenario", "demo-day", "--seed", "1",
+                "--sync-key", TestSyncKey.file().toString(), "--flat", "flat-a", "--scenario", scenarioFile.toString(), "--seed", "1",
                 "--progress", "600", "--from", from, "--until", until));
         executor.submit(() -> {
             Run.simulate(args.toArray(new String[0]));
@@ -107,10 +135,13 @@ public class WebDemoFlatTest extends WebTestSupport {
         String base = base();
         Login api = login("installer", INSTALLER_PASSWORD);
         ExecutorService executor = Executors.newSingleThreadExecutor();
-        try {
+        scenarioFile = scenario();
+        try (AmicaNode dying = new AmicaNode(1, 21, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.WINDOW)) {
             simulate(executor, "06:00", "06:05");
             await(WAIT, () -> call("GET", "/api/devices", null, api, false).body().split("\"nodeAddress\":\"[0-9]").length > 20,
                     "flat A's AmICA devices");
+            dying.send(new KeepAlive(7200, 2150, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.WINDOW)), 4242));
+            awaitDevice(api, "AmicaWindow", DYING_NODE);
             simulate(executor, "06:05", "15:00");
             await(WAIT, () -> call("GET", "/api/caregiver", null, api, false).body().contains("\"state\":\"ALERT\""),
                     "Inactivity Recognition's bathroom alert");
@@ -155,7 +186,17 @@ public class WebDemoFlatTest extends WebTestSupport {
                 shot(browser, "packets");
                 step = "caregiver view";
                 page(browser, base, "caregiver.html", "document.querySelectorAll('#timeline-svg rect.slot').length > 10"
-                        + " && document.getElementById('inactivity-alert').textContent.includes('Bathroom')", "the activity plot and the open alert");
+                        + " && document.getElementById('inactivity-alert').textContent.includes('Bathroom')"
+                        + " && document.querySelector('#alert-list button.acknowledge') !== null"
+                        + " && Array.from(document.querySelectorAll('#sensor-problems li.unmonitored')).some(l => l.textContent"
+                        + ".startsWith('The Study has no working motion sensor since '))"
+                        + " && Array.from(document.querySelectorAll('#sensor-problems li.offline')).some(l => l.textContent"
+                        + ".includes('(node 1.18) in the Study has been silent since'))"
+                        + " && Array.from(document.querySelectorAll('#sensor-problems li.offline')).some(l => l.textContent"
+                        + ".includes('(node " + DYING_NODE + ") in the Bathroom has been silent since'))"
+                        + " && Array.from(document.querySelectorAll('#sensor-problems li.low-battery')).some(l => l.textContent"
+                        + ".includes('(node " + DYING_NODE + ") in the Bathroom is low (2150 mV)'))",
+                        "the activity plot, the open alert with its Acknowledge button, the sensors offline and the low battery");
                 shot(browser, "caregiver");
             } catch (AssertionError | RuntimeException e) {
                 Path file = Path.of("target", "web-demo-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();

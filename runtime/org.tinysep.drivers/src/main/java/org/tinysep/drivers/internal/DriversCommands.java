@@ -19,7 +19,8 @@ import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 
 /**
- * {@code tinysep:drivers [reload | enable <bsn> | disable <bsn>]}. Ranked above the device manager's older
+ * {@code tinysep:drivers [reload | enable <bsn> | disable <bsn> | use <bsn> <file>]}. Ranked above the device
+ * manager's older
  * {@code tinysep:drivers} (a table of Driver services), whose content it includes below the list: every driver with
  * its application, device count and figures.
  */
@@ -100,11 +101,23 @@ public final class DriversCommands {
         return String.join("\n", list.setEnabled(bsn, enable));
     }
 
+    /** {@code drivers use <bsn> <file>}: the application is loaded from that file from the next start on. */
+    @Descriptor("loads an application from another jar from the next start on (e.g. an update uploaded in the web"
+            + " console); the running bundle is not touched")
+    public String drivers(@Descriptor("use") String action,
+            @Descriptor("the application's bundle symbolic name") String bsn,
+            @Descriptor("the jar: a path (relative to tinysep.home) or a file: URL") String file) {
+        if (!action.toLowerCase(Locale.ROOT).equals("use")) {
+            throw new IllegalArgumentException("unknown action '" + action + "': use tinysep:drivers use <name> <file>");
+        }
+        return list.use(bsn, file);
+    }
+
     /** {@code drivers} with more arguments than any form takes: the usage. */
     @Descriptor("with too many arguments: prints the usage")
     public String drivers(@Descriptor("anything else") String... wrong) {
         throw new IllegalArgumentException("wrong number of arguments (" + wrong.length + "); usage: tinysep:drivers"
-                + " [reload | enable <bsn> | disable <bsn>] (help tinysep:drivers explains them)");
+                + " [reload | enable <bsn> | disable <bsn> | use <bsn> <file>] (help tinysep:drivers explains them)");
     }
 
     private List<ServiceReference<Driver>> driverReferences() {

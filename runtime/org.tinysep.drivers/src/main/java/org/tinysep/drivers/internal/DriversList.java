@@ -1,6 +1,7 @@
 package org.tinysep.drivers.internal;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -132,6 +133,49 @@ public final class DriversList implements BundleListener {
         report.changes(r.changes());
         return r.changes().isEmpty() ? List.of(bsn + " is already " + (enabled ? "enabled" : "disabled"))
                 : r.changes();
+    }
+
+    /**
+     * Points the entry named {@code bsn} at another file (e.g. the web console's copy of an uploaded update, which
+     * the running bundle already is), or adds an enabled entry for it; nothing is installed or restarted now: from
+     * the next start on the platform loads that file. The file must be a bundle of that symbolic name.
+     *
+     * @return what changed, in words
+     */
+    synchronized String use(String bsn, String file) {
+        Optional<Path> path = locations.file(file).filter(Files::isRegularFile);
+        if (path.isEmpty()) {
+            throw new IllegalArgumentException("no file " + file + ": give the path of a bundle jar");
+        }
+        String name = Seed.symbolicName(path.get());
+        if (!bsn.equals(name)) {
+            throw new IllegalArgumentException(file + " is " + (name == null ? "not a bundle" : "the bundle " + name)
+                    + ", not " + bsn);
+        }
+        String filePath = locations.filePath(path.get().toUri().toString());
+        List<DriverEntry> next = new ArrayList<>();
+        String before = null;
+        for (DriverEntry e : entries) {
+            if (e.symbolicName().equals(bsn)) {
+                before = e.location();
+                next.add(new DriverEntry(filePath, bsn, e.enabled(), e.status()));
+            } else {
+                next.add(e);
+            }
+        }
+        if (before == null) {
+            next.add(new DriverEntry(filePath, bsn, true, ""));
+            long id = bundles.find(bsn, path.get().toUri().toString());
+            if (id >= 0) {
+                reconciler.adopt(bsn, id);
+            }
+        }
+        entries = List.copyOf(next);
+        save();
+        String change = bsn + " is loaded from " + filePath + " from the next start on"
+                + (before == null ? " (added to the list)" : " (was " + before + ")");
+        report.change(change);
+        return change;
     }
 
     @Override

@@ -6,9 +6,11 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.jar.JarFile;
 import java.util.jar.Manifest;
 import java.util.stream.Stream;
+import org.osgi.framework.Version;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -69,7 +71,9 @@ final class Seed {
 
     /**
      * Follows a new build of the distribution: an entry whose file is missing gets the jar of the same symbolic name
-     * in {@code appsDir}, if there is one (e.g. {@code x-0.1.0.jar} became {@code x-0.2.0.jar}).
+     * in {@code appsDir}, if there is one (e.g. {@code x-0.1.0.jar} became {@code x-0.2.0.jar}). An entry pointing
+     * outside {@code appsDir} (an update uploaded in the web console, a shell install) keeps its file unless
+     * {@code appsDir} holds a higher Bundle-Version of it: a newer distribution is never run with an older copy.
      *
      * @return the entries, re-pointed where needed
      */
@@ -85,17 +89,43 @@ final class Seed {
         }
         List<DriverEntry> out = new ArrayList<>();
         for (DriverEntry e : entries) {
-            boolean missing = locations.file(e.location()).map(f -> !Files.isRegularFile(f)).orElse(false);
-            DriverEntry now = !missing || e.symbolicName().isEmpty() ? null : current.stream()
+            Optional<Path> file = locations.file(e.location());
+            boolean missing = file.map(f -> !Files.isRegularFile(f)).orElse(false);
+            DriverEntry now = e.symbolicName().isEmpty() ? null : current.stream()
                     .filter(c -> c.symbolicName().equals(e.symbolicName())).findFirst().orElse(null);
-            if (now != null) {
+            if (now != null && missing) {
                 LOG.info("Drivers list: {} moved from {} to {}", e.key(), e.location(), now.location());
+                out.add(new DriverEntry(now.location(), e.symbolicName(), e.enabled(), e.status()));
+            } else if (now != null && file.isPresent() && !file.get().startsWith(appsDir.toAbsolutePath().normalize())
+                    && newer(locations.file(now.location()).orElseThrow(), file.get())) {
+                LOG.warn("Drivers list: {}: the distribution's {} ({}) is newer than {} ({}), which an upload or a"
+                        + " shell install had put in the list; the distribution's is used from now on (the older"
+                        + " file is left where it is)", e.key(), version(locations.file(now.location()).orElseThrow()),
+                        now.location(), version(file.get()), e.location());
                 out.add(new DriverEntry(now.location(), e.symbolicName(), e.enabled(), e.status()));
             } else {
                 out.add(e);
             }
         }
         return out;
+    }
+
+    /** @return whether jar {@code a}'s Bundle-Version is higher than jar {@code b}'s (unreadable: not newer) */
+    static boolean newer(Path a, Path b) {
+        Version va = version(a);
+        Version vb = version(b);
+        return va != null && vb != null && va.compareTo(vb) > 0;
+    }
+
+    /** @return the jar's Bundle-Version, or null when it is unreadable */
+    static Version version(Path jar) {
+        try (JarFile f = new JarFile(jar.toFile())) {
+            Manifest m = f.getManifest();
+            String v = m == null ? null : m.getMainAttributes().getValue("Bundle-Version");
+            return v == null ? Version.emptyVersion : Version.parseVersion(v.strip());
+        } catch (IOException | IllegalArgumentException e) {
+            return null;
+        }
     }
 
     /** @return the jar's Bundle-SymbolicName without directives, or null when it is no bundle */

@@ -51,6 +51,7 @@ public final class ApiServlet extends HttpServlet {
     private final transient ApplicationsApi applications;
     private final transient TimelineApi timeline;
     private final transient AlertsApi alerts;
+    private final transient SensorsApi sensors;
 
     @Activate
     public ApiServlet(BundleContext context, @Reference WebSecurity security, @Reference(name = "eventLog") EventLog events,
@@ -68,6 +69,7 @@ public final class ApiServlet extends HttpServlet {
                 (web == null ? java.nio.file.Path.of("tinysep-web") : web).resolve("uploads").toAbsolutePath());
         this.timeline = new TimelineApi(platform);
         this.alerts = new AlertsApi(platform);
+        this.sensors = new SensorsApi(platform, java.time.ZoneId.systemDefault());
         NameCache names = new NameCache(platform);
         this.streams = new LiveStreams(
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
@@ -180,6 +182,9 @@ public final class ApiServlet extends HttpServlet {
                 }
                 if (n == 2 && p.get(1).equals("timeline") && method.equals("GET")) {
                     return timeline.timeline(events, now, req.getParameterMap());
+                }
+                if (n == 2 && p.get(1).equals("sensors") && method.equals("GET")) {
+                    return sensors.status(now);
                 }
             }
             default -> {

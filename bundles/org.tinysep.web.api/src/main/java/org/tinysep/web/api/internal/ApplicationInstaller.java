@@ -31,10 +31,13 @@ final class ApplicationInstaller {
     private final BundleContext context;
     private final Path uploads;
     private final BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json;
+    private final DriversListShell list;
 
-    ApplicationInstaller(BundleContext context, Path uploads, BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json) {
+    ApplicationInstaller(BundleContext context, Path uploads, DriversListShell list,
+            BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json) {
         this.context = context;
         this.uploads = uploads;
+        this.list = list;
         this.json = json;
     }
 
@@ -65,12 +68,25 @@ final class ApplicationInstaller {
                 LOG.info("Web console: updated {} to {} ({})", b.getSymbolicName(), b.getVersion(), file);
                 return answer("updated", b, "");
             }
+            // installed from elsewhere (e.g. bundles/5-apps): update the running bundle, keep the jar, and have the
+            // drivers list load the kept jar from the next start on
+            AtomicFiles.write(file, jar.bytes());
             b.update(new ByteArrayInputStream(jar.bytes()));
-            LOG.info("Web console: updated {} to {} from an upload (until restart; listed file {})", b.getSymbolicName(),
-                    b.getVersion(), b.getLocation());
-            return answer("updated", b, "This update lasts until the platform restarts: the drivers list then loads "
-                    + b.getLocation() + " again. To keep it, replace that file, or uninstall the application here and "
-                    + "upload it again.");
+            String kept;
+            try {
+                kept = list.use(b.getSymbolicName(), file);
+            } catch (ApiException e) {
+                LOG.warn("Web console: updated {} to {} from an upload, until restart only: {}", b.getSymbolicName(),
+                        b.getVersion(), e.getMessage());
+                return answer("updated", b, "This update lasts until the platform restarts, because the drivers list "
+                        + "could not be told to keep it (" + e.getMessage() + "); it then loads " + b.getLocation()
+                        + " again.");
+            }
+            LOG.info("Web console: updated {} to {} from an upload, kept in {} ({})", b.getSymbolicName(),
+                    b.getVersion(), file, kept);
+            return answer("updated", b, "Kept: from the next start on the platform loads this upload (" + file
+                    + ") instead of " + b.getLocation() + ". When a later version of the platform brings a newer "
+                    + b.getSymbolicName() + " than this one, the newer one is used.");
         } catch (BundleException e) {
             throw ApiException.badRequest(jar.symbolicName() + " could not be installed or updated: " + e.getMessage());
         } catch (IOException e) {
@@ -82,12 +98,9 @@ final class ApplicationInstaller {
     Map<String, Object> remove(String bsn) {
         Bundle b = changeable(bundle(DriversListShell.checked(bsn))
                 .orElseThrow(() -> ApiException.notFound("no installed application " + bsn)));
-        String location = b.getLocation();
         uninstall(b);
         try {
-            if (location.equals(uploads.resolve(bsn + ".jar").toUri().toString())) {
-                Files.deleteIfExists(uploads.resolve(bsn + ".jar"));
-            }
+            Files.deleteIfExists(uploads.resolve(bsn + ".jar")); // also an update of a bundle from elsewhere
         } catch (IOException e) {
             LOG.warn("Web console: could not delete the uploaded jar of {}: {}", bsn, e.getMessage());
         }

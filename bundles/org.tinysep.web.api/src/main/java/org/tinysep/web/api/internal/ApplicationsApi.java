@@ -33,14 +33,14 @@ final class ApplicationsApi {
         this.platform = platform;
         this.list = new DriversListShell(platform);
         this.uploads = uploads;
-        this.installer = new ApplicationInstaller(context, uploads, this::json);
+        this.installer = new ApplicationInstaller(context, uploads, list, this::json);
     }
 
     /** Routes {@code /api/applications…} ({@code p} = the path's parts, the first being "applications"). */
     Object route(String method, List<String> p, HttpServletRequest req) throws IOException {
         int n = p.size();
         if (n == 1 && method.equals("GET")) {
-            return list();
+            return list("true".equals(req.getParameter("all")));
         }
         if (n == 1 && method.equals("POST")) {
             return installer.upload(JarUpload.read(req));
@@ -57,13 +57,25 @@ final class ApplicationsApi {
         throw ApiException.notFound("no such API call: " + method + " /api/" + String.join("/", p));
     }
 
-    /** GET /api/applications */
-    List<Object> list() {
+    /**
+     * GET /api/applications: without {@code all}, bundles at the application level that are not TinySEP's are left
+     * out unless the drivers list names them, they were uploaded or they register a driver: infrastructure such as a
+     * test harness's probe is not an application. With {@code all} they are listed with {@code infrastructure: true}.
+     */
+    List<Object> list(boolean all) {
         Map<String, DriversListShell.Entry> entries = list.entries();
         List<Object> out = new ArrayList<>();
         for (Bundle b : context.getBundles()) {
             if (b.getSymbolicName() != null && ApplicationInstaller.level(b) >= APP_LEVEL) {
-                out.add(json(b, entries.remove(b.getSymbolicName())));
+                Map<String, Object> m = json(b, entries.remove(b.getSymbolicName()));
+                boolean infrastructure = infrastructure(b.getSymbolicName(), (Boolean) m.get("listed"),
+                        (Boolean) m.get("uploaded"), !((List<?>) m.get("drivers")).isEmpty());
+                if (all) {
+                    m.put("infrastructure", infrastructure);
+                }
+                if (all || !infrastructure) {
+                    out.add(m);
+                }
             }
         }
         for (DriversListShell.Entry e : entries.values()) { // listed, not installed
@@ -79,11 +91,19 @@ final class ApplicationsApi {
             m.put("enabled", e.enabled());
             m.put("listStatus", e.status());
             m.put("drivers", List.of());
+            if (all) {
+                m.put("infrastructure", false);
+            }
             out.add(m);
         }
         out.sort((a, b) -> String.valueOf(((Map<?, ?>) a).get("symbolicName"))
                 .compareToIgnoreCase(String.valueOf(((Map<?, ?>) b).get("symbolicName"))));
         return out;
+    }
+
+    /** @return whether a bundle at the application level is infrastructure rather than an application */
+    static boolean infrastructure(String bsn, boolean listed, boolean uploaded, boolean hasDrivers) {
+        return !listed && !uploaded && !hasDrivers && !bsn.startsWith("org.tinysep.");
     }
 
     /** POST /api/applications/{bsn}/enable or /disable */
@@ -115,7 +135,8 @@ final class ApplicationsApi {
         m.put("bundleId", b.getBundleId());
         m.put("state", state(b.getState()));
         m.put("location", b.getLocation());
-        m.put("uploaded", b.getLocation().startsWith(uploads.toUri().toString()));
+        m.put("uploaded", b.getLocation().startsWith(uploads.toUri().toString())
+                || java.nio.file.Files.isRegularFile(uploads.resolve(b.getSymbolicName() + ".jar")));
         m.put("listed", entry != null);
         m.put("enabled", entry == null ? null : entry.enabled());
         m.put("listStatus", entry == null ? "" : entry.status());

@@ -14,7 +14,7 @@ import org.apache.felix.service.command.CommandSession;
 
 /**
  * The drivers list (bundle {@code org.tinysep.drivers}, thesis 3.4) through its shell commands, the only interface it
- * offers: {@code tinysep:drivers} (read), {@code reload}, {@code enable <bsn>}, {@code disable <bsn>}, run in a
+ * offers: {@code tinysep:drivers} (read), {@code reload}, {@code enable <bsn>}, {@code disable <bsn>}, {@code use <bsn> <file>}, run in a
  * Gogo session of the {@link CommandProcessor} service. Symbolic names are checked against
  * {@value #BSN} before they reach the shell. Without Gogo or the drivers list: 503.
  */
@@ -23,6 +23,7 @@ final class DriversListShell {
     /** What a bundle symbolic name may look like (nothing a shell would interpret). */
     static final String BSN = "[A-Za-z0-9_][A-Za-z0-9_.-]{0,199}";
     private static final Pattern BSN_PATTERN = Pattern.compile(BSN);
+    private static final Pattern FILE_URL = Pattern.compile("file:[A-Za-z0-9/._%~+-]+");
 
     /** One entry of the drivers list as {@code tinysep:drivers} prints it. */
     record Entry(String application, boolean enabled, String status, String file) {
@@ -69,6 +70,19 @@ final class DriversListShell {
     /** {@code tinysep:drivers reload}: @return what changed, line by line */
     List<String> reload() {
         return lines(run("tinysep:drivers reload"));
+    }
+
+    /**
+     * {@code tinysep:drivers use <bsn> <file URL>}: the drivers list loads the application from {@code file} from the
+     * next start on. @return what the list says it did
+     */
+    String use(String bsn, java.nio.file.Path file) {
+        String url = file.toUri().toString();
+        if (!FILE_URL.matcher(url).matches()) {
+            throw ApiException.badRequest("the upload folder's path " + url + " holds characters the shell would"
+                    + " interpret");
+        }
+        return run("tinysep:drivers use " + checked(bsn) + " " + url).strip();
     }
 
     static String checked(String bsn) {
