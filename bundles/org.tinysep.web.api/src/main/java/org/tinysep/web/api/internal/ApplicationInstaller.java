@@ -72,9 +72,8 @@ final class ApplicationInstaller {
             // drivers list load the kept jar from the next start on
             AtomicFiles.write(file, jar.bytes());
             b.update(new ByteArrayInputStream(jar.bytes()));
-            String kept;
             try {
-                kept = list.use(b.getSymbolicName(), file);
+                list.use(b.getSymbolicName(), file);
             } catch (ApiException e) {
                 LOG.warn("Web console: updated {} to {} from an upload, until restart only: {}", b.getSymbolicName(),
                         b.getVersion(), e.getMessage());
@@ -82,8 +81,8 @@ final class ApplicationInstaller {
                         + "could not be told to keep it (" + e.getMessage() + "); it then loads " + b.getLocation()
                         + " again.");
             }
-            LOG.info("Web console: updated {} to {} from an upload, kept in {} ({})", b.getSymbolicName(),
-                    b.getVersion(), file, kept);
+            LOG.info("Web console: updated {} to {} from an upload, kept in {} (the drivers list loads it from the next"
+                    + " start on)", b.getSymbolicName(), b.getVersion(), file);
             return answer("updated", b, "Kept: from the next start on the platform loads this upload (" + file
                     + ") instead of " + b.getLocation() + ". When a later version of the platform brings a newer "
                     + b.getSymbolicName() + " than this one, the newer one is used.");
