@@ -185,7 +185,18 @@ final class Chromium implements AutoCloseable {
     }
 
     void screenshot(Path file) {
-        String answer = command("Page.captureScreenshot", "{\"format\":\"png\",\"captureBeyondViewport\":false}");
+        write(file, command("Page.captureScreenshot", "{\"format\":\"png\",\"captureBeyondViewport\":false}"));
+    }
+
+    /** A picture of the page's top {@code maxHeight} pixels (or the whole page when shorter), the window's width. */
+    void screenshot(Path file, int maxHeight) {
+        int height = Math.min(maxHeight, Integer.parseInt(eval("document.documentElement.scrollHeight")));
+        int width = Integer.parseInt(eval("document.documentElement.clientWidth"));
+        write(file, command("Page.captureScreenshot", "{\"format\":\"png\",\"captureBeyondViewport\":true,"
+                + "\"clip\":{\"x\":0,\"y\":0,\"width\":" + width + ",\"height\":" + height + ",\"scale\":1}}"));
+    }
+
+    private static void write(Path file, String answer) {
         Matcher m = Pattern.compile("\"data\":\"([^\"]+)\"").matcher(answer);
         if (!m.find()) {
             throw new AssertionError("no screenshot data");

@@ -140,9 +140,12 @@ public class WebDemoFlatTest extends WebTestSupport {
             simulate(executor, "06:00", "06:05");
             await(WAIT, () -> call("GET", "/api/devices", null, api, false).body().split("\"nodeAddress\":\"[0-9]").length > 20,
                     "flat A's AmICA devices");
+            // handled at the next tick of the platform's (virtual) clock, i.e. once the simulation goes on
             dying.send(new KeepAlive(7200, 2150, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.WINDOW)), 4242));
-            awaitDevice(api, "AmicaWindow", DYING_NODE);
             simulate(executor, "06:05", "15:00");
+            await(WAIT, () -> call("GET", "/api/devices", null, api, false).body().contains("\"type\":\"AmicaWindow\"")
+                    && call("GET", "/api/devices", null, api, false).body().contains("\"nodeAddress\":\"" + DYING_NODE + "\""),
+                    "the window sensor of node " + DYING_NODE);
             await(WAIT, () -> call("GET", "/api/caregiver", null, api, false).body().contains("\"state\":\"ALERT\""),
                     "Inactivity Recognition's bathroom alert");
         } finally {
@@ -197,7 +200,7 @@ public class WebDemoFlatTest extends WebTestSupport {
                         + " && Array.from(document.querySelectorAll('#sensor-problems li.low-battery')).some(l => l.textContent"
                         + ".includes('(node " + DYING_NODE + ") in the Bathroom is low (2150 mV)'))",
                         "the activity plot, the open alert with its Acknowledge button, the sensors offline and the low battery");
-                shot(browser, "caregiver");
+                shot(browser, "caregiver", 1250); // the alerts and the sensors below the cards
             } catch (AssertionError | RuntimeException e) {
                 Path file = Path.of("target", "web-demo-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
                 try {
@@ -235,15 +238,25 @@ public class WebDemoFlatTest extends WebTestSupport {
     }
 
     private void shot(Chromium browser, String page) throws Exception {
+        shot(browser, page, 0);
+    }
+
+    /** @param height 0: the window; else the page's top that many pixels (at most) */
+    private void shot(Chromium browser, String page, int height) throws Exception {
         browser.waitFor("document.readyState === 'complete'", WAIT, "the page loaded");
-        browser.screenshot(Path.of("target", "web-demo-screenshots", page + ".png").toAbsolutePath());
+        Path file = Path.of("target", "web-demo-screenshots", page + ".png").toAbsolutePath();
+        if (height > 0) {
+            browser.screenshot(file, height);
+        } else {
+            browser.screenshot(file);
+        }
         String wanted = System.getProperty("tinysep.web.screenshots", "");
         if (!wanted.equals("docs")) {
             wanted = System.getenv().getOrDefault("TINYSEP_WEB_SCREENSHOTS", "");
         }
         String docs = System.getProperty("tinysep.docs.images", "");
         if (wanted.equals("docs") && !docs.isEmpty() && !docs.startsWith("${")) {
-            browser.screenshot(Path.of(docs, "web-" + page + ".png"));
+            Files.copy(file, Path.of(docs, "web-" + page + ".png"), StandardCopyOption.REPLACE_EXISTING);
         }
     }
 }
