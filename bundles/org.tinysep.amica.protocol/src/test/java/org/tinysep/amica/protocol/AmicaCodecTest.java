@@ -4,13 +4,14 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.tinysep.amica.protocol.TestBytes.concat;
-import static org.tinysep.amica.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.TestBytes;
 
 class AmicaCodecTest {
 

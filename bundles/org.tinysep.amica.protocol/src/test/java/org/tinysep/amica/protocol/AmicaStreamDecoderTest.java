@@ -7,13 +7,14 @@ import static org.tinysep.amica.protocol.AmicaCodecTest.KEEP_ALIVE_1_17;
 import static org.tinysep.amica.protocol.AmicaCodecTest.LIGHT_40_TO_1_20;
 import static org.tinysep.amica.protocol.AmicaCodecTest.MOVEMENT_1_17;
 import static org.tinysep.amica.protocol.AmicaCodecTest.REED_OPEN_1_18;
-import static org.tinysep.amica.protocol.TestBytes.concat;
-import static org.tinysep.amica.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.TestBytes;
 
 class AmicaStreamDecoderTest {
 

@@ -2,6 +2,7 @@ package org.tinysep.amica.protocol;
 
 import java.util.Arrays;
 import java.util.Random;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /**
  * Random input for the fuzz tests, drawn from a {@link Random} (see {@link Fuzz}): valid frames (Table 3.1

@@ -4,12 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.tinysep.amica.protocol.TestBytes.dec;
-import static org.tinysep.amica.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.dec;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.EnumSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /** Every reject reason is provoked by real input, and every reason reads well in a log. */
 class RejectReasonTest {

@@ -9,13 +9,14 @@ import static org.tinysep.sunspot.protocol.SunSpotCodecTest.MOVEMENT_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.MOVEMENT_V2_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.SPOT_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.TEMPERATURE_5678;
-import static org.tinysep.sunspot.protocol.TestBytes.concat;
-import static org.tinysep.sunspot.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.TestBytes;
 
 class SunSpotStreamDecoderTest {
 

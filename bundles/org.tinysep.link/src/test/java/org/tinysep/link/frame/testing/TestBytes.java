@@ -1,24 +1,24 @@
-package org.tinysep.amica.protocol;
+package org.tinysep.link.frame.testing;
 
 import java.io.ByteArrayOutputStream;
 
-/** Test helpers: byte arrays from hex or decimal text. */
-final class TestBytes {
+/** Test helpers of both protocol families (test jar of org.tinysep.link): byte arrays from hex or decimal text. */
+public final class TestBytes {
 
     private TestBytes() {
     }
 
     /** @param text space-separated hex bytes, e.g. {@code "04 A1 11"} */
-    static byte[] hex(String text) {
+    public static byte[] hex(String text) {
         return parse(text, 16);
     }
 
     /** @param text space-separated decimal bytes, e.g. {@code "4 161 17"} */
-    static byte[] dec(String text) {
+    public static byte[] dec(String text) {
         return parse(text, 10);
     }
 
-    static byte[] concat(byte[]... parts) {
+    public static byte[] concat(byte[]... parts) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         for (byte[] p : parts) {
             out.writeBytes(p);
