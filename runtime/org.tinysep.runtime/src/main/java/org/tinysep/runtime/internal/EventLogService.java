@@ -43,16 +43,14 @@ public final class EventLogService extends LogService<EventEntry> implements Eve
 
     @Activate
     void activate(RuntimeConfig config, BundleContext context) {
-        configure(config::eventCapacity);
-        persist(LogConfig.read(config, context));
+        reconfigure(config::eventCapacity, LogConfig.read(config, context));
         executor = Executors.newSingleThreadExecutor(Threads.named("tinysep-event-log"));
         start(config::eventCapacity, executor, e -> EVENTS.info("{} {} {}", e.kind(), e.origin(), e.message()));
     }
 
     @Modified
     void modified(RuntimeConfig config, BundleContext context) {
-        configure(config::eventCapacity);
-        persist(LogConfig.read(config, context));
+        reconfigure(config::eventCapacity, LogConfig.read(config, context));
     }
 
     @Deactivate
@@ -66,6 +64,7 @@ public final class EventLogService extends LogService<EventEntry> implements Eve
      * Keeps the history in files as {@code settings} say (null: memory only). Called before {@link #start} on
      * activation, it reloads the ring from the files; damaged lines are reported in the log itself.
      */
+    @Override
     void persist(LogSettings settings) {
         long damaged = keep(settings);
         if (damaged > 0) {

@@ -58,12 +58,21 @@ abstract class LogService<E> {
         ring.resize(Capacity.read(capacityKey, capacity, ring.capacity()));
     }
 
+    /** Activation and modification: sizes the ring and keeps the files as configured. */
+    final void reconfigure(IntSupplier capacity, LogSettings settings) {
+        configure(capacity);
+        persist(settings);
+    }
+
+    /** Keeps the history in files as {@code settings} say, reporting damaged lines (see {@link #keep}). */
+    abstract void persist(LogSettings settings);
+
     /**
      * Keeps the history in files as {@code settings} say (null: memory only); the first call reloads the ring.
      *
      * @return how many damaged lines of the files were skipped
      */
-    long keep(LogSettings settings) {
+    final long keep(LogSettings settings) {
         return history.apply(settings);
     }
 

@@ -35,8 +35,7 @@ public final class PacketLogService extends LogService<PacketEntry> implements P
     @Activate
     @Modified
     void configure(RuntimeConfig config, BundleContext context) {
-        configure(config::packetCapacity);
-        persist(LogConfig.read(config, context));
+        reconfigure(config::packetCapacity, LogConfig.read(config, context));
     }
 
     @Deactivate
@@ -45,6 +44,7 @@ public final class PacketLogService extends LogService<PacketEntry> implements P
     }
 
     /** Keeps the history in files as {@code settings} say (null: memory only); the first call reloads the ring. */
+    @Override
     void persist(LogSettings settings) {
         long damaged = keep(settings);
         if (damaged > 0) {
