@@ -20,8 +20,8 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tinysep.serial.support.testing.PtyPeer;
-import org.tinysep.serial.support.testing.SocatPair;
+import org.tinysep.testsupport.serial.PtyPeer;
+import org.tinysep.testsupport.serial.SocatPair;
 
 /** The link against real socat pseudo-terminal pairs: bytes both ways, a vanishing port, reopening by itself. */
 class SerialPortLinkTest {

@@ -35,8 +35,8 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.serial.support.SerialPortLink;
-import org.tinysep.serial.support.testing.PtyPeer;
-import org.tinysep.serial.support.testing.SocatPair;
+import org.tinysep.testsupport.serial.PtyPeer;
+import org.tinysep.testsupport.serial.SocatPair;
 
 /**
  * The serial bus radio without the framework, on a real socat pseudo-terminal pair: frames and garbage written at
