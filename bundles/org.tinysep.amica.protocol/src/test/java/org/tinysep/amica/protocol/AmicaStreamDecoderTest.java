@@ -14,7 +14,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.TestBytes;
+import org.tinysep.link.frame.testing.FrameChecks;
 
 class AmicaStreamDecoderTest {
 
@@ -91,22 +91,10 @@ class AmicaStreamDecoderTest {
         // "01 A1" looks like a header and S = L = 1 (the keep-alive's netgroup byte): the CRC rejects it
         assertEquals("BAD_CHECKSUM 3", expected.get(0));
         assertEquals("BAD_CHECKSUM 12", expected.get(4));
-        for (int i = 0; i <= stream.length; i++) {
-            for (int j = i; j <= stream.length; j++) {
-                RecordingSink r = new RecordingSink();
-                AmicaStreamDecoder d = new AmicaStreamDecoder(r);
-                d.accept(stream, 0, i);
-                d.accept(stream, i, j - i);
-                d.accept(stream, j, stream.length - j);
-                assertEquals(expected, r.events, "split at " + i + " and " + j);
-            }
-        }
-        RecordingSink r = new RecordingSink();
-        AmicaStreamDecoder d = new AmicaStreamDecoder(r);
-        for (int i = 0; i < stream.length; i++) {
-            d.accept(stream, i, 1);
-        }
-        assertEquals(expected, r.events, "one byte at a time");
+        FrameChecks.assertSplitsAlike(stream, expected, () -> {
+            RecordingSink r = new RecordingSink();
+            return new FrameChecks.Feeding(new AmicaStreamDecoder(r)::accept, () -> r.events);
+        });
     }
 
     @Test

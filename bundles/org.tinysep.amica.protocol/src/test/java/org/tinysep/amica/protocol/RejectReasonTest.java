@@ -10,7 +10,6 @@ import static org.tinysep.link.frame.testing.TestBytes.hex;
 import java.util.EnumSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.TestBytes;
 
 /** Every reject reason is provoked by real input, and every reason reads well in a log. */
 class RejectReasonTest {

@@ -11,7 +11,6 @@ import java.util.EnumSet;
 import java.util.HashSet;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.TestBytes;
 
 /** Every reject reason is provoked by real input, and every reason reads well in a log. */
 class RejectReasonTest {

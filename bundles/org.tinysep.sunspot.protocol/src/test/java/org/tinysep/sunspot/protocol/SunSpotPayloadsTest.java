@@ -9,7 +9,6 @@ import static org.tinysep.link.frame.testing.TestBytes.dec;
 import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.TestBytes;
 
 class SunSpotPayloadsTest {
 

@@ -16,7 +16,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.TestBytes;
+import org.tinysep.link.frame.testing.FrameChecks;
 
 class SunSpotStreamDecoderTest {
 
@@ -87,22 +87,10 @@ class SunSpotStreamDecoderTest {
         assertEquals("LENGTH_MISMATCH 3", expected.get(0));
         assertEquals("BAD_CHECKSUM 16", expected.get(4));
         assertEquals(frameOf(MOVEMENT_V2_1234), expected.get(expected.size() - 1));
-        for (int i = 0; i <= stream.length; i++) {
-            for (int j = i; j <= stream.length; j++) {
-                RecordingSink r = new RecordingSink();
-                SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
-                d.accept(stream, 0, i);
-                d.accept(stream, i, j - i);
-                d.accept(stream, j, stream.length - j);
-                assertEquals(expected, r.events, "split at " + i + " and " + j);
-            }
-        }
-        RecordingSink r = new RecordingSink();
-        SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
-        for (int i = 0; i < stream.length; i++) {
-            d.accept(stream, i, 1);
-        }
-        assertEquals(expected, r.events, "one byte at a time");
+        FrameChecks.assertSplitsAlike(stream, expected, () -> {
+            RecordingSink r = new RecordingSink();
+            return new FrameChecks.Feeding(new SunSpotStreamDecoder(r)::accept, () -> r.events);
+        });
     }
 
     @Test
