@@ -2,10 +2,13 @@ package org.tinysep.link.frame.testing;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Random;
+import java.util.function.IntSupplier;
+import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 
 /** Checks both protocol families' tests make of what the families share: the CRC and the stream skeleton. */
@@ -81,5 +84,41 @@ public final class FrameChecks {
             f.decoder().accept(stream, i, 1);
         }
         assertEquals(expected, f.events().get(), "one byte at a time");
+    }
+
+    /**
+     * A decoder and its sink's counters.
+     *
+     * @param decoder  the decoder's {@code accept}
+     * @param buffered the decoder's {@code buffered()}
+     * @param frames   frames the sink received
+     * @param skipped  bytes the sink was told were dropped
+     * @param reports  rejection reports plus frames the sink received
+     */
+    public record Counted(Accept decoder, IntSupplier buffered, IntSupplier frames, LongSupplier skipped,
+            IntSupplier reports) {
+    }
+
+    /**
+     * Feeds 2000 chunks of random garbage (seed 42): the buffer stays below {@code maxFrame}, no frame appears,
+     * every byte is reported as dropped or still buffered or in the run that goes on, and long runs are reported.
+     *
+     * @return how many bytes were fed
+     */
+    public static long assertEndlessGarbageStaysBounded(Counted d, int maxFrame, int bufferSize) {
+        Random random = new Random(42);
+        long fed = 0;
+        for (int round = 0; round < 2000; round++) {
+            byte[] chunk = new byte[1 + random.nextInt(2000)];
+            random.nextBytes(chunk);
+            d.decoder().accept(chunk, 0, chunk.length);
+            fed += chunk.length;
+            assertTrue(d.buffered().getAsInt() < maxFrame, "buffered " + d.buffered().getAsInt());
+        }
+        assertEquals(0, d.frames().getAsInt(), "random garbage must not yield frames (seed 42)");
+        long pending = fed - d.skipped().getAsLong() - d.buffered().getAsInt(); // dropped, not yet reported
+        assertTrue(pending >= 0 && pending < bufferSize, "pending " + pending);
+        assertTrue(d.reports().getAsInt() >= fed / bufferSize, "long runs are still reported");
+        return fed;
     }
 }
