@@ -57,19 +57,7 @@ class DeviceBasicsTest {
 
             @Override
             public Connection connect(Input listener) {
-                return new Connection() {
-                    private volatile boolean open = true;
-
-                    @Override
-                    public void close() {
-                        open = false;
-                    }
-
-                    @Override
-                    public boolean isOpen() {
-                        return open;
-                    }
-                };
+                return new ConsumptionsTest.Handle();
             }
         };
     }
