@@ -144,6 +144,8 @@ public abstract class TinySepTestSupport {
         o.add(reactorBundle("org.tinysep.api", 4));
         o.add(reactorBundle("org.tinysep.drivers", 4));
         o.add(reactorBundle("org.tinysep.runtime", 4));
+        // test helpers the probe uses (SmtpSink, SocatPair, PtyPeer): exported by the test-support bundle
+        o.add(reactorBundle("org.tinysep.testsupport.io", 4));
         // libraries some applications need
         o.add(mavenBundle("com.fazecast", "jSerialComm").versionAsInProject().startLevel(3));
         o.add(mavenBundle("jakarta.activation", "jakarta.activation-api").versionAsInProject().startLevel(3));

@@ -31,7 +31,7 @@ import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.itests.AmicaNode;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Acknowledgement and escalation (issue 12, item 3) end to end in virtual time: a real AmICA movement node over

@@ -21,7 +21,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * The LEARNED detector end to end in virtual time (issue 11): real AmICA movement nodes over UDP, Flat Occupancy,

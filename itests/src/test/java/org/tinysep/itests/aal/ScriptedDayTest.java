@@ -21,7 +21,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * A scripted day in one flat, in virtual time: arrival, moving through the rooms, leaving, returning, going to bed.

@@ -26,7 +26,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Issue 12.2, a dead sensor is not inactivity, end to end in virtual time: the person was last seen in the

@@ -28,7 +28,7 @@ import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.itests.Topology;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 import org.tinysep.simulator.cli.Run;
 
 /**

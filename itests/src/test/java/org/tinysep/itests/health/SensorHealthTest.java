@@ -42,7 +42,7 @@ import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.itests.TinySepTestSupport;
-import org.tinysep.itests.mail.SmtpSink;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Sensor health end to end in virtual time (issue 12.1/12.2): a movement node placed in the Bathroom falls silent

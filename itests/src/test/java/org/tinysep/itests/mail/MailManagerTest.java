@@ -23,6 +23,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * The Mail Manager bundle in a running framework, sending to a real SMTP server ({@link SmtpSink}) configured

@@ -10,6 +10,7 @@ import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.testsupport.serial.PtyPeer;
 
 /**
  * A simulated AmICA node behind the modified base node: writes real frames into the node's end of a

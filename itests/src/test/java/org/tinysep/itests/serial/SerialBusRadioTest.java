@@ -38,6 +38,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.itests.Topology;
+import org.tinysep.testsupport.serial.SocatPair;
 
 /**
  * Bus Radio AmICA (serial) in a real Felix framework on socat pseudo-terminals: a factory configuration per port,

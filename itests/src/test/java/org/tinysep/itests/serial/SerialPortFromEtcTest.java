@@ -19,6 +19,7 @@ import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.itests.Topology;
+import org.tinysep.testsupport.serial.SocatPair;
 
 /**
  * A serial port configured the way the README tells users to: a FileInstall factory configuration file

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import org.tinysep.testsupport.serial.SocatPair;
 
 /** The socat pairs of one test, each in its own temp folder; {@link #close()} kills them and removes the folders. */
 final class SocatPairs implements AutoCloseable {

@@ -18,6 +18,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Issue 12 item 5, "the platform cannot die silently", without systemd: {@code java -jar tinysep.jar --supervise}

@@ -1,12 +1,15 @@
 package org.tinysep.amica.protocol;
 
-import java.util.Arrays;
-import java.util.Objects;
+import org.tinysep.link.frame.Crc8;
+import org.tinysep.link.frame.FrameFormat;
 
 /**
  * Encodes and decodes one AmICA frame: size identifier S, the seven header bytes (header value, source,
  * destination, netgroup, sequence, checksum, payload length L) and S payload bytes. See
  * {@code docs/protocols/amica.md} for the byte layout and the checksum.
+ * <p>
+ * The layout and the checks are shared with the Sun SPOT protocol ({@code org.tinysep.link.frame.FrameFormat});
+ * this family adds the header value and its header fields ({@code AmicaFormat}).
  * <p>
  * Stateless and thread-safe. For byte streams (serial links) use {@link AmicaStreamDecoder}.
  */
@@ -17,7 +20,7 @@ public final class AmicaCodec {
     /** Bytes before the payload: size identifier plus the seven header bytes. */
     public static final int HEADER_LENGTH = 8;
     /** Largest payload, in bytes. */
-    public static final int MAX_PAYLOAD = 255;
+    public static final int MAX_PAYLOAD = FrameFormat.MAX_PAYLOAD;
     /** Largest frame, in bytes: {@link #HEADER_LENGTH} + {@link #MAX_PAYLOAD}. */
     public static final int MAX_FRAME = HEADER_LENGTH + MAX_PAYLOAD;
     /** Address of the platform (base station) within every netgroup. */
@@ -32,19 +35,6 @@ public final class AmicaCodec {
     static final int CHECKSUM = 6;
     static final int LENGTH = 7;
 
-    /** CRC-8/SMBUS lookup table: polynomial 0x07, MSB first. */
-    private static final byte[] CRC_TABLE = new byte[256];
-
-    static {
-        for (int i = 0; i < 256; i++) {
-            int crc = i;
-            for (int bit = 0; bit < 8; bit++) {
-                crc = (crc & 0x80) != 0 ? (crc << 1) ^ 0x07 : crc << 1;
-            }
-            CRC_TABLE[i] = (byte) crc;
-        }
-    }
-
     private AmicaCodec() {
     }
 
@@ -55,16 +45,13 @@ public final class AmicaCodec {
     public static byte[] encode(AmicaFrame frame) {
         byte[] payload = frame.payloadUnsafe();
         byte[] out = new byte[HEADER_LENGTH + payload.length];
-        out[SIZE] = (byte) payload.length;
         out[HEADER] = (byte) HEADER_VALUE;
         out[SOURCE] = (byte) frame.source();
         out[DESTINATION] = (byte) frame.destination();
         out[NETGROUP] = (byte) frame.netgroup();
         out[SEQUENCE] = (byte) frame.sequence();
-        out[LENGTH] = (byte) payload.length;
         System.arraycopy(payload, 0, out, HEADER_LENGTH, payload.length);
-        out[CHECKSUM] = (byte) checksum(out, 0, payload.length);
-        return out;
+        return AmicaFormat.INSTANCE.seal(out, payload.length);
     }
 
     /**
@@ -80,12 +67,7 @@ public final class AmicaCodec {
      * @throws IndexOutOfBoundsException if the range lies outside {@code buf}
      */
     public static AmicaFrame decode(byte[] buf, int offset, int length) throws AmicaProtocolException {
-        Objects.checkFromIndexSize(offset, length, buf.length);
-        RejectReason reason = check(buf, offset, length);
-        if (reason != null) {
-            throw new AmicaProtocolException(reason, detail(reason, buf, offset, length));
-        }
-        return frameAt(buf, offset);
+        return AmicaFormat.INSTANCE.decode(buf, offset, length, AmicaProtocolException::new);
     }
 
     /**
@@ -99,73 +81,6 @@ public final class AmicaCodec {
      * @throws IndexOutOfBoundsException if the range lies outside {@code b}
      */
     public static int crc8(byte[] b, int off, int len) {
-        Objects.checkFromIndexSize(off, len, b.length);
-        return crc8(0, b, off, len);
-    }
-
-    static int crc8(int crc, byte[] b, int off, int len) {
-        for (int i = off; i < off + len; i++) {
-            crc = CRC_TABLE[(crc ^ b[i]) & 0xFF] & 0xFF;
-        }
-        return crc;
-    }
-
-    /** The checksum of the frame at {@code off} with the given payload length: CRC over all bytes but CK. */
-    static int checksum(byte[] buf, int off, int payloadLength) {
-        int crc = crc8(0, buf, off, CHECKSUM);
-        return crc8(crc, buf, off + LENGTH, 1 + payloadLength);
-    }
-
-    /** @return why the range is not exactly one valid frame, or null if it is */
-    static RejectReason check(byte[] buf, int off, int len) {
-        if (len < HEADER_LENGTH) {
-            return RejectReason.TRUNCATED;
-        }
-        if (len > MAX_FRAME) {
-            return RejectReason.OVERSIZE;
-        }
-        if ((buf[off + HEADER] & 0xFF) != HEADER_VALUE) {
-            return RejectReason.BAD_HEADER;
-        }
-        int size = buf[off + SIZE] & 0xFF;
-        if (size != (buf[off + LENGTH] & 0xFF)) {
-            return RejectReason.LENGTH_MISMATCH;
-        }
-        if (len < HEADER_LENGTH + size) {
-            return RejectReason.TRUNCATED;
-        }
-        if (len > HEADER_LENGTH + size) {
-            return RejectReason.OVERSIZE;
-        }
-        if (checksum(buf, off, size) != (buf[off + CHECKSUM] & 0xFF)) {
-            return RejectReason.BAD_CHECKSUM;
-        }
-        return null;
-    }
-
-    /** Builds the frame at {@code off}; the caller has checked it. */
-    static AmicaFrame frameAt(byte[] buf, int off) {
-        int size = buf[off + SIZE] & 0xFF;
-        byte[] payload = Arrays.copyOfRange(buf, off + HEADER_LENGTH, off + HEADER_LENGTH + size);
-        return new AmicaFrame(buf[off + NETGROUP] & 0xFF, buf[off + SOURCE] & 0xFF, buf[off + DESTINATION] & 0xFF,
-                buf[off + SEQUENCE] & 0xFF, payload);
-    }
-
-    private static String detail(RejectReason reason, byte[] buf, int off, int len) {
-        int size = len > SIZE ? buf[off + SIZE] & 0xFF : 0;
-        return switch (reason) {
-            case TRUNCATED -> len < HEADER_LENGTH
-                    ? len + " bytes, a frame has at least " + HEADER_LENGTH
-                    : len + " bytes, size identifier " + size + " announces " + (HEADER_LENGTH + size);
-            case OVERSIZE -> len > MAX_FRAME
-                    ? len + " bytes, a frame has at most " + MAX_FRAME
-                    : len + " bytes, size identifier " + size + " announces " + (HEADER_LENGTH + size);
-            case BAD_HEADER -> "header value " + Hex.ofByte(buf[off + HEADER] & 0xFF) + ", expected "
-                    + Hex.ofByte(HEADER_VALUE);
-            case LENGTH_MISMATCH -> "size identifier " + size + ", payload length " + (buf[off + LENGTH] & 0xFF);
-            case BAD_CHECKSUM -> "checksum " + Hex.ofByte(buf[off + CHECKSUM] & 0xFF) + ", computed "
-                    + Hex.ofByte(checksum(buf, off, size));
-            default -> "";
-        };
+        return Crc8.of(b, off, len);
     }
 }

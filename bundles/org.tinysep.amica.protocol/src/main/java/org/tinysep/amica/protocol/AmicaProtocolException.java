@@ -1,6 +1,7 @@
 package org.tinysep.amica.protocol;
 
 import java.util.Objects;
+import org.tinysep.link.frame.FrameFormat;
 
 /**
  * Bad input: a frame or payload that violates the AmICA node protocol. The {@link #reason()} says which rule was
@@ -18,18 +19,13 @@ public final class AmicaProtocolException extends Exception {
      * @param detail what exactly was wrong, e.g. {@code "checksum 0x12, computed 0x34"}
      */
     public AmicaProtocolException(RejectReason reason, String detail) {
-        super(message(reason, detail), null, false, false);
+        super(FrameFormat.message(Objects.requireNonNull(reason, "reason"), reason.description(), detail), null, false,
+                false);
         this.reason = reason;
     }
 
     /** @return the broken rule, never null */
     public RejectReason reason() {
         return reason;
-    }
-
-    private static String message(RejectReason reason, String detail) {
-        Objects.requireNonNull(reason, "reason");
-        String head = reason.name() + " (" + reason.description() + ")";
-        return detail == null || detail.isEmpty() ? head : head + ": " + detail;
     }
 }

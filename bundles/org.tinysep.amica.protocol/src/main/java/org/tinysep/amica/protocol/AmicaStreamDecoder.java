@@ -1,6 +1,7 @@
 package org.tinysep.amica.protocol;
 
 import java.util.Objects;
+import org.tinysep.link.frame.FrameStream;
 
 /**
  * Finds AmICA frames in a byte stream, such as the serial link to the modified AmICA node (thesis Figure 3.12).
@@ -12,6 +13,9 @@ import java.util.Objects;
  * bytes. Each run of consecutive dropped bytes is reported once, with the reason seen at its first byte, just before
  * the frame that ends it; a run that reaches {@value #BUFFER_SIZE} bytes is reported then and a new run starts, so
  * an endless stream of garbage is still reported. The buffer never holds more than {@value #BUFFER_SIZE} bytes.
+ * <p>
+ * The skeleton is shared with the other protocol family ({@code org.tinysep.link.frame.FrameStream}); this
+ * class adds the frame rules of {@code AmicaFormat}.
  * <p>
  * Not thread-safe: one reader thread feeds one decoder. Sink callbacks run on that thread, inside
  * {@code accept}; they must not call back into this decoder. If a callback throws, the exception leaves
@@ -33,18 +37,14 @@ public final class AmicaStreamDecoder {
     }
 
     /** Capacity of the buffer, in bytes; also the longest run reported in one {@link Sink#rejected} call. */
-    public static final int BUFFER_SIZE = 4096;
+    public static final int BUFFER_SIZE = FrameStream.BUFFER_SIZE;
 
-    private final Sink sink;
-    private final byte[] buf = new byte[BUFFER_SIZE];
-    private int start;
-    private int count;
-    private int skipped;
-    private RejectReason skipReason;
+    private final FrameStream<AmicaFrame, RejectReason> stream;
 
     /** @param sink receives frames and rejections */
     public AmicaStreamDecoder(Sink sink) {
-        this.sink = Objects.requireNonNull(sink, "sink");
+        this.stream = new FrameStream<>(AmicaFormat.INSTANCE, Objects.requireNonNull(sink, "sink")::frame,
+                sink::rejected);
     }
 
     /**
@@ -56,19 +56,7 @@ public final class AmicaStreamDecoder {
      * @throws IndexOutOfBoundsException if the range lies outside {@code src}
      */
     public void accept(byte[] src, int off, int len) {
-        Objects.checkFromIndexSize(off, len, src.length);
-        while (len > 0) {
-            if (start > 0) {
-                System.arraycopy(buf, start, buf, 0, count);
-                start = 0;
-            }
-            int n = Math.min(len, BUFFER_SIZE - count);
-            System.arraycopy(src, off, buf, count, n);
-            count += n;
-            off += n;
-            len -= n;
-            drain();
-        }
+        stream.accept(src, off, len);
     }
 
     /**
@@ -80,79 +68,11 @@ public final class AmicaStreamDecoder {
      * {@link RejectReason#TRUNCATED}.
      */
     public void reset() {
-        int left = count;
-        start = 0;
-        count = 0;
-        if (skipped == 0 && left > 0) {
-            skipReason = RejectReason.TRUNCATED;
-        }
-        int first = Math.min(left, BUFFER_SIZE - skipped);
-        skipped += first;
-        left -= first;
-        reportRun();
-        if (left > 0) { // fewer than BUFFER_SIZE: skipped was below it, count at most BUFFER_SIZE
-            skipped = left;
-            skipReason = RejectReason.TRUNCATED;
-            reportRun();
-        }
+        stream.reset();
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */
     public int buffered() {
-        return count;
-    }
-
-    private void drain() {
-        while (count > AmicaCodec.HEADER) { // the header value byte is buffered: the candidate can be judged
-            int p = start;
-            if ((buf[p + AmicaCodec.HEADER] & 0xFF) != AmicaCodec.HEADER_VALUE) {
-                drop(RejectReason.BAD_HEADER);
-                continue;
-            }
-            if (count < AmicaCodec.HEADER_LENGTH) {
-                return;
-            }
-            int size = buf[p + AmicaCodec.SIZE] & 0xFF;
-            if (size != (buf[p + AmicaCodec.LENGTH] & 0xFF)) {
-                drop(RejectReason.LENGTH_MISMATCH);
-                continue;
-            }
-            int total = AmicaCodec.HEADER_LENGTH + size;
-            if (count < total) {
-                return;
-            }
-            RejectReason reason = AmicaCodec.check(buf, p, total);
-            if (reason != null) {
-                drop(reason);
-                continue;
-            }
-            AmicaFrame frame = AmicaCodec.frameAt(buf, p);
-            start += total;
-            count -= total;
-            reportRun();
-            sink.frame(frame);
-        }
-    }
-
-    private void drop(RejectReason reason) {
-        if (skipped == 0) {
-            skipReason = reason;
-        }
-        start++;
-        count--;
-        skipped++;
-        if (skipped == BUFFER_SIZE) {
-            reportRun();
-        }
-    }
-
-    private void reportRun() {
-        if (skipped > 0) {
-            int n = skipped;
-            RejectReason r = skipReason;
-            skipped = 0;
-            skipReason = null;
-            sink.rejected(r, n);
-        }
+        return stream.buffered();
     }
 }

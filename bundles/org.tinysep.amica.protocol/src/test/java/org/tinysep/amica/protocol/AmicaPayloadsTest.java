@@ -3,7 +3,7 @@ package org.tinysep.amica.protocol;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
-import static org.tinysep.amica.protocol.TestBytes.dec;
+import static org.tinysep.link.frame.testing.TestBytes.dec;
 
 import java.util.EnumSet;
 import java.util.List;

@@ -7,13 +7,13 @@ import static org.tinysep.amica.protocol.AmicaCodecTest.KEEP_ALIVE_1_17;
 import static org.tinysep.amica.protocol.AmicaCodecTest.LIGHT_40_TO_1_20;
 import static org.tinysep.amica.protocol.AmicaCodecTest.MOVEMENT_1_17;
 import static org.tinysep.amica.protocol.AmicaCodecTest.REED_OPEN_1_18;
-import static org.tinysep.amica.protocol.TestBytes.concat;
-import static org.tinysep.amica.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.Arrays;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.FrameChecks;
 
 class AmicaStreamDecoderTest {
 
@@ -90,22 +90,10 @@ class AmicaStreamDecoderTest {
         // "01 A1" looks like a header and S = L = 1 (the keep-alive's netgroup byte): the CRC rejects it
         assertEquals("BAD_CHECKSUM 3", expected.get(0));
         assertEquals("BAD_CHECKSUM 12", expected.get(4));
-        for (int i = 0; i <= stream.length; i++) {
-            for (int j = i; j <= stream.length; j++) {
-                RecordingSink r = new RecordingSink();
-                AmicaStreamDecoder d = new AmicaStreamDecoder(r);
-                d.accept(stream, 0, i);
-                d.accept(stream, i, j - i);
-                d.accept(stream, j, stream.length - j);
-                assertEquals(expected, r.events, "split at " + i + " and " + j);
-            }
-        }
-        RecordingSink r = new RecordingSink();
-        AmicaStreamDecoder d = new AmicaStreamDecoder(r);
-        for (int i = 0; i < stream.length; i++) {
-            d.accept(stream, i, 1);
-        }
-        assertEquals(expected, r.events, "one byte at a time");
+        FrameChecks.assertSplitsAlike(stream, expected, () -> {
+            RecordingSink r = new RecordingSink();
+            return new FrameChecks.Feeding(new AmicaStreamDecoder(r)::accept, () -> r.events);
+        });
     }
 
     @Test
@@ -123,19 +111,9 @@ class AmicaStreamDecoderTest {
 
     @Test
     void bufferStaysBoundedUnderEndlessGarbageAndEveryByteIsAccountedFor() throws Exception {
-        Random random = new Random(42);
-        long fed = 0;
-        for (int round = 0; round < 2000; round++) {
-            byte[] chunk = new byte[1 + random.nextInt(2000)];
-            random.nextBytes(chunk);
-            feed(chunk);
-            fed += chunk.length;
-            assertTrue(decoder.buffered() < AmicaCodec.MAX_FRAME, "buffered " + decoder.buffered());
-        }
-        assertEquals(0, sink.frames, "random garbage must not yield frames (seed 42)");
-        long pending = fed - sink.skipped - decoder.buffered(); // dropped, not yet reported: the run goes on
-        assertTrue(pending >= 0 && pending < AmicaStreamDecoder.BUFFER_SIZE, "pending " + pending);
-        assertTrue(sink.events.size() >= fed / AmicaStreamDecoder.BUFFER_SIZE, "long runs are still reported");
+        long fed = FrameChecks.assertEndlessGarbageStaysBounded(new FrameChecks.Counted(decoder::accept,
+                decoder::buffered, () -> sink.frames, () -> sink.skipped, () -> sink.events.size()),
+                AmicaCodec.MAX_FRAME, AmicaStreamDecoder.BUFFER_SIZE);
 
         byte[] padding = new byte[AmicaCodec.MAX_FRAME];
         feed(concat(MOVEMENT_1_17, padding, REED_OPEN_1_18));

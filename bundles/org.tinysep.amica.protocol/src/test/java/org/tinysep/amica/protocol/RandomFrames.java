@@ -2,6 +2,7 @@ package org.tinysep.amica.protocol;
 
 import java.util.Arrays;
 import java.util.Random;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /**
  * Random input for the fuzz tests, drawn from a {@link Random} (see {@link Fuzz}): valid frames (Table 3.1
@@ -104,24 +105,15 @@ final class RandomFrames {
     }
 
     static byte[] flip(byte[] f, int bit) {
-        byte[] out = f.clone();
-        out[bit / 8] ^= (byte) (1 << (bit % 8));
-        return out;
+        return TestBytes.flip(f, bit);
     }
 
     static byte[] insert(byte[] f, int at, byte b) {
-        byte[] out = new byte[f.length + 1];
-        System.arraycopy(f, 0, out, 0, at);
-        out[at] = b;
-        System.arraycopy(f, at, out, at + 1, f.length - at);
-        return out;
+        return TestBytes.insert(f, at, b);
     }
 
     static byte[] delete(byte[] f, int at) {
-        byte[] out = new byte[f.length - 1];
-        System.arraycopy(f, 0, out, 0, at);
-        System.arraycopy(f, at + 1, out, at, f.length - at - 1);
-        return out;
+        return TestBytes.delete(f, at);
     }
 
     static byte[] concat(byte[]... parts) {

@@ -20,8 +20,9 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tinysep.serial.support.testing.PtyPeer;
-import org.tinysep.serial.support.testing.SocatPair;
+import org.tinysep.testsupport.serial.PtyPeer;
+import org.tinysep.testsupport.serial.SocatPair;
+import org.tinysep.testsupport.wait.Await;
 
 /** The link against real socat pseudo-terminal pairs: bytes both ways, a vanishing port, reopening by itself. */
 class SerialPortLinkTest {
@@ -186,12 +187,6 @@ class SerialPortLinkTest {
     }
 
     static void await(BooleanSupplier condition, String what) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out after 10 s waiting for " + what);
-            }
-            Thread.sleep(10);
-        }
+        Await.until(condition, what);
     }
 }

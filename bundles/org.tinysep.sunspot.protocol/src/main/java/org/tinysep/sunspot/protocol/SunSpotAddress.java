@@ -1,5 +1,7 @@
 package org.tinysep.sunspot.protocol;
 
+import org.tinysep.link.frame.Hex;
+
 /**
  * Identity of a Sun SPOT node: its 64-bit IEEE address, unsigned. Written as the Sun SPOT SDK writes it: four
  * dot-separated groups of four upper-case hex digits, most significant first, e.g. {@code 0014.4F01.0000.1234}.

@@ -2,6 +2,7 @@ package org.tinysep.sunspot.protocol;
 
 import java.util.Arrays;
 import java.util.Objects;
+import org.tinysep.link.frame.Hex;
 
 /**
  * One Sun SPOT frame, decoded: source address, sensor type and payload. The framing bytes (size identifier,

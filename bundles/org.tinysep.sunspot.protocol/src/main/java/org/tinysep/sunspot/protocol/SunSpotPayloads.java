@@ -1,6 +1,7 @@
 package org.tinysep.sunspot.protocol;
 
 import java.util.Objects;
+import org.tinysep.link.frame.Hex;
 
 /**
  * Converts between payload bytes (thesis Table 3.2, plus Movement Detection version 2) and {@link SunSpotPayload}

@@ -1,6 +1,7 @@
 package org.tinysep.sunspot.protocol;
 
 import java.util.Objects;
+import org.tinysep.link.frame.FrameStream;
 
 /**
  * Finds Sun SPOT frames in a byte stream, such as the serial link to a basestation that writes framed packets.
@@ -13,6 +14,9 @@ import java.util.Objects;
  * candidate waits for more bytes. Each run of consecutive dropped bytes is reported once, with the reason seen at
  * its first byte, just before the frame that ends it; a run that reaches {@value #BUFFER_SIZE} bytes is reported
  * then and a new run starts. The buffer never holds more than {@value #BUFFER_SIZE} bytes.
+ * <p>
+ * The skeleton is shared with the other protocol family ({@code org.tinysep.link.frame.FrameStream}); this
+ * class adds the frame rules of {@code SunSpotFormat}.
  * <p>
  * Not thread-safe: one reader thread feeds one decoder. Sink callbacks run on that thread, inside {@code accept};
  * they must not call back into this decoder. If a callback throws, the exception leaves {@code accept}, the decoder
@@ -34,18 +38,14 @@ public final class SunSpotStreamDecoder {
     }
 
     /** Capacity of the buffer, in bytes; also the longest run reported in one {@link Sink#rejected} call. */
-    public static final int BUFFER_SIZE = 4096;
+    public static final int BUFFER_SIZE = FrameStream.BUFFER_SIZE;
 
-    private final Sink sink;
-    private final byte[] buf = new byte[BUFFER_SIZE];
-    private int start;
-    private int count;
-    private int skipped;
-    private RejectReason skipReason;
+    private final FrameStream<SunSpotFrame, RejectReason> stream;
 
     /** @param sink receives frames and rejections */
     public SunSpotStreamDecoder(Sink sink) {
-        this.sink = Objects.requireNonNull(sink, "sink");
+        this.stream = new FrameStream<>(SunSpotFormat.INSTANCE, Objects.requireNonNull(sink, "sink")::frame,
+                sink::rejected);
     }
 
     /**
@@ -57,19 +57,7 @@ public final class SunSpotStreamDecoder {
      * @throws IndexOutOfBoundsException if the range lies outside {@code src}
      */
     public void accept(byte[] src, int off, int len) {
-        Objects.checkFromIndexSize(off, len, src.length);
-        while (len > 0) {
-            if (start > 0) {
-                System.arraycopy(buf, start, buf, 0, count);
-                start = 0;
-            }
-            int n = Math.min(len, BUFFER_SIZE - count);
-            System.arraycopy(src, off, buf, count, n);
-            count += n;
-            off += n;
-            len -= n;
-            drain();
-        }
+        stream.accept(src, off, len);
     }
 
     /**
@@ -80,76 +68,11 @@ public final class SunSpotStreamDecoder {
      * candidate as a second, {@link RejectReason#TRUNCATED} run.
      */
     public void reset() {
-        int left = count;
-        start = 0;
-        count = 0;
-        if (skipped == 0 && left > 0) {
-            skipReason = RejectReason.TRUNCATED;
-        }
-        int first = Math.min(left, BUFFER_SIZE - skipped);
-        skipped += first;
-        left -= first;
-        reportRun();
-        if (left > 0) {
-            skipped = left;
-            skipReason = RejectReason.TRUNCATED;
-            reportRun();
-        }
+        stream.reset();
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */
     public int buffered() {
-        return count;
-    }
-
-    private void drain() {
-        while (count >= SunSpotCodec.HEADER_LENGTH) { // the whole header is buffered: the candidate can be judged
-            int p = start;
-            int size = buf[p + SunSpotCodec.SIZE] & 0xFF;
-            if (size != (buf[p + SunSpotCodec.LENGTH] & 0xFF)) {
-                drop(RejectReason.LENGTH_MISMATCH);
-                continue;
-            }
-            if (!SunSpotSensorType.isKnown(buf[p + SunSpotCodec.SENSOR_TYPE] & 0xFF)) {
-                drop(RejectReason.UNKNOWN_PAYLOAD);
-                continue;
-            }
-            int total = SunSpotCodec.HEADER_LENGTH + size;
-            if (count < total) {
-                return;
-            }
-            RejectReason reason = SunSpotCodec.check(buf, p, total);
-            if (reason != null) {
-                drop(reason);
-                continue;
-            }
-            SunSpotFrame frame = SunSpotCodec.frameAt(buf, p);
-            start += total;
-            count -= total;
-            reportRun();
-            sink.frame(frame);
-        }
-    }
-
-    private void drop(RejectReason reason) {
-        if (skipped == 0) {
-            skipReason = reason;
-        }
-        start++;
-        count--;
-        skipped++;
-        if (skipped == BUFFER_SIZE) {
-            reportRun();
-        }
-    }
-
-    private void reportRun() {
-        if (skipped > 0) {
-            int n = skipped;
-            RejectReason r = skipReason;
-            skipped = 0;
-            skipReason = null;
-            sink.rejected(r, n);
-        }
+        return stream.buffered();
     }
 }

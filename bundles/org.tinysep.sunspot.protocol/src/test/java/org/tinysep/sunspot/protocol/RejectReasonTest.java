@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.tinysep.sunspot.protocol.TestBytes.dec;
-import static org.tinysep.sunspot.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.dec;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.EnumSet;
 import java.util.HashSet;

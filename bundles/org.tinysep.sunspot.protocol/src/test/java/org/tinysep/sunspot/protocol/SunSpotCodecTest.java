@@ -5,13 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.tinysep.sunspot.protocol.TestBytes.concat;
-import static org.tinysep.sunspot.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
-import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.FrameChecks;
 
 class SunSpotCodecTest {
 
@@ -24,31 +23,12 @@ class SunSpotCodecTest {
 
     @Test
     void crc8CheckValueIsF4() {
-        byte[] ascii = "123456789".getBytes(StandardCharsets.US_ASCII);
-        assertEquals(0xF4, SunSpotCodec.crc8(ascii, 0, ascii.length));
-        assertEquals(0x00, SunSpotCodec.crc8(ascii, 0, 0));
-        assertEquals(0xF4, SunSpotCodec.crc8(concat(new byte[3], ascii), 3, ascii.length));
-        assertThrows(IndexOutOfBoundsException.class, () -> SunSpotCodec.crc8(ascii, 5, 5));
+        FrameChecks.assertCheckValue(SunSpotCodec::crc8);
     }
 
     @Test
     void crc8TableMatchesBitwiseDefinition() {
-        byte[] data = new byte[1000];
-        new Random(7).nextBytes(data);
-        for (int len = 0; len <= data.length; len += 37) {
-            assertEquals(bitwiseCrc8(data, len), SunSpotCodec.crc8(data, 0, len), "length " + len);
-        }
-    }
-
-    private static int bitwiseCrc8(byte[] data, int len) {
-        int crc = 0;
-        for (int i = 0; i < len; i++) {
-            crc ^= data[i] & 0xFF;
-            for (int bit = 0; bit < 8; bit++) {
-                crc = (crc & 0x80) != 0 ? ((crc << 1) ^ 0x07) & 0xFF : (crc << 1) & 0xFF;
-            }
-        }
-        return crc;
+        FrameChecks.assertMatchesBitwiseDefinition(SunSpotCodec::crc8);
     }
 
     @Test

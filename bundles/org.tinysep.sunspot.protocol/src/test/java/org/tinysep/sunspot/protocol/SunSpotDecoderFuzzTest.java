@@ -10,6 +10,7 @@ import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.Fuzz;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /**
  * The decoders fed random and mutated input (fixed seeds, see {@link Fuzz}): nothing but

@@ -9,13 +9,13 @@ import static org.tinysep.sunspot.protocol.SunSpotCodecTest.MOVEMENT_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.MOVEMENT_V2_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.SPOT_1234;
 import static org.tinysep.sunspot.protocol.SunSpotCodecTest.TEMPERATURE_5678;
-import static org.tinysep.sunspot.protocol.TestBytes.concat;
-import static org.tinysep.sunspot.protocol.TestBytes.hex;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.Arrays;
 import java.util.List;
-import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.FrameChecks;
 
 class SunSpotStreamDecoderTest {
 
@@ -86,22 +86,10 @@ class SunSpotStreamDecoderTest {
         assertEquals("LENGTH_MISMATCH 3", expected.get(0));
         assertEquals("BAD_CHECKSUM 16", expected.get(4));
         assertEquals(frameOf(MOVEMENT_V2_1234), expected.get(expected.size() - 1));
-        for (int i = 0; i <= stream.length; i++) {
-            for (int j = i; j <= stream.length; j++) {
-                RecordingSink r = new RecordingSink();
-                SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
-                d.accept(stream, 0, i);
-                d.accept(stream, i, j - i);
-                d.accept(stream, j, stream.length - j);
-                assertEquals(expected, r.events, "split at " + i + " and " + j);
-            }
-        }
-        RecordingSink r = new RecordingSink();
-        SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
-        for (int i = 0; i < stream.length; i++) {
-            d.accept(stream, i, 1);
-        }
-        assertEquals(expected, r.events, "one byte at a time");
+        FrameChecks.assertSplitsAlike(stream, expected, () -> {
+            RecordingSink r = new RecordingSink();
+            return new FrameChecks.Feeding(new SunSpotStreamDecoder(r)::accept, () -> r.events);
+        });
     }
 
     @Test
@@ -120,19 +108,9 @@ class SunSpotStreamDecoderTest {
 
     @Test
     void bufferStaysBoundedUnderEndlessGarbageAndEveryByteIsAccountedFor() throws Exception {
-        Random random = new Random(42);
-        long fed = 0;
-        for (int round = 0; round < 2000; round++) {
-            byte[] chunk = new byte[1 + random.nextInt(2000)];
-            random.nextBytes(chunk);
-            feed(chunk);
-            fed += chunk.length;
-            assertTrue(decoder.buffered() < SunSpotCodec.MAX_FRAME, "buffered " + decoder.buffered());
-        }
-        assertEquals(0, sink.frames, "random garbage must not yield frames (seed 42)");
-        long pending = fed - sink.skipped - decoder.buffered(); // dropped, not yet reported: the run goes on
-        assertTrue(pending >= 0 && pending < SunSpotStreamDecoder.BUFFER_SIZE, "pending " + pending);
-        assertTrue(sink.events.size() >= fed / SunSpotStreamDecoder.BUFFER_SIZE, "long runs are still reported");
+        long fed = FrameChecks.assertEndlessGarbageStaysBounded(new FrameChecks.Counted(decoder::accept,
+                decoder::buffered, () -> sink.frames, () -> sink.skipped, () -> sink.events.size()),
+                SunSpotCodec.MAX_FRAME, SunSpotStreamDecoder.BUFFER_SIZE);
 
         byte[] padding = new byte[SunSpotCodec.MAX_FRAME];
         feed(concat(MOVEMENT_1234, padding, LIGHT_9ABC));

@@ -1,20 +1,15 @@
 package org.tinysep.timecontroller.internal;
 
 import java.io.IOException;
-import java.net.DatagramPacket;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.link.udp.DatagramLink;
 
 /**
- * The UDP socket of the synchroniser link: one receive loop on its own executor; each datagram is handled
- * synchronously on that thread and the handler's answer goes back to the sender's address before the next
+ * The UDP socket of the synchroniser link, the platform's one {@link DatagramLink}: each datagram is handled
+ * synchronously on its receive thread and the handler's answer goes back to the sender's address before the next
  * datagram is read, so the synchroniser sees answers in request order. A failing handler or send never ends the
  * loop.
  */
@@ -26,92 +21,53 @@ final class SyncLink implements AutoCloseable {
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(SyncLink.class);
-    /** Larger than any valid request, so an oversize one is seen as such. */
-    private static final int BUFFER = 1024;
 
-    private final DatagramSocket socket;
-    private final ExecutorService receiver;
-    private volatile boolean open = true;
+    private final DatagramLink socket;
 
-    private SyncLink(DatagramSocket socket) {
+    private SyncLink(DatagramLink socket) {
         this.socket = socket;
-        this.receiver = Executors.newSingleThreadExecutor(r -> new Thread(r, "time-sync-link"));
     }
 
-    /** Binds the socket; datagrams wait in its buffer until {@link #start(Handler)}. */
+    /** Binds the socket (the system's receive buffer); datagrams wait in its buffer until {@link #start(Handler)}. */
     static SyncLink open(String bindAddress, int port) throws IOException {
-        DatagramSocket socket = new DatagramSocket(null);
-        try {
-            socket.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
-        } catch (IOException | RuntimeException e) {
-            socket.close();
-            throw e;
-        }
-        return new SyncLink(socket);
+        return new SyncLink(DatagramLink.open(bindAddress, port, 0, "time-sync-link"));
     }
 
     /** Starts handling datagrams. */
     void start(Handler handler) {
-        receiver.execute(() -> loop(handler));
+        socket.start((data, length, from) -> answer(handle(handler, data, length, from), from));
     }
 
     int localPort() {
-        return socket.getLocalPort();
+        return socket.localPort();
     }
 
     String localAddress() {
-        return socket.getLocalAddress().getHostAddress() + ":" + socket.getLocalPort();
+        return socket.localAddress();
     }
 
-    private void loop(Handler handler) {
-        byte[] buf = new byte[BUFFER];
-        DatagramPacket in = new DatagramPacket(buf, buf.length);
-        while (open) {
-            try {
-                in.setLength(buf.length);
-                socket.receive(in);
-            } catch (IOException e) {
-                if (open) {
-                    LOG.warn("Time sync receive on {} failed, continuing: {}", localAddress(), e.toString());
-                }
-                continue;
-            }
-            InetSocketAddress from = (InetSocketAddress) in.getSocketAddress();
-            String answer;
-            try {
-                answer = handler.datagram(buf, in.getLength(), from);
-            } catch (RuntimeException e) {
-                LOG.error("Time sync datagram handling failed; the link goes on", e);
-                answer = SyncMessage.error("-", "internal", e.toString());
-            }
-            if (answer != null) {
-                send(answer, from);
-            }
-        }
-    }
-
-    private void send(String answer, InetSocketAddress to) {
-        byte[] bytes = answer.getBytes(StandardCharsets.US_ASCII);
+    private static String handle(Handler handler, byte[] data, int length, InetSocketAddress from) {
         try {
-            socket.send(new DatagramPacket(bytes, bytes.length, to));
-        } catch (IOException e) {
-            if (open) {
-                LOG.warn("Time sync answer to {} failed: {}", to, e.toString());
-            }
+            return handler.datagram(data, length, from);
+        } catch (RuntimeException e) {
+            LOG.error("Time sync datagram handling failed; the link goes on", e);
+            return SyncMessage.error("-", "internal", e.toString());
         }
+    }
+
+    private void answer(String answer, InetSocketAddress to) {
+        if (answer == null) {
+            return;
+        }
+        socket.send(answer.getBytes(StandardCharsets.US_ASCII), to, (bytes, address, failure) -> {
+            if (failure != null) {
+                LOG.warn("Time sync answer to {} failed: {}", address, failure.toString());
+            }
+        });
     }
 
     @Override
     public void close() {
-        open = false;
         socket.close();
-        receiver.shutdown();
-        try {
-            if (!receiver.awaitTermination(2, TimeUnit.SECONDS)) {
-                receiver.shutdownNow();
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
     }
 }

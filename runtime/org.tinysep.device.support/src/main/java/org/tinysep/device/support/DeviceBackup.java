@@ -1,6 +1,5 @@
 package org.tinysep.device.support;
 
-import java.time.Instant;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -29,24 +28,27 @@ final class DeviceBackup {
         this.device = device;
     }
 
-    ComponentBackup snapshot(String roomUid, List<Parameter> settings, Object nodeAddress, Object nodeTypes,
-            Instant lastSeen, Map<String, String> state) {
+    /** @return the device's backup as of now: name, room, kept writable parameters, node, state */
+    ComponentBackup snapshot(DeviceParameters settings, DeviceRegistration registration) {
         DriverContext c = device.context;
         Map<String, String> parameters = new LinkedHashMap<>();
+        String roomUid = settings.savedRoomUid();
         if (roomUid != null) {
             parameters.put(RoomPlacement.KEY, roomUid);
         }
-        for (Parameter p : settings) {
-            if (p.writable() && !p.key().equals("name") && !p.key().equals(RoomPlacement.KEY)
+        for (Parameter p : settings.list()) {
+            if (p.writable() && !p.key().equals(DeviceParameters.NAME) && !p.key().equals(RoomPlacement.KEY)
                     && device.backedUp(p.key()) && p.value() != null && !p.value().isBlank()) {
                 parameters.put(p.key(), p.value());
             }
         }
+        Object nodeAddress = registration.property(DeviceProperties.NODE_ADDRESS);
+        Object nodeTypes = registration.property(DeviceProperties.NODE_TYPE);
         List<String> types = nodeTypes instanceof String[] a ? Arrays.asList(a)
                 : nodeTypes == null ? List.of() : List.of(String.valueOf(nodeTypes));
         return new ComponentBackup(device.uid(), ComponentKind.DEVICE, c.driverUid(), c.driverName(), device.type(),
-                device.name(), parameters, nodeAddress == null ? "" : String.valueOf(nodeAddress), types, lastSeen,
-                state, c.now());
+                device.name(), parameters, nodeAddress == null ? "" : String.valueOf(nodeAddress), types,
+                device.lastSeen(), device.backupState(), c.now());
     }
 
     /** From now on changes are saved (after the device registered, with its restored settings). */
@@ -79,23 +81,22 @@ final class DeviceBackup {
         }
     }
 
-    /** Applies the saved settings to a device that is not registered yet. */
-    static void restore(AbstractDevice device, ComponentBackup b, RoomPlacement room, boolean placeable) {
-        DriverContext c = device.context;
+    /** Applies a saved backup to a device that is not registered yet: name, settings, then its own state. */
+    void restore(ComponentBackup b, DeviceParameters settings) {
+        settings.restoreName(b.name());
         for (Map.Entry<String, String> e : b.parameters().entrySet()) {
             String key = e.getKey();
             try {
                 if (RoomPlacement.KEY.equals(key)) {
-                    if (placeable) {
-                        room.restore(e.getValue());
-                    }
+                    settings.restoreRoom(e.getValue());
                 } else if (!DeviceProperties.ROOM.equals(key)) {
                     device.applyParameter(key, e.getValue());
                 }
             } catch (RuntimeException ex) {
-                c.reporter().event(EventKind.PROBLEM, device.uid(), "saved setting " + key + "=" + e.getValue()
-                        + " not restored: " + ex.getMessage());
+                device.context.reporter().event(EventKind.PROBLEM, device.uid(), "saved setting " + key + "="
+                        + e.getValue() + " not restored: " + ex.getMessage());
             }
         }
+        device.onRestore(b);
     }
 }

@@ -11,7 +11,8 @@ import org.tinysep.api.device.Connection;
 
 class ConsumptionsTest {
 
-    private static final class Handle implements Connection {
+    /** A connection that only knows whether it is open; also used by DeviceBasicsTest. */
+    static final class Handle implements Connection {
         boolean open = true;
 
         @Override

@@ -1,26 +1,44 @@
 package org.tinysep.runtime.internal;
 
 import java.time.Instant;
+import java.util.function.Function;
+import java.util.function.ToLongFunction;
 
 /**
  * Turns log entries into single text lines and back. A line is tab-separated fields, starting with the entry's
  * time (ISO-8601 UTC) and sequence number; text fields are escaped ({@link Escaping}) so that no field contains a
- * tab or a line break.
+ * tab or a line break. A subclass writes and reads the fields of one entry type and names its sequence and time.
  *
  * @param <E> the entry type
  */
-interface LineCodec<E> {
+abstract class LineCodec<E> {
+
+    private final ToLongFunction<E> sequence;
+    private final Function<E, Instant> time;
+
+    /**
+     * @param sequence the entry's sequence number
+     * @param time     the entry's time
+     */
+    LineCodec(ToLongFunction<E> sequence, Function<E, Instant> time) {
+        this.sequence = sequence;
+        this.time = time;
+    }
 
     /** @return the line for {@code entry}, without a line terminator */
-    String encode(E entry);
+    abstract String encode(E entry);
 
     /**
      * @return the entry of a line written by {@link #encode}
      * @throws IllegalArgumentException when the line is damaged (wrong field count, bad time, kind or bytes)
      */
-    E decode(String line);
+    abstract E decode(String line);
 
-    long sequence(E entry);
+    final long sequence(E entry) {
+        return sequence.applyAsLong(entry);
+    }
 
-    Instant time(E entry);
+    final Instant time(E entry) {
+        return time.apply(entry);
+    }
 }

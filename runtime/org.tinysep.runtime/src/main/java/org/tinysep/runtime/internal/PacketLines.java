@@ -1,6 +1,5 @@
 package org.tinysep.runtime.internal;
 
-import java.time.Instant;
 import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.PacketEntry;
 
@@ -9,28 +8,22 @@ import org.tinysep.api.log.PacketEntry;
  * upper-case hexadecimal without separators, e.g.
  * {@code 2026-11-22T11:10:00.123Z	7	RECEIVED	node 1.17 via 127.0.0.1:47001	AA0112FF	}.
  */
-final class PacketLines implements LineCodec<PacketEntry> {
+final class PacketLines extends LineCodec<PacketEntry> {
+
+    PacketLines() {
+        super(PacketEntry::sequence, PacketEntry::time);
+    }
 
     @Override
-    public String encode(PacketEntry p) {
+    String encode(PacketEntry p) {
         return p.time() + "\t" + p.sequence() + "\t" + p.direction().name() + "\t" + Escaping.escape(p.origin())
                 + "\t" + Escaping.hex(p.bytes()) + "\t" + Escaping.escape(p.note());
     }
 
     @Override
-    public PacketEntry decode(String line) {
+    PacketEntry decode(String line) {
         String[] f = Fields.split(line, 6);
         return new PacketEntry(Fields.sequence(f[1]), Fields.time(f[0]), Direction.valueOf(f[2]),
                 Escaping.unescape(f[3]), Escaping.unhex(f[4]), Escaping.unescape(f[5]));
-    }
-
-    @Override
-    public long sequence(PacketEntry p) {
-        return p.sequence();
-    }
-
-    @Override
-    public Instant time(PacketEntry p) {
-        return p.time();
     }
 }

@@ -2,6 +2,9 @@ package org.tinysep.amica.busradio.base;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.flip;
+import static org.tinysep.link.frame.testing.TestBytes.insert;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -155,25 +158,5 @@ class FrameHandlerFuzzTest {
     private static byte[] frame(Random r, byte[] payload) {
         return AmicaCodec.encode(new AmicaFrame(Fuzz.between(r, 1, 2), Fuzz.between(r, 1, 4),
                 0, Fuzz.between(r, 0, 255), payload));
-    }
-
-    static byte[] flip(byte[] f, int bit) {
-        byte[] out = f.clone();
-        out[bit / 8] ^= (byte) (1 << (bit % 8));
-        return out;
-    }
-
-    static byte[] insert(byte[] f, int at, byte b) {
-        byte[] out = new byte[f.length + 1];
-        System.arraycopy(f, 0, out, 0, at);
-        out[at] = b;
-        System.arraycopy(f, at, out, at + 1, f.length - at);
-        return out;
-    }
-
-    static byte[] concat(byte[] a, byte[] b) {
-        byte[] out = Arrays.copyOf(a, a.length + b.length);
-        System.arraycopy(b, 0, out, a.length, b.length);
-        return out;
     }
 }

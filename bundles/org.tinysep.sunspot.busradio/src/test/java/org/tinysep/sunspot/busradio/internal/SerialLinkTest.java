@@ -17,7 +17,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.serial.support.testing.SocatPair;
+import org.tinysep.testsupport.serial.SocatPair;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.PetMovementDetection;

@@ -3,7 +3,6 @@ package org.tinysep.amica.busradio.serial.internal;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 import static org.tinysep.amica.busradio.serial.internal.Wiring.concat;
 import static org.tinysep.amica.busradio.serial.internal.Wiring.frame;
 import static org.tinysep.amica.busradio.serial.internal.Wiring.keepAlive;
@@ -16,7 +15,6 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
@@ -35,8 +33,9 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.serial.support.SerialPortLink;
-import org.tinysep.serial.support.testing.PtyPeer;
-import org.tinysep.serial.support.testing.SocatPair;
+import org.tinysep.testsupport.serial.PtyPeer;
+import org.tinysep.testsupport.serial.SocatPair;
+import org.tinysep.testsupport.wait.Await;
 
 /**
  * The serial bus radio without the framework, on a real socat pseudo-terminal pair: frames and garbage written at
@@ -167,12 +166,6 @@ class SerialRadioTest {
     }
 
     static void await(BooleanSupplier condition, String what) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out after 10 s waiting for " + what);
-            }
-            Thread.sleep(10);
-        }
+        Await.until(condition, what);
     }
 }

@@ -24,6 +24,7 @@ import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.SourceGate;
+import org.tinysep.link.udp.DatagramLink;
 
 /**
  * Bus Radio AmICA UDP/IP (thesis 4.4.1.2): listens on a UDP port and hands each datagram to the shared AmICA bus
@@ -49,7 +50,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private RejectCounter rejects;
     private AmicaNodes<InetSocketAddress> nodes;
     private FrameHandler<InetSocketAddress> handler;
-    private UdpTransport transport;
+    private DatagramLink transport;
     private String listening;
     private PlatformTicker ticker;
     private SourceGate gate;
@@ -74,7 +75,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         }
         String problem = null;
         try {
-            transport = UdpTransport.open(config.bindAddress(), config.port(), config.receiveBufferBytes(), NAME);
+            transport = DatagramLink.open(config.bindAddress(), config.port(), config.receiveBufferBytes(),
+                    NAME + "-receive");
             listening = "listening on " + transport.localAddress();
             props.put(PORT_PROPERTY, transport.localPort());
             LOG.info("{} {} (receive buffer {} bytes)", NAME, listening, transport.receiveBufferSize());
@@ -152,7 +154,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     @Override
     public void transmit(byte[] frame, InetSocketAddress to, AmicaNodes.Outcome outcome) {
-        UdpTransport t = transport;
+        DatagramLink t = transport;
         if (t == null) {
             outcome.done("not sent: " + listening);
             return;

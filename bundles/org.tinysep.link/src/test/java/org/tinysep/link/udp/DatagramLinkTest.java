@@ -1,4 +1,4 @@
-package org.tinysep.amica.busradio.udp.internal;
+package org.tinysep.link.udp;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -21,13 +21,13 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
 /** Real UDP sockets on 127.0.0.1: datagrams in reach the receiver, frames out reach the peer. */
-class UdpTransportTest {
+class DatagramLinkTest {
 
     @Test
     void receivesDatagramsAndSendsBackToTheSourceAddress() throws Exception {
         BlockingQueue<byte[]> received = new LinkedBlockingQueue<>();
         BlockingQueue<InetSocketAddress> sources = new LinkedBlockingQueue<>();
-        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
                 DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             transport.start((data, length, from) -> {
                 received.add(Arrays.copyOf(data, length));
@@ -58,7 +58,7 @@ class UdpTransportTest {
     @Test
     void aThrowingReceiverDoesNotStopTheReceiveLoop() throws Exception {
         BlockingQueue<Integer> seen = new LinkedBlockingQueue<>();
-        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
                 DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             transport.start((data, length, from) -> {
                 seen.add((int) data[0]);
@@ -84,9 +84,9 @@ class UdpTransportTest {
     void drainReturnsOnlyWhenEveryDatagramSentBeforeItWasHandledInOrder() throws Exception {
         List<Integer> seen = new CopyOnWriteArrayList<>();
         CountDownLatch loopBusy = new CountDownLatch(1);
-        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
                 DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
-            UdpTransport.Receiver receiver = (data, length, from) -> {
+            DatagramLink.Receiver receiver = (data, length, from) -> {
                 int i = data[0];
                 if (i == 0) {
                     loopBusy.countDown();
@@ -109,7 +109,7 @@ class UdpTransportTest {
     @Test
     void drainHandsOverWaitingDatagramsOnTheCallersThread() throws Exception {
         List<String> threads = new CopyOnWriteArrayList<>();
-        try (UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
                 DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
             InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
             for (int i = 0; i < 20; i++) {
@@ -135,7 +135,7 @@ class UdpTransportTest {
 
     @Test
     void sendingAfterCloseReportsAFailureInsteadOfThrowing() throws Exception {
-        UdpTransport transport = UdpTransport.open("127.0.0.1", 0, 1 << 20, "test");
+        DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
         transport.close();
         CompletableFuture<Exception> outcome = new CompletableFuture<>();
         transport.send(new byte[] {1}, new InetSocketAddress("127.0.0.1", 9), (f, to, e) -> outcome.complete(e));

@@ -1,4 +1,4 @@
-package org.tinysep.launcher;
+package org.tinysep.testsupport.mail;
 
 import java.io.BufferedReader;
 import java.io.IOException;

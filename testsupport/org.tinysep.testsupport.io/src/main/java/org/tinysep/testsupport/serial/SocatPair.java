@@ -1,4 +1,4 @@
-package org.tinysep.itests.serial;
+package org.tinysep.testsupport.serial;
 
 import java.io.File;
 import java.io.IOException;
@@ -7,34 +7,39 @@ import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 
 /**
- * A socat pseudo-terminal pair with stable link paths {@code dir/a} and {@code dir/b}: what a USB serial adapter
- * and the node behind it look like to the link. Killing it makes both ends vanish; starting it again creates new
- * pseudo-terminals behind the same link paths.
- * <p>
- * A deliberate copy of {@code org.tinysep.serial.support.testing.SocatPair}, the one the unit tests share: these
- * tests run inside Pax Exam's probe bundle, which loads only its own classes and packages exported in the
- * framework, and no bundle exports that package (ClassNotFoundException when tried).
+ * Test utility: a socat pseudo-terminal pair with stable link paths {@code dir/a} and {@code dir/b}, what a USB
+ * serial adapter and the node behind it look like to a serial link. Killing it makes both ends vanish; starting it
+ * again creates new pseudo-terminals behind the same link paths. Needs the {@code socat} executable on the
+ * {@code PATH}.
  */
-final class SocatPair implements AutoCloseable {
+public final class SocatPair implements AutoCloseable {
 
     private final Path dir;
     private Process process;
     private int starts;
 
-    SocatPair(Path dir) {
+    /** @param dir an existing folder for the link paths and socat's logs ({@code socat-<n>.log}) */
+    public SocatPair(Path dir) {
         this.dir = dir;
     }
 
-    Path a() {
+    /** @return the link path of one end, {@code dir/a} (usually the port the code under test opens) */
+    public Path a() {
         return dir.resolve("a");
     }
 
-    Path b() {
+    /** @return the link path of the other end, {@code dir/b} (usually the far end, see {@link PtyPeer}) */
+    public Path b() {
         return dir.resolve("b");
     }
 
-    /** Starts socat and waits until both link paths exist and it is transferring data. */
-    SocatPair start() throws IOException, InterruptedException {
+    /**
+     * Starts socat and waits until both link paths exist and it is transferring data.
+     *
+     * @return this pair
+     * @throws IllegalStateException if socat did not come up within 10 s, with its log
+     */
+    public SocatPair start() throws IOException, InterruptedException {
         Path log = dir.resolve("socat-" + (++starts) + ".log");
         process = new ProcessBuilder(socat(), "-d", "-d", "pty,raw,echo=0,link=" + a(), "pty,raw,echo=0,link=" + b())
                 .redirectErrorStream(true).redirectOutput(log.toFile()).start();
@@ -48,8 +53,8 @@ final class SocatPair implements AutoCloseable {
         return this;
     }
 
-    /** Kills socat and waits until it is gone and its link paths are removed. */
-    void kill() throws InterruptedException {
+    /** Kills socat and waits (up to 5 s) until it is gone and its link paths are removed; does nothing if stopped. */
+    public void kill() throws InterruptedException {
         if (process == null) {
             return;
         }
@@ -64,13 +69,17 @@ final class SocatPair implements AutoCloseable {
         }
     }
 
+    /** Same as {@link #kill()}. */
     @Override
     public void close() throws InterruptedException {
         kill();
     }
 
-    /** @return the socat executable; fails with a clear message when it is not installed */
-    static String socat() {
+    /**
+     * @return the socat executable found on the {@code PATH}
+     * @throws AssertionError when socat is not installed, saying how to install it (so the test fails clearly)
+     */
+    public static String socat() {
         for (String dir : System.getenv().getOrDefault("PATH", "/usr/bin:/bin").split(File.pathSeparator)) {
             File f = new File(dir, "socat");
             if (f.canExecute()) {

@@ -1,4 +1,4 @@
-package org.tinysep.itests.serial;
+package org.tinysep.testsupport.serial;
 
 import java.io.ByteArrayOutputStream;
 import java.io.FileInputStream;
@@ -8,27 +8,31 @@ import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 
 /**
- * The far end of a pseudo-terminal pair, opened as plain files: writes bytes, reads them with a deadline. A
- * deliberate copy of {@code org.tinysep.serial.support.testing.PtyPeer}: the probe bundle cannot load that package
- * (see {@link SocatPair}).
+ * Test utility: the far end of a pseudo-terminal pair ({@link SocatPair#b()}), opened as plain files, playing the
+ * device behind the port: writes bytes, reads them with a deadline.
  */
-final class PtyPeer implements AutoCloseable {
+public final class PtyPeer implements AutoCloseable {
 
     private final FileInputStream in;
     private final FileOutputStream out;
 
-    PtyPeer(Path path) throws IOException {
+    /** @param path the pseudo-terminal (or its link path) to open for writing and reading */
+    public PtyPeer(Path path) throws IOException {
         this.out = new FileOutputStream(path.toFile());
         this.in = new FileInputStream(path.toFile());
     }
 
-    void write(byte[] bytes) throws IOException {
+    /** Writes and flushes {@code bytes}. */
+    public void write(byte[] bytes) throws IOException {
         out.write(bytes);
         out.flush();
     }
 
-    /** @return exactly {@code n} bytes, or fails after 5 s */
-    byte[] read(int n) throws IOException, InterruptedException {
+    /**
+     * @return exactly {@code n} bytes
+     * @throws AssertionError when they have not all arrived within 5 s
+     */
+    public byte[] read(int n) throws IOException, InterruptedException {
         ByteArrayOutputStream got = new ByteArrayOutputStream();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
         while (got.size() < n) {

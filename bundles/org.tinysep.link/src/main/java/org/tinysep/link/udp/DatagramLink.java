@@ -1,4 +1,4 @@
-package org.tinysep.amica.busradio.udp.internal;
+package org.tinysep.link.udp;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -17,26 +17,30 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The UDP socket of the driver: one receive loop on its own single-thread executor that {@link #close()} shuts
+ * A UDP socket with one receive loop on its own single-thread executor that {@link #close()} shuts
  * down; datagrams are handed to the receiver synchronously on the receive thread. {@link #drain} hands over every
  * datagram already waiting on the caller's thread instead (the platform tick calls it, so in lock-step every frame
  * sent before a TICK is handled before its DONE). Receive loop and drain never interleave: one lock, held while a
  * datagram is handled. Sends go out on the caller's thread: a UDP send does not wait for the peer, and a command
- * sent while the Time Controller handles a TICK is then on the wire before its DONE.
+ * sent while the Time Controller handles a TICK is then on the wire before its DONE. A receiver that throws is
+ * logged and the loop goes on.
+ * <p>
+ * The AmICA UDP bus radio uses all of it; the Sun SPOT bus radio's UDP link adds its source gate in its receiver,
+ * the Time Controller's synchroniser link answers each request from its receiver with {@link #send}.
  */
-final class UdpTransport implements AutoCloseable {
+public final class DatagramLink implements AutoCloseable {
 
     /** Receives each datagram; {@code data} is reused after the call returns. */
-    interface Receiver {
+    public interface Receiver {
         void datagram(byte[] data, int length, InetSocketAddress from);
     }
 
     /** Told the outcome of each send. */
-    interface SendResult {
+    public interface SendResult {
         void done(byte[] frame, InetSocketAddress to, IOException failure);
     }
 
-    private static final Logger LOG = LoggerFactory.getLogger(UdpTransport.class);
+    private static final Logger LOG = LoggerFactory.getLogger(DatagramLink.class);
     /** Larger than any valid frame, so an oversize datagram is seen as such rather than cut silently. */
     static final int RECEIVE_BUFFER = 2048;
 
@@ -46,18 +50,27 @@ final class UdpTransport implements AutoCloseable {
     private final ByteBuffer buffer = ByteBuffer.allocate(RECEIVE_BUFFER);
     private volatile boolean open = true;
 
-    private UdpTransport(DatagramChannel channel, Selector selector, String name) {
+    private DatagramLink(DatagramChannel channel, Selector selector, String threadName) {
         this.channel = channel;
         this.selector = selector;
-        this.receiveExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, name + "-receive"));
+        this.receiveExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, threadName));
     }
 
-    /** Binds the socket; nothing is received until {@link #start(Receiver)}. */
-    static UdpTransport open(String bindAddress, int port, int receiveBufferBytes, String name) throws IOException {
+    /**
+     * Binds the socket; nothing is received until {@link #start(Receiver)}.
+     *
+     * @param receiveBufferBytes the socket's receive buffer (SO_RCVBUF); 0 keeps the system's default
+     * @param threadName         the name of the receive thread
+     * @throws IOException if the address cannot be bound, e.g. the port is taken ({@link java.net.BindException})
+     */
+    public static DatagramLink open(String bindAddress, int port, int receiveBufferBytes, String threadName)
+            throws IOException {
         DatagramChannel channel = DatagramChannel.open();
         Selector selector = null;
         try {
-            channel.setOption(StandardSocketOptions.SO_RCVBUF, receiveBufferBytes);
+            if (receiveBufferBytes > 0) {
+                channel.setOption(StandardSocketOptions.SO_RCVBUF, receiveBufferBytes);
+            }
             channel.bind(new InetSocketAddress(InetAddress.getByName(bindAddress), port));
             channel.configureBlocking(false);
             selector = Selector.open();
@@ -69,19 +82,19 @@ final class UdpTransport implements AutoCloseable {
             }
             throw e;
         }
-        return new UdpTransport(channel, selector, name);
+        return new DatagramLink(channel, selector, threadName);
     }
 
     /** Starts the receive loop; datagrams queued in the socket buffer meanwhile are not lost. */
-    void start(Receiver receiver) {
+    public void start(Receiver receiver) {
         receiveExecutor.execute(() -> receiveLoop(receiver));
     }
 
-    int localPort() {
+    public int localPort() {
         return local().getPort();
     }
 
-    String localAddress() {
+    public String localAddress() {
         InetSocketAddress a = local();
         return a.getAddress().getHostAddress() + ":" + a.getPort();
     }
@@ -94,7 +107,7 @@ final class UdpTransport implements AutoCloseable {
         }
     }
 
-    int receiveBufferSize() {
+    public int receiveBufferSize() {
         try {
             return channel.getOption(StandardSocketOptions.SO_RCVBUF);
         } catch (IOException e) {
@@ -125,7 +138,7 @@ final class UdpTransport implements AutoCloseable {
      *
      * @return how many datagrams it handed over
      */
-    int drain(Receiver receiver) {
+    public int drain(Receiver receiver) {
         int n = 0;
         synchronized (buffer) {
             while (open) {
@@ -146,7 +159,7 @@ final class UdpTransport implements AutoCloseable {
                 try {
                     receiver.datagram(buffer.array(), buffer.position(), (InetSocketAddress) from);
                 } catch (RuntimeException e) {
-                    LOG.error("Datagram handling failed; the receive loop goes on", e);
+                    LOG.error("Datagram handling on {} failed; the receive loop goes on", localAddress(), e);
                 }
             }
         }
@@ -154,7 +167,7 @@ final class UdpTransport implements AutoCloseable {
     }
 
     /** Sends a datagram on the caller's thread and reports the outcome; a closed transport fails at once. */
-    void send(byte[] frame, InetSocketAddress to, SendResult result) {
+    public void send(byte[] frame, InetSocketAddress to, SendResult result) {
         if (!open) {
             result.done(frame, to, new IOException("bus radio is closed"));
             return;

@@ -1,15 +1,15 @@
-package org.tinysep.sunspot.protocol;
+package org.tinysep.link.frame;
 
-/** Formats bytes as upper-case hex for messages and {@code toString()}; package-private helper. */
-final class Hex {
+/** Formats bytes as upper-case hex for messages and {@code toString()}, and parses hex digits. */
+public final class Hex {
 
     private static final char[] DIGITS = "0123456789ABCDEF".toCharArray();
 
     private Hex() {
     }
 
-    /** @return e.g. {@code "02 01 00 01"}; empty string for no bytes */
-    static String of(byte[] bytes, int off, int len) {
+    /** @return e.g. {@code "52 00 0E"}; empty string for no bytes */
+    public static String of(byte[] bytes, int off, int len) {
         StringBuilder sb = new StringBuilder(len * 3);
         for (int i = 0; i < len; i++) {
             if (i > 0) {
@@ -22,12 +22,12 @@ final class Hex {
     }
 
     /** @return e.g. {@code "0xA1"} */
-    static String ofByte(int value) {
+    public static String ofByte(int value) {
         return "0x" + DIGITS[(value >>> 4) & 0x0F] + DIGITS[value & 0x0F];
     }
 
     /** @return the value of one hex digit, or -1 if {@code c} is none */
-    static int digit(char c) {
+    public static int digit(char c) {
         if (c >= '0' && c <= '9') {
             return c - '0';
         }
@@ -41,7 +41,7 @@ final class Hex {
     }
 
     /** @return {@code digits} upper-case hex digits of the low bits of {@code value}, zero-padded */
-    static String digits(long value, int digits) {
+    public static String digits(long value, int digits) {
         char[] out = new char[digits];
         for (int i = digits - 1; i >= 0; i--) {
             out[i] = DIGITS[(int) (value & 0x0F)];

@@ -1,0 +1,105 @@
+package org.tinysep.link.frame;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.tinysep.link.frame.testing.TestBytes.concat;
+import static org.tinysep.link.frame.testing.TestBytes.hex;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.FrameChecks;
+
+/**
+ * The shared skeleton on its own, with the smallest format there is: S, CK, L, then S payload bytes (the two
+ * families test it again through their own formats).
+ */
+class FrameStreamTest {
+
+    enum Reason { TRUNCATED, OVERSIZE, LENGTH_MISMATCH, BAD_CHECKSUM }
+
+    static final class Toy extends FrameFormat<String, Reason> {
+        Toy() {
+            super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM);
+        }
+
+        @Override
+        protected String frameAt(byte[] buf, int off) {
+            return "frame " + Arrays.toString(Arrays.copyOfRange(buf, off + 3, off + 3 + size(buf, off)));
+        }
+    }
+
+    private static final Toy TOY = new Toy();
+    private final List<String> events = new ArrayList<>();
+    private final FrameStream<String, Reason> stream =
+            new FrameStream<>(TOY, events::add, (r, n) -> events.add(r + " " + n));
+
+    private static byte[] frame(String payload) {
+        byte[] p = hex(payload);
+        byte[] out = new byte[3 + p.length];
+        System.arraycopy(p, 0, out, 3, p.length);
+        return TOY.seal(out, p.length);
+    }
+
+    private void feed(byte[] bytes) {
+        stream.accept(bytes, 0, bytes.length);
+    }
+
+    @Test
+    void sealWritesSizeLengthAndTheCrcOfEveryOtherByte() {
+        byte[] f = frame("01 02");
+        assertEquals(2, f[0]);
+        assertEquals(2, f[2]);
+        byte[] withoutCk = {f[0], f[2], f[3], f[4]};
+        assertEquals(Crc8.of(withoutCk, 0, withoutCk.length), f[1] & 0xFF);
+        assertNull(TOY.check(f, 0, f.length));
+    }
+
+    @Test
+    void checksInTheSharedOrderWithTheirDetails() {
+        byte[] f = frame("01 02");
+        assertEquals(Reason.TRUNCATED, TOY.check(f, 0, 2));
+        assertEquals("2 bytes, a frame has at least 3", TOY.detail(Reason.TRUNCATED, f, 0, 2));
+        assertEquals(Reason.TRUNCATED, TOY.check(f, 0, 4));
+        assertEquals(Reason.OVERSIZE, TOY.check(concat(f, hex("00")), 0, 6));
+        byte[] mismatch = f.clone();
+        mismatch[2] = 3;
+        assertEquals(Reason.LENGTH_MISMATCH, TOY.check(mismatch, 0, mismatch.length));
+        assertEquals("size identifier 2, payload length 3", TOY.detail(Reason.LENGTH_MISMATCH, mismatch, 0, 5));
+        byte[] bad = f.clone();
+        bad[4] ^= 1;
+        assertEquals(Reason.BAD_CHECKSUM, TOY.check(bad, 0, bad.length));
+        assertThrows(IllegalStateException.class, () -> TOY.decode(bad, 0, bad.length,
+                (reason, detail) -> new IllegalStateException(reason + ": " + detail)));
+    }
+
+    @Test
+    void findsFramesAfterGarbageAndReportsEachRunOnce() {
+        feed(concat(hex("07 00"), frame("0A"), hex("FF"), frame("")));
+        assertEquals(List.of("LENGTH_MISMATCH 2", "frame [10]", "LENGTH_MISMATCH 1", "frame []"), events);
+    }
+
+    @Test
+    void sameResultWhenSplitAnywhere() {
+        byte[] bytes = concat(hex("05 00 07"), frame("01 02 03"), hex("00 01 00"), frame("AA"));
+        feed(bytes);
+        List<String> expected = List.copyOf(events);
+        assertEquals(List.of("LENGTH_MISMATCH 3", "frame [1, 2, 3]", "BAD_CHECKSUM 3", "frame [-86]"), expected);
+        FrameChecks.assertSplitsAlike(bytes, expected, () -> {
+            List<String> e = new ArrayList<>();
+            FrameStream<String, Reason> s = new FrameStream<>(TOY, e::add, (r, n) -> e.add(r + " " + n));
+            return new FrameChecks.Feeding(s::accept, () -> e);
+        });
+    }
+
+    @Test
+    void resetReportsAnIncompleteFrameAsTruncated() {
+        feed(Arrays.copyOf(frame("01 02 03"), 4));
+        assertEquals(4, stream.buffered());
+        stream.reset();
+        assertEquals(List.of("TRUNCATED 4"), events);
+        assertEquals(0, stream.buffered());
+    }
+}

@@ -1,0 +1,94 @@
+package org.tinysep.device.support;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.BiConsumer;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+
+/**
+ * A device's parameters: the {@code name} and {@code room} every device has (room only when
+ * {@link AbstractDevice#placeable()}), followed by the device's own ({@link AbstractDevice#moreParameters()},
+ * {@link AbstractDevice#applyParameter(String, String)}).
+ */
+final class DeviceParameters {
+
+    static final String NAME = "name";
+
+    private final AbstractDevice device;
+    private final RoomPlacement room;
+    private volatile String name;
+
+    /**
+     * @param property sets a service property on all the device's services (the room's UID)
+     * @param roomChanged told when the room changed by itself (the room was removed from the house)
+     */
+    DeviceParameters(AbstractDevice device, String name, BiConsumer<String, Object> property, Runnable roomChanged) {
+        this.device = device;
+        this.name = name;
+        this.room = new RoomPlacement(device.uid(), device.context, property, roomChanged);
+    }
+
+    String name() {
+        return name;
+    }
+
+    /** @return the UID of the room the device is placed in, or null */
+    String roomUid() {
+        return room.roomUid();
+    }
+
+    /** @return the room UID to keep in the backup: null when unplaced or not placeable */
+    String savedRoomUid() {
+        return device.placeable() ? room.roomUid() : null;
+    }
+
+    List<Parameter> list() {
+        List<Parameter> all = new ArrayList<>();
+        all.add(Parameter.writable(NAME, name, "name shown to the user"));
+        if (device.placeable()) {
+            all.add(room.parameter());
+        }
+        all.addAll(device.moreParameters());
+        return all;
+    }
+
+    void set(String key, String value) {
+        if (NAME.equals(key)) {
+            if (value == null || value.isBlank()) {
+                throw new IllegalArgumentException("name must not be blank");
+            }
+            name = value.strip();
+            device.context.reporter().event(EventKind.DEVICE_EVENT, device.uid(), "renamed to \"" + name + "\"");
+        } else if (RoomPlacement.KEY.equals(key) && device.placeable()) {
+            room.set(value);
+        } else {
+            device.applyParameter(key, value);
+        }
+    }
+
+    /** Takes the saved name, before the device registers; a blank one is ignored. */
+    void restoreName(String saved) {
+        if (!saved.isBlank()) {
+            name = saved;
+        }
+    }
+
+    /** Takes the saved room, before the device registers; ignored when the device is not placeable. */
+    void restoreRoom(String uid) {
+        if (device.placeable()) {
+            room.restore(uid);
+        }
+    }
+
+    IllegalArgumentException unknown(String key) {
+        List<String> writable = list().stream().filter(Parameter::writable).map(Parameter::key).toList();
+        return new IllegalArgumentException("unknown or read-only parameter '" + key + "' of " + device.type()
+                + "; writable: " + String.join(", ", writable));
+    }
+
+    /** Stops watching the house; called when the device goes. */
+    void close() {
+        room.close();
+    }
+}
