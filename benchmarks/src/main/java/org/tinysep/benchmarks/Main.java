@@ -117,8 +117,9 @@ public final class Main {
         }
     }
 
+    /** @return the value after the last {@code name} (run.sh's defaults come first, the user's win) */
     private static String arg(String[] args, String name, String otherwise) {
-        for (int i = 0; i < args.length - 1; i++) {
+        for (int i = args.length - 2; i >= 0; i--) {
             if (args[i].equals(name)) {
                 return args[i + 1];
             }
