@@ -40,15 +40,7 @@ public final class Main {
         step("latency", report, () -> new Latency().run(b));
         step("scale", report, () -> new Scale().run(b, footprint.chosenIdleRssKb));
         step("lockstep", report, () -> new LockStep72h().run(b));
-        if (only.isEmpty()) {
-            report.heading("Hot update under 10k frames/s (not yet measured by this harness)");
-            report.text("Swapping the AmICA Movement bundle (`Bundle.update`) while 50 nodes send 10,000 frames/s is "
-                    + "measured by the integration test `HotUpdateUnderLoadTest` in a Pax Exam framework, not yet "
-                    + "against the distribution as a process: its last figures (docs/runtime-changes.md, 3 runs, "
-                    + "9 swaps): swap time median 219 ms (range 60–539 ms), **0 frames** delivered to no consumer "
-                    + "during or after any swap. Moving it here needs a consumer-side count from outside the "
-                    + "process (e.g. the movement devices' event counts); left for a follow-up.");
-        }
+        step("hotupdate", report, () -> new HotUpdate().run(b));
         String loadAfter = Machine.load();
         StringBuilder md = new StringBuilder();
         if (List.of(args).contains("--append") && Files.isRegularFile(out)) {

@@ -60,7 +60,19 @@ public final class BackupStoreService implements BackupStore {
         this.limits = new ArchiveUnpacker.Limits(positive(config.restoreMaxBytes(), DEFAULT_LIMITS.maxTotalBytes()),
                 positive(config.restoreMaxFileBytes(), DEFAULT_LIMITS.maxEntryBytes()),
                 (int) positive(config.restoreMaxFiles(), DEFAULT_LIMITS.maxEntries()));
+        // the framework is stopping: write the backlog now, while the drivers stop (10,000 devices take a while),
+        // not after them; a synchronous listener is told before any bundle stops
+        this.frameworkStopping = e -> {
+            if (e.getType() == org.osgi.framework.BundleEvent.STOPPING && e.getBundle().getBundleId() == 0) {
+                writer.flush();
+            }
+        };
+        context.addBundleListener(frameworkStopping);
+        this.context = context;
     }
+
+    private org.osgi.framework.SynchronousBundleListener frameworkStopping;
+    private BundleContext context;
 
     private static long positive(long value, long otherwise) {
         if (value > 0) {
@@ -122,6 +134,13 @@ public final class BackupStoreService implements BackupStore {
      */
     @Deactivate
     void deactivate() throws InterruptedException {
+        if (context != null) {
+            try {
+                context.removeBundleListener(frameworkStopping);
+            } catch (IllegalStateException stopped) {
+                // the bundle is already stopping
+            }
+        }
         int backlog = writer.backlog();
         long t0 = System.nanoTime();
         if (backlog > 0) {
