@@ -75,6 +75,11 @@ final class HotUpdate {
         }
         r.table(List.of("swap", "update", "devices back", "frames sent", "received by the radio", "kernel drops",
                 "lost before the radio"), rows);
+        Plot.bars(b.images().resolve("bench-hotupdate.png"), "Hot update under load: swap time (ms)", "ms",
+                out.stream().map(x -> "swap " + (out.indexOf(x) + 1)).toList(),
+                List.of(new Plot.Series("update", out.stream().map(Swap::updateMs).toList()),
+                        new Plot.Series("devices back", out.stream().map(Swap::backMs).toList())));
+        r.text("![hot update](../docs/images/bench-hotupdate.png)");
     }
 
     /** @return the bundle id of AmICA Movement, from the shell's {@code lb -s} */

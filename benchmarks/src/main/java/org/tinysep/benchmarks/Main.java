@@ -66,9 +66,14 @@ public final class Main {
                 .append("| load average after | ").append(loadAfter).append(" |\n\n");
         if (busy(loadBefore) || busy(loadAfter)) {
             md.append("**The machine was busy during this run** (load average above its ").append(Machine.cores())
-                    .append(" cores): other processes competed for the CPUs, so times and CPU shares are noisy and "
+                    .append(" cores): other processes competed for the CPUs and the disk, "
+                            + "so times and CPU shares are noisy and "
                             + "pessimistic; compare the ratios to the floors measured beside them, and re-run on a "
                             + "quiet machine before quoting a figure (a quiet re-run is due).\n\n");
+        }
+        String note = System.getenv("BENCH_MACHINE_NOTE"); // what the machine was doing, said by whoever ran this
+        if (note != null && !note.isBlank()) {
+            md.append("**The machine during this run:** ").append(note.strip()).append("\n\n");
         }
         md.append(report.markdown());
         if (only.isEmpty()) {
