@@ -40,15 +40,7 @@ public final class Main {
         step("latency", report, () -> new Latency().run(b));
         step("scale", report, () -> new Scale().run(b, footprint.chosenIdleRssKb));
         step("lockstep", report, () -> new LockStep72h().run(b));
-        if (only.isEmpty()) {
-            report.heading("Hot update under 10k frames/s (not yet measured by this harness)");
-            report.text("Swapping the AmICA Movement bundle (`Bundle.update`) while 50 nodes send 10,000 frames/s is "
-                    + "measured by the integration test `HotUpdateUnderLoadTest` in a Pax Exam framework, not yet "
-                    + "against the distribution as a process: its last figures (docs/runtime-changes.md, 3 runs, "
-                    + "9 swaps): swap time median 219 ms (range 60–539 ms), **0 frames** delivered to no consumer "
-                    + "during or after any swap. Moving it here needs a consumer-side count from outside the "
-                    + "process (e.g. the movement devices' event counts); left for a follow-up.");
-        }
+        step("hotupdate", report, () -> new HotUpdate().run(b));
         String loadAfter = Machine.load();
         StringBuilder md = new StringBuilder();
         if (List.of(args).contains("--append") && Files.isRegularFile(out)) {
@@ -74,9 +66,14 @@ public final class Main {
                 .append("| load average after | ").append(loadAfter).append(" |\n\n");
         if (busy(loadBefore) || busy(loadAfter)) {
             md.append("**The machine was busy during this run** (load average above its ").append(Machine.cores())
-                    .append(" cores): other processes competed for the CPUs, so times and CPU shares are noisy and "
+                    .append(" cores): other processes competed for the CPUs and the disk, "
+                            + "so times and CPU shares are noisy and "
                             + "pessimistic; compare the ratios to the floors measured beside them, and re-run on a "
                             + "quiet machine before quoting a figure (a quiet re-run is due).\n\n");
+        }
+        String note = System.getenv("BENCH_MACHINE_NOTE"); // what the machine was doing, said by whoever ran this
+        if (note != null && !note.isBlank()) {
+            md.append("**The machine during this run:** ").append(note.strip()).append("\n\n");
         }
         md.append(report.markdown());
         if (only.isEmpty()) {
@@ -117,8 +114,9 @@ public final class Main {
         }
     }
 
+    /** @return the value after the last {@code name} (run.sh's defaults come first, the user's win) */
     private static String arg(String[] args, String name, String otherwise) {
-        for (int i = 0; i < args.length - 1; i++) {
+        for (int i = args.length - 2; i >= 0; i--) {
             if (args[i].equals(name)) {
                 return args[i + 1];
             }

@@ -37,6 +37,8 @@ final class Platform implements AutoCloseable {
     private volatile long bannerNanos;
     private volatile String banner = "";
     private int marker;
+    private long stopAsked;
+    private long stopNanos;
 
     private Platform(Path home, int amicaPort, Process process, long startNanos) {
         this.home = home;
@@ -65,7 +67,7 @@ final class Platform implements AutoCloseable {
             }
         }
         Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
-                "port=" + amicaPort + "\nbindAddress=127.0.0.1\n");
+                "port=" + amicaPort + "\nbindAddress=127.0.0.1\nmaxNodes=20000\n"); // scale: above its default 1,000
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
         Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"), "syncPort=" + syncPort + "\n");
         Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
@@ -78,6 +80,10 @@ final class Platform implements AutoCloseable {
         List<String> cmd = new ArrayList<>();
         cmd.add(Machine.java());
         cmd.addAll(jvmArgs(jvmOptions));
+        String extra = System.getenv("BENCH_PLATFORM_JVM"); // e.g. a JFR recording while profiling (README)
+        if (extra != null && !extra.isBlank()) {
+            cmd.addAll(List.of(extra.strip().split("\\s+")));
+        }
         cmd.addAll(List.of("-jar", "tinysep.jar", "--var", var.toString()));
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(home.toFile())
                 .redirectError(ProcessBuilder.Redirect.appendTo(home.resolve("platform.log").toFile()));
@@ -103,6 +109,11 @@ final class Platform implements AutoCloseable {
             // the process ended
         }
         lines.add(EOF);
+    }
+
+    /** @return ms from closing the shell's input to the process's end (0 before {@link #close}) */
+    double msToStop() {
+        return stopNanos / 1e6;
     }
 
     long pid() {
@@ -169,15 +180,20 @@ final class Platform implements AutoCloseable {
     @Override
     public void close() throws InterruptedException {
         if (process.isAlive()) {
+            stopAsked = System.nanoTime();
             try {
                 stdin.close(); // end of input: the shell stops the framework cleanly
             } catch (IOException ignored) {
                 // closed
             }
-            if (!process.waitFor(60, TimeUnit.SECONDS)) {
+            // an orderly stop: the platform saves what its backup writer still holds first (bounded by the launcher)
+            if (!process.waitFor(5, TimeUnit.MINUTES)) {
                 process.destroyForcibly();
                 process.waitFor();
+                throw new IllegalStateException("the platform did not stop within 5 min of its shell's end; killed"
+                        + " (log: " + home.resolve("platform.log") + ")");
             }
+            stopNanos = System.nanoTime() - stopAsked;
         }
     }
 

@@ -11,8 +11,8 @@ import java.util.List;
  */
 final class Scale {
 
-    record Row(int nodes, double createMs, long rssKb, long heapKb, double devicesMs, double bannerMs,
-            double restoredMs, long restartRssKb) {
+    record Row(int nodes, double createMs, long rssKb, long heapKb, double devicesMs, double stopMs, long backupFiles,
+            double bannerMs, double restoredMs, long restartRssKb) {
     }
 
     /**
@@ -44,6 +44,10 @@ final class Scale {
     void run(Bench b, double idleRssKb) throws Exception {
         // nodes; each makes 2 devices (bus + movement): 100, 1,000 and 10,000 devices
         int[] counts = b.smoke() ? new int[] {20} : new int[] {50, 500, 5_000};
+        String only = System.getenv("BENCH_SCALE_NODES"); // e.g. 5000 while working on one size
+        if (only != null && !only.isBlank()) {
+            counts = java.util.Arrays.stream(only.split(",")).mapToInt(x -> Integer.parseInt(x.strip())).toArray();
+        }
         List<Row> rows = new ArrayList<>();
         List<String> failed = new ArrayList<>();
         for (int n : counts) {
@@ -65,7 +69,8 @@ final class Scale {
         long rss;
         long heap;
         double devicesMs;
-        try (Platform p = inst.start(b.chosen()); Nodes nodes = new Nodes(n, inst.amicaPort())) {
+        Platform first = inst.start(b.chosen());
+        try (Platform p = first; Nodes nodes = new Nodes(n, inst.amicaPort())) {
             long t0 = System.nanoTime();
             create = announceAll(p, nodes, n, t0);
             long d0 = System.nanoTime();
@@ -77,6 +82,11 @@ final class Scale {
                 throw new IllegalStateException("tinysep:devices listed " + lines + " lines for " + n + " nodes");
             }
         }
+        double stopMs = first.msToStop();
+        long backupFiles;
+        try (java.util.stream.Stream<java.nio.file.Path> f = java.nio.file.Files.walk(inst.var().resolve("backup"))) {
+            backupFiles = f.filter(x -> x.toString().endsWith(".xml")).count();
+        }
         double banner;
         double restored;
         long restartRss;
@@ -86,7 +96,7 @@ final class Scale {
             restored = p.msSinceStart();
             restartRss = p.rssKb();
         }
-        return new Row(n, create, rss, heap, devicesMs, banner, restored, restartRss);
+        return new Row(n, create, rss, heap, devicesMs, stopMs, backupFiles, banner, restored, restartRss);
     }
 
     private static void report(Bench b, double idleRssKb, List<Row> rows) throws Exception {
@@ -100,11 +110,12 @@ final class Scale {
             table.add(List.of(Integer.toString(x.nodes()), Integer.toString(2 * x.nodes()),
                     Report.f("%.1f s (%.0f nodes/s)", x.createMs() / 1000, x.nodes() / (x.createMs() / 1000)),
                     Report.mb(x.rssKb()), Report.ratio(x.rssKb(), idleRssKb), Report.mb(x.heapKb()),
-                    Report.f("%.0f ms", x.devicesMs()), Report.f("%.0f ms", x.bannerMs()),
+                    Report.f("%.0f ms", x.devicesMs()), Report.f("%.1f s", x.stopMs() / 1000),
+                    Long.toString(x.backupFiles()), Report.f("%.0f ms", x.bannerMs()),
                     Report.f("%.1f s", x.restoredMs() / 1000), Report.mb(x.restartRssKb())));
         }
         r.table(List.of("nodes", "devices", "creation", "RSS", "× idle", "live heap after GC", "`tinysep:devices`",
-                "restart: to banner", "restart: to all devices restored", "RSS after restart"), table);
+                "orderly stop", "backup files after the stop", "restart: to banner", "restart: to all devices restored", "RSS after restart"), table);
         List<String> labels = rows.stream().map(x -> Integer.toString(2 * x.nodes())).toList();
         Plot.bars(b.images().resolve("bench-scale.png"), "Memory by number of devices (MB)", "MB", labels,
                 List.of(new Plot.Series("RSS", rows.stream().map(x -> x.rssKb() / 1024.0).toList()),

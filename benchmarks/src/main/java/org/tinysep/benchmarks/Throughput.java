@@ -29,7 +29,7 @@ final class Throughput {
         List<Step> bare = new ArrayList<>();
         int barePort = Platform.freeUdpPort();
         try (Child receiver = new Child(b.chosen(), "receiver", Integer.toString(barePort));
-                Nodes sender = new Nodes(nodes, barePort)) {
+                Nodes sender = new Nodes(nodes, barePort, Nodes.SENDERS)) {
             for (int rate : rates) {
                 long before = Long.parseLong(receiver.ask());
                 long dropsBefore = KernelDrops.at(barePort);
@@ -46,7 +46,7 @@ final class Throughput {
         }
         List<Step> platform = new ArrayList<>();
         Bench.Installed inst = b.install("throughput");
-        try (Platform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort())) {
+        try (Platform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort(), Nodes.SENDERS)) {
             sender.announce(2_000);
             Bench.awaitDevices(p, "AmicaMovement", nodes, Duration.ofMinutes(2));
             for (int rate : rates) {
@@ -68,7 +68,9 @@ final class Throughput {
         bareMax = max(bare);
         Report r = b.report();
         r.heading("Maximum zero-loss throughput (" + nodes + " AmICA movement nodes, motion frames)");
-        r.text("Each step sends for " + seconds + " s at the offered rate (one sender thread, paced per ms); a step is "
+        r.text("Each step sends for " + seconds + " s at the offered rate (" + Nodes.SENDERS + " sender threads, each its own socket and "
+                + "its share of the nodes, paced per ms; the same sender for TinySEP and the bare receiver; on this "
+                + Machine.cores() + "-core machine sender and receiver share the cores); a step is "
                 + "loss-free when every frame sent was taken (platform: the radio's own `received` counter minus `rejected`, from `tinysep:drivers`; "
                 + "bare receiver: its count) and the kernel dropped none at the socket (`/proc/net/udp` + `udp6`). "
                 + "Stepping stops at the first loss. The full path runs: radio → movement devices → Flat Occupancy, "

@@ -25,11 +25,12 @@ class BenchmarksSmokeTest {
         System.out.println(md);
         for (String section : List.of("## Footprint and start", "## Thesis scenarios 1–5",
                 "## Maximum zero-loss throughput", "## Packet → reaction latency", "## Scale", "virtual hours in lock-step",
+                "## Hot update of AmICA Movement",
                 "load average after")) {
             assertTrue(md.contains(section), "RESULTS.md has " + section);
         }
         for (String png : List.of("bench-footprint.png", "bench-thesis.png", "bench-throughput.png", "bench-scale.png",
-                "bench-latency.png")) {
+                "bench-latency.png", "bench-hotupdate.png")) {
             assertTrue(Files.size(out.resolve("images").resolve(png)) > 1000, png + " drawn");
         }
         assertEquals(0, rc, "every benchmark ran (failures are named in RESULTS.md)");

@@ -16,6 +16,11 @@ public @interface BackupConfig {
             + "which the shell's set waits for, writes at once")
     long writeDelayMillis() default 500;
 
+    @AttributeDefinition(description = "An orderly stop saves every backup still queued first (a burst of new devices "
+            + "can leave the writer thousands behind), for at most this many seconds; kept below the launcher's 30 s "
+            + "stop limit")
+    int stopSaveSeconds() default 25;
+
     @AttributeDefinition(description = "tinysep:restore refuses an archive that expands to more than this many bytes "
             + "(counted while it is read; default 64 MiB)")
     long restoreMaxBytes() default 64L << 20;

@@ -11,7 +11,6 @@ import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import org.osgi.framework.BundleContext;
@@ -50,16 +49,30 @@ public final class BackupStoreService implements BackupStore {
     private final ScheduledExecutorService executor;
     private final BackupWriter writer;
     private volatile ArchiveUnpacker.Limits limits = DEFAULT_LIMITS;
+    private long stopSaveMillis = 25_000;
     static final ArchiveUnpacker.Limits DEFAULT_LIMITS = new ArchiveUnpacker.Limits(64L << 20, 8L << 20, 10_000);
 
     @Activate
     public BackupStoreService(BundleContext context, BackupConfig config,
             @Reference(name = "eventLog") EventLog events) {
         this(StateFolder.resolveOrDataArea(config.folder(), context, "backup"), Math.max(0, config.writeDelayMillis()), events);
+        this.stopSaveMillis = Math.max(1, config.stopSaveSeconds()) * 1000L;
         this.limits = new ArchiveUnpacker.Limits(positive(config.restoreMaxBytes(), DEFAULT_LIMITS.maxTotalBytes()),
                 positive(config.restoreMaxFileBytes(), DEFAULT_LIMITS.maxEntryBytes()),
                 (int) positive(config.restoreMaxFiles(), DEFAULT_LIMITS.maxEntries()));
+        // the framework is stopping: write the backlog now, while the drivers stop (10,000 devices take a while),
+        // not after them; a synchronous listener is told before any bundle stops
+        this.frameworkStopping = e -> {
+            if (e.getType() == org.osgi.framework.BundleEvent.STOPPING && e.getBundle().getBundleId() == 0) {
+                writer.flush();
+            }
+        };
+        context.addBundleListener(frameworkStopping);
+        this.context = context;
     }
+
+    private org.osgi.framework.SynchronousBundleListener frameworkStopping;
+    private BundleContext context;
 
     private static long positive(long value, long otherwise) {
         if (value > 0) {
@@ -77,11 +90,13 @@ public final class BackupStoreService implements BackupStore {
     BackupStoreService(Path root, long writeDelayMillis, EventLog events) {
         this.events = events;
         this.files = new BackupFiles(new BackupLayout(root), new BackupCodec());
-        this.executor = Executors.newSingleThreadScheduledExecutor(r -> {
+        java.util.concurrent.ScheduledThreadPoolExecutor ex = new java.util.concurrent.ScheduledThreadPoolExecutor(1, r -> {
             Thread t = new Thread(r, "tinysep-backup-writer");
             t.setDaemon(true);
             return t;
         });
+        ex.setExecuteExistingDelayedTasksAfterShutdownPolicy(false); // the stop writes at once instead
+        this.executor = ex;
         this.writer = new BackupWriter(files, written, executor, writeDelayMillis, this::writeFailed);
         load();
     }
@@ -112,11 +127,50 @@ public final class BackupStoreService implements BackupStore {
         }
     }
 
+    /**
+     * An orderly stop saves every backup still queued (a burst of new devices can leave the writer thousands behind):
+     * at once, without the write delay, on this thread after the writer's current batch; said in the log and the
+     * event log with the count, bounded by {@code stopSaveSeconds} (a disk that hangs must not hang the stop).
+     */
     @Deactivate
     void deactivate() throws InterruptedException {
-        executor.shutdown();
-        executor.awaitTermination(10, TimeUnit.SECONDS);
-        writer.drain(); // whatever was queued after the last run
+        if (context != null) {
+            try {
+                context.removeBundleListener(frameworkStopping);
+            } catch (IllegalStateException stopped) {
+                // the bundle is already stopping
+            }
+        }
+        int backlog = writer.backlog();
+        long t0 = System.nanoTime();
+        if (backlog > 0) {
+            say(String.format("saving %,d device backup(s) before stopping…", backlog));
+        }
+        writer.stopBy(t0 + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        executor.shutdown(); // the delayed run is dropped (policy set at construction): this thread writes now
+        writer.drain(); // after the writer thread's current batch, which also keeps to the limit
+        int left = writer.notSaved();
+        if (left > 0) {
+            String msg = String.format("stopping with %,d device backup(s) not saved: the disk took longer than"
+                    + " %d s (stopSaveSeconds); those devices are created again when their nodes next report",
+                    left, stopSaveMillis / 1000);
+            LOG.error("Backup store: {}", msg);
+            events.record(EventKind.PROBLEM, ORIGIN, msg);
+        } else if (backlog > 0) {
+            say(String.format("saved %,d device backup(s) in %.1f s before stopping", backlog,
+                    (System.nanoTime() - t0) / 1e9));
+        }
+        executor.awaitTermination(1, TimeUnit.SECONDS);
+    }
+
+    /** The stop's limit ({@code stopSaveSeconds}), in ms (tests). */
+    void stopSaveMillisForTest(long millis) {
+        stopSaveMillis = millis;
+    }
+
+    private void say(String message) {
+        LOG.info("Backup store: {}", message);
+        events.record(EventKind.STATUS, ORIGIN, message);
     }
 
     /** @return folder syncs of the writer so far (a burst of saves syncs each folder once, not once per file) */

@@ -31,6 +31,14 @@ final class BackupWriter {
     /** Where each component's file is, as last written or loaded; used only on the writer thread. */
     private final Map<String, Path> written;
     private boolean scheduled;
+    private static final String FLUSH_MARKER = "\u0000flush-marker";
+    /** Operations in the batch being written (for {@link #backlog}). */
+    private volatile int inFlight;
+    /** System.nanoTime() after which a stopping store writes no more (0: not stopping). */
+    private volatile long stopBy;
+    private volatile boolean stopping;
+    /** Saves dropped because the stop's limit passed. */
+    private volatile int notSaved;
     /** Serialises drains (the executor's, and the caller's on stop or reload), so writes of one UID keep order. */
     private final Object writing = new Object();
     /** The group commit of each drain; used under {@link #writing}. */
@@ -55,7 +63,7 @@ final class BackupWriter {
 
     /** @return completes once everything queued before is on disk; writes at once, without the delay */
     CompletableFuture<Void> flush() {
-        CompletableFuture<Void> done = enqueue("\u0000flush-marker", null); // a delete of nothing, queued last
+        CompletableFuture<Void> done = enqueue(FLUSH_MARKER, null); // a delete of nothing, queued last
         try {
             executor.execute(this::drain);
         } catch (RuntimeException stopping) {
@@ -90,19 +98,47 @@ final class BackupWriter {
                 ops = new ArrayList<>(pending.values());
                 pending.clear();
                 scheduled = false;
+                inFlight = ops.size();
             }
-            write(ops);
+            try {
+                write(ops);
+            } finally {
+                inFlight = 0;
+            }
         }
     }
 
+    /** The store is stopping: operations not begun by {@code nanoTime} are dropped (and counted). */
+    void stopBy(long nanoTime) {
+        stopBy = nanoTime;
+        stopping = true;
+    }
+
+    /** @return saves dropped because the stop's limit passed */
+    int notSaved() {
+        return notSaved;
+    }
+
+    /** @return saves and deletes not yet on disk: queued, or in the batch being written */
+    synchronized int backlog() {
+        return pending.size() + inFlight - (pending.containsKey(FLUSH_MARKER) ? 1 : 0);
+    }
+
     /**
-     * Writes one batch: each file atomically (temp, forced, renamed), then each folder synced once (a group commit:
-     * a burst of device creations costs one folder sync per driver, not one per device); the futures complete
-     * after the sync, so a completed save is durable.
+     * Writes one batch as a group commit ({@link AtomicBatch}): every file written, then all forced together,
+     * renamed into place, each folder synced once; the futures complete after that, so a completed save is durable.
      */
     private void write(List<Op> ops) {
-        List<Op> done = new ArrayList<>(ops.size());
+        Map<Path, Op> byFile = new LinkedHashMap<>();
         for (Op op : ops) {
+            if (stopping && System.nanoTime() - stopBy > 0) {
+                if (!op.uid().equals(FLUSH_MARKER)) {
+                    notSaved++;
+                }
+                IllegalStateException late = new IllegalStateException("not saved: the stop's time limit passed");
+                op.done().forEach(f -> f.completeExceptionally(late)); // reported once, as a count, by the store
+                continue;
+            }
             try {
                 Path old = written.get(op.uid());
                 if (op.backup() == null) {
@@ -112,19 +148,30 @@ final class BackupWriter {
                     written.remove(op.uid());
                 } else {
                     Path now = files.write(op.backup(), batch);
+                    byFile.put(now, op);
                     written.put(op.uid(), now);
                     if (old != null && !old.equals(now)) {
                         batch.delete(old);
                     }
                 }
-                done.add(op);
             } catch (Exception e) {
-                problem.accept(op.uid(), e.toString());
-                op.done().forEach(f -> f.completeExceptionally(e));
+                failed(op, e);
             }
         }
         batch.commit();
-        done.forEach(op -> op.done().forEach(f -> f.complete(null)));
+        batch.failures().forEach((file, e) -> {
+            Op op = byFile.get(file);
+            if (op != null) {
+                written.remove(op.uid()); // the file holds its old content, if any
+                failed(op, e);
+            }
+        });
+        ops.forEach(op -> op.done().forEach(f -> f.complete(null)));
+    }
+
+    private void failed(Op op, Exception e) {
+        problem.accept(op.uid(), e.toString());
+        op.done().forEach(f -> f.completeExceptionally(e));
     }
 
     /** @return folder syncs so far (one per folder per batch; tests check a burst does not sync per file) */
