@@ -35,7 +35,7 @@ final class CoreReplay {
     /** An activity as the detector sees it. */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
         Sighting sighting() {
-            return new Sighting(at, room, room, room, false);
+            return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room, false);
         }
     }
 
