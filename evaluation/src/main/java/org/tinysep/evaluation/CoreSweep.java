@@ -27,6 +27,12 @@ public final class CoreSweep {
         Path repo = Path.of(System.getProperty("tinysep.repo", "."));
         Home home = Home.load(args[0], repo.resolve("../shared/data/ordonez").normalize(),
                 repo.resolve("evaluation/target/core"));
+        String variant = System.getProperty("variant", "");
+        if (!variant.isEmpty()) {
+            Home other = Home.load(args[0].equalsIgnoreCase("A") ? "B" : "A",
+                    repo.resolve("../shared/data/ordonez").normalize(), repo.resolve("evaluation/target/core"));
+            home = Variants.apply(variant, home, other);
+        }
         String split = args.length > 1 ? args[1] : "half";
         int k = split.equals("cv") ? Integer.parseInt(args[2]) : 0;
         int n = Integer.parseInt(args.length > (k > 0 ? 3 : 2) ? args[k > 0 ? 3 : 2] : "200");
@@ -93,15 +99,25 @@ public final class CoreSweep {
                 }
                 List<CoreReplay.Act> histBefore = f.cv() ? hist : hist.stream().filter(a -> a.at().isBefore(ci))
                         .toList();
-                CoreReplay.Alert a = core.collapse(histBefore, before, c);
-                if (a == null || a.at().isAfter(ci.plus(Duration.ofHours(12)))) {
-                    missed++;
-                    System.out.printf("  MISSED %s after %s in %s%s%n", c, before.get(before.size() - 1).what(),
-                            before.get(before.size() - 1).room(), a == null ? " (flat empty)" : ", limit " + a.limit());
-                } else if (!a.at().isAfter(ci)) {
+                // the collapsing resident's events after the moment are deleted; a second resident's stay
+                List<CoreReplay.Act> acts = new ArrayList<>(before);
+                everything.stream().filter(x -> x.what().startsWith("second resident's ") && x.at().isAfter(ci)
+                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).forEach(acts::add);
+                var fresh = core.newLimits();
+                core.play(fresh, histBefore, t -> false);
+                List<CoreReplay.Alert> alerts = core.play(fresh, acts, t -> true);
+                CoreReplay.Act last = before.get(before.size() - 1);
+                CoreReplay.Alert early = alerts.stream().filter(x -> !x.at().isBefore(last.at())
+                        && !x.at().isAfter(ci)).findFirst().orElse(null);
+                CoreReplay.Alert a = alerts.stream().filter(x -> x.at().isAfter(ci)
+                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).findFirst().orElse(null);
+                if (early != null) {
                     already++;
                     System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
-                            a.after().at(), a.after().what(), a.after().room(), a.limit(), a.at());
+                            early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
+                } else if (a == null) {
+                    missed++;
+                    System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
                 } else {
                     detected++;
                     int h = c.getHour();
