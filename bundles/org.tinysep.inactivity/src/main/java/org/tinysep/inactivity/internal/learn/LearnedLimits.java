@@ -34,7 +34,7 @@ public final class LearnedLimits {
         LearningSettings set = history.settings();
         return history.profile(now).learned(s.room(), s.roomName(), asleep, s.at())
                 .map(l -> new Limit(l.limit(), asleep, l.explain(set)))
-                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep)
+                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, now)
                         .map(l -> blend(s, l, fixed, asleep, set))
                         .orElseGet(() -> coldStart(s, fixed, asleep, set)));
     }

@@ -39,6 +39,18 @@ class ColdStartTest {
     }
 
     @Test
+    void todaysFirstMinutesAreNoDayOfHistory() {
+        // a new installation (or a thesis scenario) on its first day: its own minutes of activity must not shorten
+        // the fixed limit before a whole day of history exists
+        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults());
+        learner.add(new Sighting(History.at(0, "14:00"), "Bathroom", "Bathroom", "Bathroom", false));
+        learner.add(new Sighting(History.at(0, "14:05"), "Kitchen", "Kitchen", "Kitchen", false));
+        Limit l = new LearnedLimits(learner).limitAfter(new Sighting(History.at(0, "14:10"), "Bathroom", "Bathroom",
+                "Bathroom", false), Duration.ofMinutes(45), History.at(0, "14:10"));
+        assertEquals(Duration.ofMinutes(45), l.limit(), l.explanation());
+    }
+
+    @Test
     void theLimitApproachesTheLearnedOneDayByDayWithoutASwitch() {
         Duration previous = Duration.ofMinutes(45);
         for (int days = 1; days <= 7; days++) {
