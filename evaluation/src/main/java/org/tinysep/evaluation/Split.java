@@ -37,7 +37,7 @@ record Split(String name, List<Fold> folds) {
         if (spec.equals("half")) {
             LocalDateTime s = home.split();
             return new Split("half", List.of(new Fold(0, home.events().stream().filter(e -> e.time().isBefore(s))
-                    .toList(), List.of(new Interval(s, home.end())), 0)));
+                    .toList(), List.of(new Interval(s, after(home))), 0)));
         }
         if (!spec.matches("cv[1-9][0-9]*")) {
             throw new IllegalArgumentException("--split must be half or cvK (e.g. cv7), not '" + spec + "'");
@@ -56,7 +56,7 @@ record Split(String name, List<Fold> folds) {
             for (int i = f; i < days; i += k) {
                 LocalDateTime a = first.plusDays(i).atStartOfDay();
                 LocalDateTime b = a.plusDays(1);
-                spans.add(new Interval(a.isBefore(start) ? start : a, b.isAfter(home.end()) ? home.end() : b));
+                spans.add(new Interval(a.isBefore(start) ? start : a, b.isAfter(home.end()) ? after(home) : b));
             }
             Fold probe = new Fold(f, List.of(), spans, extra);
             folds.add(new Fold(f, home.events().stream().filter(e -> !probe.covers(e.time())).toList(), spans, extra));
@@ -88,11 +88,16 @@ record Split(String name, List<Fold> folds) {
                 }
             }
             if (!seg.isEmpty()) {
-                LocalDateTime end = fold.extraDays() > 0 ? s.end() : home.end();
+                LocalDateTime end = fold.extraDays() > 0 ? s.end() : after(home);
                 out.add(new TestSegment(seg, new Interval(seg.get(0).time(), end)));
             }
         }
         return out;
+    }
+
+    /** @return just after the recording's last event: spans are half-open, and the last event is tested too */
+    private static LocalDateTime after(Home home) {
+        return home.end().plusSeconds(1);
     }
 
     /** @return the fold that tests recorded time {@code t}, or null */

@@ -35,7 +35,7 @@ class SplitTest {
         assertEquals(0, f.extraDays());
         List<Split.TestSegment> t = Split.testSegments(h, f);
         assertEquals(1, t.size());
-        assertEquals(40 - f.history().size(), t.get(0).events().size() + 1, "all but the last event (it ends the span)");
+        assertEquals(40 - f.history().size(), t.get(0).events().size(), "every event from the middle on, the last too");
     }
 
     @Test
