@@ -19,13 +19,15 @@ import java.util.List;
  * @param work        folder for state folders and converted files
  * @param readme      README to write the table into (null: print only)
  * @param command     the command line as typed, for the report
+ * @param split       {@code half} (history = first half, the headline) or {@code cvK} (K folds by days, {@link Split})
  */
 record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int batch, int days,
-        List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command) {
+        List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command, String split) {
 
     static final String USAGE = """
             usage: ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S]
-                   [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--detectors LEARNED,THESIS] [--no-readme]
+                   [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--split half|cvK] [--detectors LEARNED,THESIS]
+                   [--no-readme]
               A, B          Ordonez Home A / B (default A), converted from ../shared/data/ordonez
               --collapses   injected collapses per detector (default 200)
               --seed        seed of the collapse draw (default 1)
@@ -34,6 +36,8 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
               --batch       collapses per platform process, one after another in virtual time (default 1: every
                             collapse from its own copy of the snapshot)
               --days        only the first D days of the recording (default all)
+              --split       half (default: learn from the first half, test the second) or cvK: K folds by days,
+                            every day tested once with the other days as history (cv<days> = leave-one-day-out)
               --no-readme   print the table only (default: also into evaluation/README.md)
             """;
 
@@ -45,6 +49,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
         int parallel = 2;
         int batch = 1;
         int days = 0;
+        String split = "half";
         List<String> detectors = List.of("LEARNED", "THESIS");
         Path readme = repo.resolve("evaluation/README.md");
         Path ordonez = repo.resolve("../shared/data/ordonez").normalize();
@@ -60,6 +65,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             case "--parallel" -> parallel = number(args, ++i, a, 1);
             case "--batch" -> batch = number(args, ++i, a, 1);
             case "--days" -> days = number(args, ++i, a, 0);
+            case "--split" -> split = value(args, ++i, a);
             case "--detectors" -> detectors = List.of(value(args, ++i, a).split(","));
             case "--ordonez" -> ordonez = Path.of(value(args, ++i, a));
             case "--dist" -> dist = Path.of(value(args, ++i, a));
@@ -74,7 +80,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             }
         }
         return new EvalOptions(home, collapses, seed, warmup, parallel, batch, days, detectors, ordonez, dist, work, readme,
-                "./evaluate.sh " + String.join(" ", args));
+                "./evaluate.sh " + String.join(" ", args), split);
     }
 
     private static String value(String[] args, int i, String option) {

@@ -52,10 +52,21 @@ public final class Evaluate {
         List<String> facts = new ArrayList<>();
         facts.add("Run " + Instant.now().truncatedTo(ChronoUnit.SECONDS) + ", commit `" + commit + "`, command `"
                 + o.command().trim() + "`, " + Report.hm(Duration.ofSeconds(took)) + " wall time");
-        facts.add("Recording " + home.events().get(0).time() + " .. " + home.end() + " (" + home.events().size()
-                + " events); history (replayed once, its stopped state folder copied for every other run) until "
-                + home.split() + "; test half " + home.split() + " .. " + home.end() + " ("
-                + String.format(java.util.Locale.ROOT, "%.1f", x.testSpan().toSeconds() / 86400.0) + " days)");
+        if (x.split().name().equals("half")) {
+            facts.add("Recording " + home.events().get(0).time() + " .. " + home.end() + " (" + home.events().size()
+                    + " events); history (replayed once, its stopped state folder copied for every other run) until "
+                    + home.split() + "; test half " + home.split() + " .. " + home.end() + " ("
+                    + String.format(java.util.Locale.ROOT, "%.1f", x.testSpan().toSeconds() / 86400.0) + " days)");
+        } else {
+            facts.add("Recording " + home.events().get(0).time() + " .. " + home.end() + " (" + home.events().size()
+                    + " events); **split " + x.split().name() + "**: " + x.split().folds().size() + " folds by days, "
+                    + "day i of the recording tested in fold i mod " + x.split().folds().size() + " and learned from in "
+                    + "every other fold (history = the other days, replayed once per fold; the test days replayed "
+                    + x.split().folds().get(0).extraDays() + " days later than recorded, after the history)");
+        }
+        facts.add("Inactivity Recognition's `learnHistoryDays` = " + x.historyDays() + " in every platform: the "
+                + "default 28 plus how far the harness places replays beyond their recorded time, so no replay loses "
+                + "recorded history to its virtual placement");
         facts.add(o.collapses() + " collapses per detector, seed " + o.seed() + ", each replayed from at least "
                 + o.warmupHours() + " h before it to 12 h after it; " + o.parallel() + " platforms at once; "
                 + (o.batch() == 1 ? "every collapse in its own platform started from a copy of the snapshot"
@@ -67,11 +78,12 @@ public final class Evaluate {
         facts.add("Machine: " + Runtime.getRuntime().availableProcessors() + " CPUs, load average before " + loadBefore
                 + ", after " + load());
         facts.add(Report.CITATION);
-        String md = Report.markdown(home.name(), facts, results);
+        String title = home.name() + (x.split().name().equals("half") ? "" : "-" + x.split().name());
+        String md = Report.markdown(title, facts, results);
         System.out.println();
         System.out.println(md);
         if (o.readme() != null) {
-            Readme.put(o.readme(), home.name(), md);
+            Readme.put(o.readme(), title, md);
             System.out.println("written to " + o.readme());
         }
         return new Outcome(md, results);

@@ -81,9 +81,12 @@ final class Platform implements AutoCloseable {
                 + "\nsyncBindAddress=127.0.0.1\nsyncTimeout=0\n");
         write(etc, "org.tinysep.mailmanager", "host=127.0.0.1\nport=" + smtpPort + "\nsecurity=NONE\n"
                 + "from=tinysep@localhost\nrecipients=carer@localhost\nretryInitialSeconds=1\nretryMaxSeconds=5\n");
-        write(etc, "org.tinysep.inactivity", "detector=" + detector + "\ntimeZone=UTC\n");
+        write(etc, "org.tinysep.inactivity", "detector=" + detector + "\ntimeZone=UTC\n"
+                + extra.getOrDefault("org.tinysep.inactivity", ""));
         for (Map.Entry<String, String> e : extra.entrySet()) {
-            write(etc, e.getKey(), e.getValue());
+            if (!e.getKey().equals("org.tinysep.inactivity")) {
+                write(etc, e.getKey(), e.getValue());
+            }
         }
         List<String> cmd = new java.util.ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());

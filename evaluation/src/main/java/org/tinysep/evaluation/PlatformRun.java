@@ -44,7 +44,7 @@ final class PlatformRun {
                 Platform platform = Platform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
                         Map.of("org.tinysep.houseinformation", "file=" + setup.home().house().toAbsolutePath() + "\n",
                                 "org.tinysep.houseinformation.placement", "placements=" + setup.home().placements()
-                                        + "\n"))) {
+                                        + "\n", "org.tinysep.inactivity", setup.inactivity()))) {
             List<ReplayResult> results = new ArrayList<>();
             for (int k = 0; k < segments.size(); k++) {
                 Segment s = segments.get(k);
@@ -110,8 +110,12 @@ final class PlatformRun {
             long kernelDrops) {
     }
 
-    /** What every run of one home shares. */
-    record Setup(java.nio.file.Path dist, Home home) {
+    /**
+     * What every run of one home shares.
+     *
+     * @param inactivity further lines of Inactivity Recognition's configuration (e.g. {@code learnHistoryDays})
+     */
+    record Setup(java.nio.file.Path dist, Home home, String inactivity) {
         Setup {
             if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
                 throw new IllegalArgumentException("no distribution at " + dist.toAbsolutePath()

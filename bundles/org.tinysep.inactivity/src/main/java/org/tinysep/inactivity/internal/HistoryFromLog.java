@@ -42,9 +42,18 @@ final class HistoryFromLog {
         this.learner = learner;
     }
 
-    /** @return a sentence for the event log: what was read */
+    /**
+     * Reads the entries from {@code days} before {@code now} on, <b>with no upper bound</b>: at activation the
+     * platform's clock may still be behind the log (an EXTERNAL Time Controller holds the wall clock until its first
+     * tick, which jumps to the virtual time the log was written in; a clock that went back). Bounding the query by
+     * that {@code now} read nothing in such a case (issue 11: every replayed history was lost, so the learned
+     * detector never left its cold start). The learner drops what is older than its history window at the time it
+     * learns ({@link HistoryLearner#profile}).
+     *
+     * @return a sentence for the event log: what was read
+     */
     String load(EventLog log, Instant now, int days) {
-        LogHistory<EventEntry> h = log.query(new LogQuery(now.minus(Duration.ofDays(days)), now, Set.of(),
+        LogHistory<EventEntry> h = log.query(new LogQuery(now.minus(Duration.ofDays(days)), null, Set.of(),
                 Set.of(EventKind.DEVICE_EVENT.name()), MAX_ENTRIES));
         int activities = 0;
         int occupancy = 0;

@@ -7,6 +7,13 @@ import java.time.Instant;
  * The LEARNED detector's limit for a quiet period: the learned one where the history suffices, else the fixed
  * (thesis) limit of the room, never below the floor. Pure Java: the platform's device and an evaluation harness
  * call it alike.
+ * <p>
+ * Cold start without a switch (issue 11): with history on n days, 1 ≤ n < {@code minDays}, for the room and state
+ * (at any time of day), the limit is a credibility-weighted mean of what those days taught (L) and the fixed limit
+ * (F): Z·L + (1 − Z)·F with Z = √(n / minDays) — the square-root rule of limited-fluctuation credibility (an
+ * estimate from n observations gets full weight once n reaches the standard for full credibility, here
+ * {@code minDays}). So the first day of history already moves the limit a little, and the change at
+ * {@code minDays} is small instead of a switch from the thesis's limit to the learned one.
  */
 public final class LearnedLimits {
 
@@ -27,7 +34,22 @@ public final class LearnedLimits {
         LearningSettings set = history.settings();
         return history.profile(now).learned(s.room(), s.roomName(), asleep, s.at())
                 .map(l -> new Limit(l.limit(), asleep, l.explain(set)))
-                .orElseGet(() -> coldStart(s, fixed, asleep, set));
+                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, now)
+                        .map(l -> blend(s, l, fixed, asleep, set))
+                        .orElseGet(() -> coldStart(s, fixed, asleep, set)));
+    }
+
+    /** Fewer than minDays days: Z·learned + (1 − Z)·fixed, Z = √(days / minDays); never below the floor. */
+    static Limit blend(Sighting s, Learned l, Duration fixed, boolean asleep, LearningSettings set) {
+        double z = Math.sqrt((double) l.days() / set.minDays());
+        long secs = Math.round(z * l.limit().getSeconds() + (1 - z) * fixed.getSeconds());
+        Duration d = Duration.ofSeconds(Math.max(secs, set.floor().getSeconds()));
+        return new Limit(d, asleep, "limit " + Words.duration(d) + " = " + Math.round(100 * z) + " % of what "
+                + Words.count(l.days(), "day") + " of history taught (" + l.explain(set) + ") and "
+                + Math.round(100 * (1 - z)) + " % of the fixed limit of " + Words.duration(fixed) + " for "
+                + s.roomName() + (asleep ? " asleep" : "") + ": fewer than " + Words.count(set.minDays(), "day")
+                + " of history yet, so the fixed limit still counts (weight of the history = square root of "
+                + l.days() + "/" + set.minDays() + ")");
     }
 
     private Limit coldStart(Sighting s, Duration fixed, boolean asleep, LearningSettings set) {

@@ -71,6 +71,24 @@ public final class QuietProfile {
         return Optional.empty();
     }
 
+    /**
+     * Cold start (issue 11): what fewer than {@code minDays} days say about a room and state at any time of day.
+     *
+     * Only whole days count: today's first minutes (a new installation, a test) are not a day of history.
+     *
+     * @param now the time asked at; quiet periods of its local day are left out
+     * @return the learned limit from the room's and state's quiet periods at any time of day, when they lie on at
+     *         least one but fewer than {@code minDays} days before today; else empty
+     */
+    public Optional<Learned> partial(String room, String roomName, boolean asleep, Instant now) {
+        LocalDate today = now.atZone(zone).toLocalDate();
+        List<Gap> all = byRoom.getOrDefault(room, List.of()).stream().filter(g -> g.asleep() == asleep
+                && g.start().at().atZone(zone).toLocalDate().isBefore(today)).toList();
+        int n = days(all).size();
+        return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"))
+                : Optional.empty();
+    }
+
     private Learned learn(List<Gap> gaps, String roomName, boolean asleep, String scope) {
         Map<LocalDate, Duration> maxima = days(gaps);
         Duration usual = UsualQuiet.usual(new ArrayList<>(maxima.values()));

@@ -1,0 +1,62 @@
+package org.tinysep.inactivity.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.junit.jupiter.api.Test;
+import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+import org.tinysep.inactivity.internal.learn.HistoryLearner;
+import org.tinysep.inactivity.internal.learn.LearningSettings;
+import org.tinysep.inactivity.internal.learn.Sighting;
+import org.tinysep.inactivity.internal.learn.SleepRule;
+
+class HistoryFromLogTest {
+
+    /** An event log holding the given entries; its query is the interface's default (filters by the query). */
+    private record Log(List<EventEntry> entries) implements EventLog {
+        @Override
+        public void record(EventKind kind, String origin, String message) {
+        }
+
+        @Override
+        public List<EventEntry> recent(int max) {
+            return entries;
+        }
+    }
+
+    /**
+     * Issue 11: the platform starts with its clock held at the wall clock while the log on disk was written in
+     * virtual time ahead of it (an EXTERNAL Time Controller; the evaluation harness's replays). Those entries are
+     * the history and must be read; bounding the query by the start time read none.
+     */
+    @Test
+    void readsHistoryStampedAfterTheClockAtStart() {
+        Instant wall = Instant.parse("2026-11-25T19:00:00Z");
+        Instant virtual = Instant.parse("2026-12-07T08:00:00Z");
+        List<EventEntry> entries = new ArrayList<>();
+        for (int i = 0; i < 10; i++) {
+            entries.add(new EventEntry(i, virtual.plus(Duration.ofMinutes(10L * i)), EventKind.DEVICE_EVENT,
+                    "Seat", i % 2 == 0 ? "window opened" : "window closed"));
+        }
+        entries.add(new EventEntry(10, virtual.plus(Duration.ofHours(3)), EventKind.DEVICE_EVENT, "Flat",
+                "flat unoccupied (no indoor activity for 600 s after the door closed)"));
+        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, new SleepRule(21, 7, ZoneOffset.UTC),
+                LearningSettings.defaults());
+        HistoryFromLog fromLog = new HistoryFromLog(learner);
+
+        String said = fromLog.load(new Log(entries), wall, 28);
+
+        assertTrue(said.contains("10 activity entries, 1 occupancy changes"), said);
+        assertEquals(10, fromLog.resolve(r -> Optional.of(new Sighting(r.at(), "living", "Living Room",
+                "Living room", false))));
+        assertEquals(10, learner.size());
+    }
+}

@@ -1,0 +1,146 @@
+package org.tinysep.evaluation;
+
+import java.time.Duration;
+import java.time.Instant;
+import java.time.LocalDateTime;
+import java.time.ZoneOffset;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Predicate;
+import org.tinysep.inactivity.internal.learn.HistoryLearner;
+import org.tinysep.inactivity.internal.learn.LearnedLimits;
+import org.tinysep.inactivity.internal.learn.LearningSettings;
+import org.tinysep.inactivity.internal.learn.Limit;
+import org.tinysep.inactivity.internal.learn.Sighting;
+import org.tinysep.inactivity.internal.learn.SleepRule;
+import org.tinysep.simulator.replay.NodeSpec;
+import org.tinysep.simulator.replay.SensorEvent;
+
+/**
+ * The detector core without the platform, for analysis and sweeps only (published figures come from the platform
+ * run): the recording's events become activities as Inactivity Recognition sees them (motion ON, every door and
+ * window change), Flat Occupancy is approximated (outer door closed and no indoor activity for 600 s: empty), and
+ * the limit of each quiet period comes from the learned detector's own classes ({@code LearnedLimits}) or the
+ * thesis's fixed limits. An alert is raised when a quiet period outlasts its limit while the flat counts as
+ * occupied.
+ */
+final class CoreReplay {
+
+    static final Duration LEAVE = Duration.ofSeconds(600);
+    static final Duration GRACE = Duration.ofSeconds(10);
+
+    /** An activity as the detector sees it. */
+    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
+        Sighting sighting() {
+            return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room, false);
+        }
+    }
+
+    /** A raised alert: when, the quiet period's room and start, its limit and why. */
+    record Alert(Instant at, Act after, Duration limit, String why) {
+    }
+
+    private final Home home;
+    private final boolean learned;
+    private final Map<String, NodeSpec> nodes = new HashMap<>();
+
+    CoreReplay(Home home, boolean learned) {
+        this.home = home;
+        this.learned = learned;
+        home.nodes().forEach(n -> nodes.put(n.sensor(), n));
+    }
+
+    static Instant at(LocalDateTime t) {
+        return t.toInstant(ZoneOffset.UTC);
+    }
+
+    /** @return the events that are activities, in time order */
+    List<Act> acts(List<SensorEvent> events) {
+        List<Act> out = new ArrayList<>();
+        for (SensorEvent e : events) {
+            NodeSpec n = nodes.get(e.sensor());
+            if (n == null || (n.isMotion() && !e.on())) {
+                continue;
+            }
+            boolean outer = "OUTER".equals(n.doorKind());
+            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer));
+        }
+        return out;
+    }
+
+    static Duration fixed(String roomType) {
+        return switch (roomType.toLowerCase(Locale.ROOT)) {
+        case "bathroom" -> Duration.ofMinutes(45);
+        case "kitchen" -> Duration.ofMinutes(90);
+        case "living room" -> Duration.ofMinutes(180);
+        case "bedroom" -> Duration.ofMinutes(600);
+        case "hall" -> Duration.ofMinutes(30);
+        default -> Duration.ofMinutes(120);
+        };
+    }
+
+    LearnedLimits newLimits() {
+        SleepRule sleep = new SleepRule(21, 7, ZoneOffset.UTC);
+        return new LearnedLimits(new HistoryLearner(ZoneOffset.UTC, sleep, LearningSettings.defaults()));
+    }
+
+    Limit limit(LearnedLimits l, Act a) {
+        Duration f = fixed(a.room());
+        return learned ? l.limitAfter(a.sighting(), f, a.at()) : new Limit(f, false, "fixed");
+    }
+
+    /**
+     * Plays {@code acts}, learning from every one (as the live detector does), and returns the alerts raised while
+     * {@code judged} holds for the alert time.
+     */
+    List<Alert> play(LearnedLimits l, List<Act> acts, Predicate<Instant> judged) {
+        List<Alert> alerts = new ArrayList<>();
+        Instant occupiedSince = acts.isEmpty() ? Instant.MIN : acts.get(0).at();
+        Instant leaveDeadline = null;
+        Instant lastClose = null;
+        for (int i = 0; i < acts.size(); i++) {
+            Act a = acts.get(i);
+            Limit lim = limit(l, a);
+            if (a.outerClose()) {
+                lastClose = a.at();
+                leaveDeadline = a.at().plus(LEAVE);
+            }
+            Instant next = i + 1 < acts.size() ? acts.get(i + 1).at() : null;
+            // the flat empties when the leave check runs out before the next indoor activity
+            boolean leaves = leaveDeadline != null && (next == null || next.isAfter(leaveDeadline))
+                    && !a.at().isAfter(leaveDeadline);
+            if (!a.outerDoor() && lastClose != null && a.at().isAfter(lastClose.plus(GRACE))) {
+                leaveDeadline = null;
+            }
+            if (leaves && leaveDeadline != null) {
+                l.history().occupancy(true, leaveDeadline);
+                if (next != null) {
+                    l.history().occupancy(false, next);
+                    occupiedSince = next;
+                }
+                leaveDeadline = null;
+                continue; // not watching until the next activity
+            }
+            Instant from = a.at().isAfter(occupiedSince) ? a.at() : occupiedSince;
+            Instant due = from.plus(lim.limit());
+            if ((next == null || next.isAfter(due)) && judged.test(due)) {
+                alerts.add(new Alert(due, a, lim.limit(), lim.explanation()));
+            }
+        }
+        return alerts;
+    }
+
+    /** @return the alert due after the last activity before a collapse (history learned first), or null if none */
+    Alert collapse(List<Act> history, List<Act> before, LocalDateTime c) {
+        LearnedLimits l = newLimits();
+        play(l, history, t -> false);
+        List<Alert> a = play(l, before, t -> true);
+        Act last = before.get(before.size() - 1);
+        Alert lastAlert = a.isEmpty() ? null : a.get(a.size() - 1);
+        // raised before or after the collapse (the caller judges); none: the flat counted as empty
+        return lastAlert != null && lastAlert.after().equals(last) ? lastAlert : null;
+    }
+}

@@ -1,0 +1,207 @@
+package org.tinysep.evaluation;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.LocalDateTime;
+import java.time.ZoneOffset;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import org.tinysep.simulator.replay.SensorEvent;
+
+/**
+ * Analysis and sweeps on the detector core ({@link CoreReplay}), in seconds instead of the platform's minutes:
+ * {@code java ... CoreSweep A|B|folder [half|cv K] [collapses]}. Prints every false alarm (room, hour, limit, why)
+ * and every collapse that is not detected, then the figures. Not the published figures (those come from
+ * {@link Evaluate}, through the platform).
+ */
+public final class CoreSweep {
+
+    private CoreSweep() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path repo = Path.of(System.getProperty("tinysep.repo", "."));
+        Home home = Home.load(args[0], repo.resolve("../shared/data/ordonez").normalize(),
+                repo.resolve("evaluation/target/core"));
+        String variant = System.getProperty("variant", "");
+        if (!variant.isEmpty()) {
+            Home other = Home.load(args[0].equalsIgnoreCase("A") ? "B" : "A",
+                    repo.resolve("../shared/data/ordonez").normalize(), repo.resolve("evaluation/target/core"));
+            home = Variants.apply(variant, home, other);
+        }
+        String split = args.length > 1 ? args[1] : "half";
+        int k = split.equals("cv") ? Integer.parseInt(args[2]) : 0;
+        int n = Integer.parseInt(args.length > (k > 0 ? 3 : 2) ? args[k > 0 ? 3 : 2] : "200");
+        for (boolean learned : new boolean[] {true, false}) {
+            System.out.println("=== " + home.name() + " " + (learned ? "LEARNED" : "THESIS") + " split " + split
+                    + (k > 0 ? " " + k : ""));
+            report(home, learned, k, n);
+        }
+    }
+
+    static void report(Home home, boolean learned, int k, int n) {
+        CoreReplay core = new CoreReplay(home, learned);
+        List<List<Fold>> folds = new ArrayList<>();
+        folds.add(k == 0 ? List.of(Fold.half(home)) : Fold.cv(home, k));
+        int fa = 0;
+        int faNight = 0;
+        double days = 0;
+        Map<String, Integer> faRooms = new TreeMap<>();
+        int detected = 0;
+        int already = 0;
+        int missed = 0;
+        List<Long> dayDelays = new ArrayList<>();
+        List<Long> nightDelays = new ArrayList<>();
+        List<CoreReplay.Act> everything = core.acts(home.events());
+        for (Fold f : folds.get(0)) {
+            List<CoreReplay.Act> hist = core.acts(f.history());
+            List<CoreReplay.Act> test = core.acts(f.test());
+            if (f.cv()) { // each test day ends with the recording's next activity (the next day's first)
+                List<CoreReplay.Act> t = new ArrayList<>();
+                for (int i = 0; i < everything.size(); i++) {
+                    CoreReplay.Act a = everything.get(i);
+                    boolean in = f.judged(a.at());
+                    boolean prevIn = i > 0 && f.judged(everything.get(i - 1).at());
+                    if (in || prevIn) {
+                        t.add(a);
+                    }
+                }
+                test = t;
+            }
+            days += f.days();
+            var lim = core.newLimits();
+            core.play(lim, hist, t -> false);
+            for (CoreReplay.Alert a : core.play(lim, test, f::judged)) {
+                int h = a.at().atZone(ZoneOffset.UTC).getHour();
+                boolean night = h < 7 || h >= 22;
+                fa++;
+                faNight += night ? 1 : 0;
+                faRooms.merge(a.after().room() + (night ? " night" : " day"), 1, Integer::sum);
+                System.out.printf("  FA %s %s after %s, limit %s, quiet %s; %s%n", a.at(), a.after().room(),
+                        a.after().what(), a.limit(), gapAfter(test, a.after()), a.why());
+            }
+            int share = (int) Math.round(n * f.share());
+            List<LocalDateTime> moments = Collapses.draw(f.candidates(home), Math.max(1, share), 1);
+            for (LocalDateTime c : moments) {
+                Instant ci = CoreReplay.at(c);
+                List<CoreReplay.Act> before = everything.stream().filter(a -> a.at().isBefore(ci)
+                        && !a.at().isBefore(ci.minus(Duration.ofHours(6)))).toList();
+                if (before.isEmpty()) {
+                    before = everything.stream().filter(a -> a.at().isBefore(ci)).toList();
+                    before = before.subList(Math.max(0, before.size() - 1), before.size());
+                }
+                if (before.isEmpty()) {
+                    continue;
+                }
+                List<CoreReplay.Act> histBefore = f.cv() ? hist : hist.stream().filter(a -> a.at().isBefore(ci))
+                        .toList();
+                // the collapsing resident's events after the moment are deleted; a second resident's stay
+                List<CoreReplay.Act> acts = new ArrayList<>(before);
+                everything.stream().filter(x -> x.what().startsWith("second resident's ") && x.at().isAfter(ci)
+                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).forEach(acts::add);
+                var fresh = core.newLimits();
+                core.play(fresh, histBefore, t -> false);
+                List<CoreReplay.Alert> alerts = core.play(fresh, acts, t -> true);
+                CoreReplay.Act last = before.get(before.size() - 1);
+                CoreReplay.Alert early = alerts.stream().filter(x -> !x.at().isBefore(last.at())
+                        && !x.at().isAfter(ci)).findFirst().orElse(null);
+                CoreReplay.Alert a = alerts.stream().filter(x -> x.at().isAfter(ci)
+                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).findFirst().orElse(null);
+                if (early != null) {
+                    already++;
+                    System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
+                            early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
+                } else if (a == null) {
+                    missed++;
+                    System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
+                } else {
+                    detected++;
+                    int h = c.getHour();
+                    (h < 7 || h >= 22 ? nightDelays : dayDelays).add(Duration.between(ci, a.at()).toMinutes());
+                }
+            }
+        }
+        int total = detected + already + missed;
+        System.out.printf("  false alarms / 30 days: day %.1f night %.1f (%d in %.1f days) by room %s%n",
+                (fa - faNight) * 30 / days, faNight * 30 / days, fa, days, faRooms);
+        System.out.printf("  collapses: detected %d/%d (%.1f %%), already alerted %d, missed %d; median delay day %s min"
+                + " night %s min%n", detected, total, 100.0 * detected / total, already, missed, median(dayDelays),
+                median(nightDelays));
+    }
+
+    private static String gapAfter(List<CoreReplay.Act> acts, CoreReplay.Act a) {
+        int i = acts.indexOf(a);
+        return i + 1 < acts.size() ? Duration.between(a.at(), acts.get(i + 1).at()).toString() : "(end)";
+    }
+
+    private static Long median(List<Long> v) {
+        if (v.isEmpty()) {
+            return null;
+        }
+        List<Long> s = new ArrayList<>(v);
+        s.sort(null);
+        return s.get(s.size() / 2);
+    }
+
+    /** History and test events of one split. */
+    record Fold(List<SensorEvent> history, List<SensorEvent> test, List<LocalDate> testDays, boolean cv,
+            LocalDateTime from, LocalDateTime to, double share, LocalDateTime end) {
+        double days() {
+            if (!cv) {
+                return Duration.between(from, to).toSeconds() / 86400.0;
+            }
+            double d = 0;
+            for (LocalDate day : testDays) {
+                LocalDateTime a = day.atStartOfDay().isBefore(from) ? from : day.atStartOfDay();
+                LocalDateTime b = day.plusDays(1).atStartOfDay().isAfter(to) ? to : day.plusDays(1).atStartOfDay();
+                d += Math.max(0, Duration.between(a, b).toSeconds()) / 86400.0;
+            }
+            return d;
+        }
+
+        boolean judged(Instant t) {
+            LocalDateTime l = LocalDateTime.ofInstant(t, ZoneOffset.UTC);
+            return cv ? testDays.contains(l.toLocalDate()) && !l.isAfter(end) : !l.isBefore(from) && !l.isAfter(to);
+        }
+
+        List<org.tinysep.simulator.replay.Interval> candidates(Home h) {
+            List<org.tinysep.simulator.replay.Interval> out = new ArrayList<>();
+            if (!cv) {
+                return Collapses.candidates(h.labels(), from, to);
+            }
+            for (LocalDate d : testDays) {
+                LocalDateTime e = d.plusDays(1).atStartOfDay();
+                out.addAll(Collapses.candidates(h.labels(), d.atStartOfDay(), e.isAfter(end) ? end : e));
+            }
+            return out;
+        }
+
+        static Fold half(Home h) {
+            LocalDateTime s = h.split();
+            return new Fold(h.events().stream().filter(e -> e.time().isBefore(s)).toList(),
+                    h.events().stream().filter(e -> !e.time().isBefore(s)).toList(), List.of(), false, s, h.end(), 1, h.end());
+        }
+
+        /** Day i of the recording is tested in fold i mod k and learned from in every other fold. */
+        static List<Fold> cv(Home h, int k) {
+            LocalDate first = h.events().get(0).time().toLocalDate();
+            LocalDate last = h.end().toLocalDate();
+            int all = (int) (last.toEpochDay() - first.toEpochDay()) + 1;
+            List<Fold> folds = new ArrayList<>();
+            for (int f = 0; f < k; f++) {
+                List<LocalDate> days = new ArrayList<>();
+                for (int i = f; i < all; i += k) {
+                    days.add(first.plusDays(i));
+                }
+                folds.add(new Fold(h.events().stream().filter(e -> !days.contains(e.time().toLocalDate())).toList(),
+                        h.events().stream().filter(e -> days.contains(e.time().toLocalDate())).toList(), days, true,
+                        h.events().get(0).time(), h.end(), (double) days.size() / all, h.end()));
+            }
+            return folds;
+        }
+    }
+}
