@@ -27,7 +27,8 @@ final class Words {
                 case 134, 4:
                     return "the broker refused the login: bad user name or password";
                 case 135, 5:
-                    return "the broker refused the login: this user is not authorised";
+                    // Mosquitto 2 answers a wrong password with "not authorised" too
+                    return "the broker refused the login: wrong user name or password, or this user may not connect";
                 case 133:
                     return "the broker refused the client id (the flat id)";
                 case 138:
