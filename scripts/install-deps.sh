@@ -3,6 +3,7 @@
 #   java, maven  - build
 #   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
 #   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
+#   mosquitto    - real MQTT broker for the MQTT bridge tests (testsupport/org.tinysep.testsupport.mqtt, docs/mqtt.md)
 set -euo pipefail
 need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
@@ -10,6 +11,7 @@ command -v mvn >/dev/null || need+=(maven)
 command -v socat >/dev/null || need+=(socat)
 command -v chromium >/dev/null || need+=(chromium)
 command -v chromedriver >/dev/null || need+=(chromium-driver)
+command -v mosquitto >/dev/null || [ -x /usr/sbin/mosquitto ] || need+=(mosquitto)
 if [ ${#need[@]} -gt 0 ]; then
   if [ "$(id -u)" -ne 0 ]; then
     echo "Missing packages: ${need[*]} - install them (apt-get update && apt-get install ${need[*]}) and run again." >&2
