@@ -1,0 +1,94 @@
+package org.tinysep.mqtt.internal;
+
+import java.util.List;
+import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.api.device.Parameter;
+import org.tinysep.device.support.AbstractDevice;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.Uids;
+
+/**
+ * The bridge as a device ({@code tinysep:devices}, web console): its status says whether the broker is reachable
+ * (and why not, in plain words), its parameters show the outbox and the command counters. Configuration changes
+ * replace the running {@link Bridge}.
+ */
+final class BridgeDevice extends AbstractDevice {
+
+    private volatile Settings settings;
+    private volatile Figures figures = Figures.IDLE;
+    private Bridge bridge;
+
+    BridgeDevice(DriverContext context, Settings settings, String configProblem) {
+        super(context, Uids.of(context.driverName(), "device"), context.driverName(), "MQTT bridge");
+        this.settings = settings;
+        startBridge(configProblem);
+    }
+
+    @Override
+    protected boolean placeable() {
+        return false;
+    }
+
+    synchronized void reconfigure(Settings next, String configProblem) {
+        stopBridge();
+        settings = next;
+        figures = Figures.IDLE;
+        startBridge(configProblem);
+    }
+
+    private synchronized void startBridge(String configProblem) {
+        if (configProblem != null) {
+            status(DeviceStatus.State.ERROR, "configuration refused: " + configProblem);
+            return;
+        }
+        if (!settings.configured()) {
+            status(DeviceStatus.State.UNKNOWN, "idle: no brokerUrl configured (configuration org.tinysep.mqtt)");
+            return;
+        }
+        if (!settings.username().isEmpty()) {
+            String open = Secrets.openToOthers(settings.passwordFile());
+            if (open != null) {
+                event("warning: " + open);
+            }
+        }
+        bridge = new Bridge(context.bundleContext(), settings, context::now, this::status, f -> figures = f);
+        bridge.start();
+    }
+
+    private synchronized void stopBridge() {
+        if (bridge != null) {
+            bridge.stop();
+            bridge = null;
+        }
+    }
+
+    @Override
+    protected List<Parameter> moreParameters() {
+        Settings s = settings;
+        Figures f = figures;
+        return List.of(
+                Parameter.readOnly("broker", s.configured() ? s.redacted() : "none",
+                        "the broker, flat id and topic prefix (configuration org.tinysep.mqtt)"),
+                Parameter.readOnly("link", f.link(), "the connection to the broker, in words"),
+                Parameter.readOnly("waitingAlerts", f.waitingAlerts(),
+                        "alert messages kept on disk until the broker acknowledges them"),
+                Parameter.readOnly("waitingState", f.waitingState(), "state topics with a newer value not yet sent"),
+                Parameter.readOnly("delivered", f.delivered(), "messages the broker acknowledged since the start"),
+                Parameter.readOnly("devices", f.devices(), "devices published"),
+                Parameter.readOnly("acceptedCommands", f.acceptedCommands(), "commands carried out"),
+                Parameter.readOnly("rejectedCommands", f.rejectedCommands(),
+                        "commands refused; each refusal is explained on command/result"),
+                Parameter.readOnly("droppedResults", f.droppedResults(),
+                        "command results dropped because more than 1000 waited for the broker"));
+    }
+
+    @Override
+    protected void onDispose() {
+        stopBridge();
+    }
+
+    @Override
+    protected boolean backedUp(String key) {
+        return false;
+    }
+}

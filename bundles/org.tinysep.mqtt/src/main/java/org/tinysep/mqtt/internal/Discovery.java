@@ -1,0 +1,98 @@
+package org.tinysep.mqtt.internal;
+
+import java.util.List;
+import java.util.Map;
+import org.tinysep.api.alert.AlertKind;
+
+/**
+ * Home Assistant MQTT discovery (https://www.home-assistant.io/integrations/mqtt/#mqtt-discovery): one retained
+ * config per entity under {@code <discoveryPrefix>/<component>/tinysep_F_<object>/config}, each with a unique id,
+ * the flat's and the device's availability topics (both must say online), and a device block (one HA device per
+ * TinySEP device, linked to one HA device for the flat).
+ */
+final class Discovery {
+
+    private final Topics topics;
+
+    Discovery(Topics topics) {
+        this.topics = topics;
+    }
+
+    /** The HA device of the whole flat: occupancy and alert sensors. */
+    private Map<String, Object> flatDevice() {
+        return Json.object("identifiers", List.of(topics.uniqueId("flat")), "name", "TinySEP " + topics.flatId(),
+                "manufacturer", "TinySEP", "model", "TinySEP platform");
+    }
+
+    Message device(String uid, DeviceKind kind, String name, String room) {
+        Map<String, Object> c = Json.object("name", null, "unique_id", topics.uniqueId(uid),
+                "object_id", topics.uniqueId(uid), "state_topic", topics.deviceState(uid));
+        switch (kind.component) {
+            case "binary_sensor" -> {
+                c.put("value_template", "{{ 'ON' if value_json.value else 'OFF' }}");
+                c.put("device_class", kind.deviceClass);
+            }
+            case "sensor" -> {
+                c.put("value_template", "{{ value_json.value }}");
+                if (kind.deviceClass != null) {
+                    c.put("device_class", kind.deviceClass);
+                }
+                c.put("unit_of_measurement", kind == DeviceKind.TEMPERATURE ? "°C" : "%");
+                c.put("state_class", "measurement");
+            }
+            case "light" -> {
+                c.put("schema", "basic");
+                c.put("state_value_template", "{{ 'ON' if value_json.value else 'OFF' }}");
+                c.put("command_topic", topics.deviceCommand(uid));
+                c.put("payload_on", "ON");
+                c.put("payload_off", "OFF");
+            }
+            default -> { // switch
+                c.put("value_template", "{{ 'ON' if value_json.value else 'OFF' }}");
+                c.put("command_topic", topics.deviceCommand(uid));
+                c.put("payload_on", "ON");
+                c.put("payload_off", "OFF");
+                c.put("state_on", "ON");
+                c.put("state_off", "OFF");
+            }
+        }
+        c.put("availability", List.of(Json.object("topic", topics.status()),
+                Json.object("topic", topics.deviceAvailability(uid))));
+        c.put("availability_mode", "all");
+        c.put("qos", 1);
+        c.put("device", Json.object("identifiers", List.of(topics.uniqueId(uid)), "name", name,
+                "manufacturer", "TinySEP", "model", kind.type, "suggested_area", room.isEmpty() ? null : room,
+                "via_device", topics.uniqueId("flat")));
+        return Message.state(topics.discoveryConfig(kind.component, uid), Json.write(c));
+    }
+
+    /** A low-battery problem sensor for a node whose protocol reports its battery. */
+    Message battery(String uid) {
+        Map<String, Object> c = Json.object("name", "Battery", "unique_id", topics.uniqueId(uid + "_battery"),
+                "object_id", topics.uniqueId(uid + "_battery"), "state_topic", topics.deviceHealth(uid),
+                "value_template", "{{ 'ON' if value_json.batteryLow else 'OFF' }}", "device_class", "battery",
+                "availability_topic", topics.status(), "qos", 1,
+                "device", Json.object("identifiers", List.of(topics.uniqueId(uid))));
+        return Message.state(topics.discoveryConfig("binary_sensor", uid + "_battery"), Json.write(c));
+    }
+
+    Message occupancy() {
+        Map<String, Object> c = Json.object("name", "Occupancy", "unique_id", topics.uniqueId("occupancy"),
+                "object_id", topics.uniqueId("occupancy"), "state_topic", topics.occupancy(),
+                "value_template", "{{ 'ON' if value_json.state == 'OCCUPIED' else 'OFF' }}",
+                "device_class", "occupancy", "availability_topic", topics.status(), "qos", 1,
+                "device", flatDevice());
+        return Message.state(topics.discoveryConfig("binary_sensor", "occupancy"), Json.write(c));
+    }
+
+    Message alertKind(AlertKind kind) {
+        String object = "alert_" + kind.name().toLowerCase();
+        Map<String, Object> c = Json.object("name", "Alert " + Alerts.kindWords(kind),
+                "unique_id", topics.uniqueId(object), "object_id", topics.uniqueId(object),
+                "state_topic", topics.alertKind(kind.name()), "value_template", "{{ value_json.state }}",
+                "json_attributes_topic", topics.alertKind(kind.name()),
+                "device_class", "problem", "availability_topic", topics.status(), "qos", 1,
+                "device", flatDevice());
+        return Message.state(topics.discoveryConfig("binary_sensor", object), Json.write(c));
+    }
+}
