@@ -8,7 +8,7 @@ set -e
 cd "$(dirname "$0")/.."
 FLATS=${1:-200}
 SECONDS_RUN=${2:-180}
-mvn -B -o -q -pl testsupport/org.tinysep.testsupport.mqtt,bundles/org.tinysep.mqtt.board -am verify \
+mvn -B -o -q -pl bundles/org.tinysep.mqtt.board -am verify \
   -Dtest=LoadSmokeTest -Dsurefire.failIfNoSpecifiedTests=false \
   -Dload.flats="$FLATS" -Dload.seconds="$SECONDS_RUN" -Dload.heartbeatSeconds=10 -Dload.stateMillis=2000 \
   -Dload.alertSeconds=30 -Dload.occupancySeconds=30

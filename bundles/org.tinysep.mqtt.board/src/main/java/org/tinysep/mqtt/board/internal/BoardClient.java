@@ -129,7 +129,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
     @Override
     public void disconnected(MqttDisconnectResponse response) {
         link = "lost the broker " + shown(settings.url()) + " at " + Instant.now(clock) + " ("
-                + response.getReasonString() + "); trying again every " + RETRY_SECONDS + " s";
+                + (response.getReasonString() == null ? "the connection closed" : response.getReasonString()) + "); trying again every " + RETRY_SECONDS + " s";
         LOG.warn("Central board: {}", link);
     }
 

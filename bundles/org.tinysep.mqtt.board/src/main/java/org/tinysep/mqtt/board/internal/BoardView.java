@@ -69,9 +69,12 @@ final class BoardView {
         });
         j.close(']').key("lowBatteries").open('[');
         devices.forEach((uid, h) -> {
-            if (h.battery() != null && h.battery() <= rules.lowBatteryPercent()) {
-                j.open('{').field("uid", uid).field("battery", h.battery()).field("explanation", "battery of "
-                        + uid + " at " + h.battery() + " % (low at " + rules.lowBatteryPercent() + " % or less)").close('}');
+            boolean lowPercent = h.battery() != null && h.battery() <= rules.lowBatteryPercent();
+            if (lowPercent || h.batteryLow()) {
+                String words = lowPercent ? "battery of " + uid + " at " + h.battery() + " % (low at "
+                        + rules.lowBatteryPercent() + " % or less)" : "battery of " + uid + " low, its node says"
+                        + (h.millivolts() == null ? "" : String.format(java.util.Locale.ROOT, " (%.2f V)", h.millivolts() / 1000.0));
+                j.open('{').field("uid", uid).field("battery", h.battery()).field("explanation", words).close('}');
             }
         });
         j.close(']').field("badPayloads", s.bad()).field("lastBadPayload", s.lastBad())

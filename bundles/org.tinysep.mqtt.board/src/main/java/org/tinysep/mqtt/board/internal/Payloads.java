@@ -24,7 +24,9 @@ final class Payloads {
 
     record Occupancy(String state, Instant since, String explanation) { }
 
-    record Health(String status, Integer battery, Instant lastReport, String explanation) { }
+    /** A device's health; the bridge sends {@code batteryLow} (and millivolts) where the node reports no percentage. */
+    record Health(String status, Integer battery, boolean batteryLow, Integer millivolts, Instant lastReport,
+            String explanation) { }
 
     record AlertMessage(String id, String kind, String state, Instant raisedAt, String room, String title,
             String text, String acknowledgedBy, Instant acknowledgedAt, long seq) { }
@@ -77,7 +79,16 @@ final class Payloads {
                 throw new IllegalArgumentException("battery must be a number or null, not '" + cut(battery, 40) + "'");
             }
         }
-        return new Health(required(m, "status"), percent, instantOrNull(m, "lastReport"), optional(m, "explanation"));
+        Integer millivolts = null;
+        if (m.get("batteryMillivolts") != null) {
+            try {
+                millivolts = (int) Math.round(Double.parseDouble(m.get("batteryMillivolts")));
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException("batteryMillivolts must be a number or null");
+            }
+        }
+        return new Health(required(m, "status"), percent, "true".equals(m.get("batteryLow")), millivolts,
+                instantOrNull(m, "lastReport"), optional(m, "explanation"));
     }
 
     static AlertMessage alert(String flat, String topicId, Map<String, String> m) {

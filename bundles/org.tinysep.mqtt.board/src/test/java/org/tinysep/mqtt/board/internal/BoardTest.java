@@ -194,6 +194,8 @@ class BoardTest {
         send("tinysep/c/status", "online");
         send("tinysep/c/alert/1", alert(1, "OPEN", 1).replace("\"flat\":\"17\"", "\"flat\":\"c\""));
         send("tinysep/a/device/s1/health", "{\"status\":\"OFFLINE\",\"battery\":15,\"explanation\":\"movement sensor silent since 13:00\"}");
+        send("tinysep/a/device/s2/health", "{\"status\":\"ONLINE\",\"battery\":null,\"batteryMillivolts\":2150,"
+                + "\"batteryLow\":true,\"lastReport\":null,\"linkQuality\":null,\"explanation\":\"fine\"}"); // as the bridge sends it
         String json = BoardView.json(board, RULES, now.plus(Duration.ofSeconds(5)), "connected", true);
         int c = json.indexOf("\"flat\":\"c\"");
         int b = json.indexOf("\"flat\":\"b\"");
@@ -201,6 +203,7 @@ class BoardTest {
         assertTrue(c > 0 && c < b && b < a, json);
         assertTrue(json.contains("\"explanation\":\"movement sensor silent since 13:00\""), json);
         assertTrue(json.contains("battery of s1 at 15 % (low at 20 % or less)"), json);
+        assertTrue(json.contains("battery of s2 low, its node says (2.15 V)"), json);
     }
 
     Entry only(String flat) {

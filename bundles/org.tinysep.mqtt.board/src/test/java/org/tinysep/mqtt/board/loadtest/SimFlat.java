@@ -70,7 +70,7 @@ final class SimFlat implements MqttCallback {
         send(wire.summary(), wire.summaryJson(now), true, true);
         send(wire.occupancy(), wire.occupancyJson(occupied, now), true, true);
         for (int d = 1; d <= 3; d++) {
-            send(wire.deviceHealth(id + "-" + d), wire.healthJson(true, 90 - d * 30, now), true, true);
+            send(wire.deviceHealth(id + "-" + d), wire.healthJson(true, 3000 - d * 300, now), true, true);
         }
         ThreadLocalRandom r = ThreadLocalRandom.current();
         ex.scheduleAtFixedRate(() -> send(wire.platform(), wire.platformJson(started, Instant.now(), rates.heartbeatSeconds()), true, true),
