@@ -1,0 +1,121 @@
+package org.tinysep.mqtt.board.internal;
+
+import java.time.Instant;
+import java.util.Collection;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The board's state machine: takes every message of the subscribed topics and keeps one {@link Flat} per flat.
+ * Never throws for a message: a payload that breaks the contract is counted (per flat and in total) with its
+ * reason, a duplicate or stale alert (by {@code seq}) is counted and dropped. At most {@code maxFlats} flats.
+ */
+final class Board {
+
+    private final String prefix;
+    private final int maxFlats;
+    private final Map<String, Flat> flats = new ConcurrentHashMap<>();
+    private final AtomicLong messages = new AtomicLong();
+    private final AtomicLong bad = new AtomicLong();
+    private final AtomicLong duplicates = new AtomicLong();
+    private final AtomicLong refusedFlats = new AtomicLong();
+
+    Board(String prefix, int maxFlats) {
+        this.prefix = prefix;
+        this.maxFlats = maxFlats;
+    }
+
+    /** Counters over all flats, for the page and the load test. */
+    record Totals(long messages, long bad, long duplicates, long refusedFlats, int flats) { }
+
+    /**
+     * Applies one message.
+     *
+     * @return true when it changed what the board shows
+     */
+    boolean accept(String topic, byte[] payload, Instant at) {
+        messages.incrementAndGet();
+        Optional<Topic> parsed = Topic.parse(prefix, topic);
+        if (parsed.isEmpty()) {
+            bad.incrementAndGet();
+            return false;
+        }
+        Topic t = parsed.get();
+        Flat flat = flat(t.flat(), at);
+        if (flat == null) {
+            return false;
+        }
+        try {
+            return apply(flat, t, Payloads.text(payload), at);
+        } catch (IllegalArgumentException e) {
+            bad.incrementAndGet();
+            flat.bad(topic, e.getMessage(), at);
+            return false;
+        }
+    }
+
+    private boolean apply(Flat flat, Topic t, String text, Instant at) {
+        boolean empty = text.isEmpty(); // a retained topic being emptied
+        switch (t.kind()) {
+            case STATUS -> flat.status(empty ? null : Payloads.status(text), at);
+            case PLATFORM -> {
+                if (!empty) {
+                    flat.platform(Payloads.platform(FlatJson.parse(text)), at);
+                }
+            }
+            case SUMMARY -> {
+                if (!empty) {
+                    flat.summary(Payloads.summary(FlatJson.parse(text)), at);
+                }
+            }
+            case OCCUPANCY -> {
+                if (!empty) {
+                    flat.occupancy(Payloads.occupancy(FlatJson.parse(text)), at);
+                }
+            }
+            case HEALTH -> flat.health(t.id(), empty ? null : Payloads.health(FlatJson.parse(text)), at);
+            case ALERT -> {
+                if (empty) {
+                    flat.alertGone(t.id(), at);
+                } else if (!flat.alert(Payloads.alert(t.flat(), t.id(), FlatJson.parse(text)), at)) {
+                    duplicates.incrementAndGet();
+                    return false;
+                }
+            }
+            default -> throw new IllegalStateException("unhandled " + t.kind());
+        }
+        return true;
+    }
+
+    /** @return the flat, created on its first message; null when the board already tracks {@code maxFlats} */
+    Flat flat(String id, Instant at) {
+        Flat f = flats.get(id);
+        if (f != null) {
+            return f;
+        }
+        if (flats.size() >= maxFlats) {
+            refusedFlats.incrementAndGet();
+            return null;
+        }
+        return flats.computeIfAbsent(id, k -> new Flat(k, at));
+    }
+
+    Optional<Flat> find(String id) {
+        return Optional.ofNullable(flats.get(id));
+    }
+
+    Collection<Flat> flats() {
+        return List.copyOf(flats.values());
+    }
+
+    Totals totals() {
+        return new Totals(messages.get(), bad.get(), duplicates.get(), refusedFlats.get(), flats.size());
+    }
+
+    String prefix() {
+        return prefix;
+    }
+}

@@ -1,0 +1,78 @@
+package org.tinysep.mqtt.board.internal;
+
+import java.time.Clock;
+import java.time.ZoneId;
+import org.eclipse.paho.mqttv5.common.MqttException;
+import org.tinysep.mqtt.board.internal.Liveness.Rules;
+
+/**
+ * One running board: the state ({@link Board}), its intake and, when a broker is configured, its MQTT link. Idle
+ * (no link, an empty board that says why) while {@code brokerUrl} is empty.
+ */
+final class Central implements AutoCloseable {
+
+    private final Board board;
+    private final Intake intake;
+    private final BoardClient client;
+    private final Rules rules;
+    private final Clock clock;
+    private final String defaultBy;
+
+    Central(BoardConfig c, Clock clock, Intake.Applied applied) throws MqttException {
+        this.clock = clock;
+        this.board = new Board(c.topicPrefix(), Math.max(1, c.maxFlats()));
+        this.intake = new Intake(board, clock, applied);
+        this.rules = new Rules(Math.max(1, c.missedHeartbeats()), Math.max(1, c.summaryHours()), c.lowBatteryPercent(),
+                c.timeZone().isBlank() ? ZoneId.systemDefault() : ZoneId.of(c.timeZone()));
+        this.defaultBy = c.acknowledgedBy().isBlank() ? "care centre" : c.acknowledgedBy();
+        if (c.brokerUrl().isBlank()) {
+            client = null;
+        } else {
+            client = new BoardClient(new BoardClient.Settings(c.brokerUrl(), c.clientId(), c.username(),
+                    c.password().toCharArray(), c.trustStore(), c.trustStorePassword().toCharArray(), c.topicPrefix()),
+                    intake, clock);
+            client.start();
+        }
+    }
+
+    String json() {
+        String link = client == null ? "idle: no broker configured (set brokerUrl in pid org.tinysep.mqtt.board)" : client.link();
+        return BoardView.json(board, rules, clock.instant(), link, client != null && client.connected());
+    }
+
+    /**
+     * Sends the acknowledgement of a flat's open alert.
+     *
+     * @return what happened, in plain words
+     * @throws IllegalArgumentException unknown flat or alert; IllegalStateException not open or no broker link
+     */
+    String acknowledge(String flatId, String alertId, String by) throws MqttException {
+        String who = by == null || by.isBlank() ? defaultBy : Payloads.cut(by.strip(), 80);
+        Flat flat = board.find(flatId).orElseThrow(() -> new IllegalArgumentException("the board knows no flat " + flatId));
+        Flat.Entry e = flat.snapshot().alerts().stream().filter(a -> a.alert().id().equals(alertId)).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("flat " + flatId + " has no alert " + alertId + " on the board"));
+        if (!e.alert().state().equals("OPEN")) {
+            throw new IllegalStateException("alert " + alertId + " of flat " + flatId + " is " + e.alert().state()
+                    + ", not open: nothing to acknowledge");
+        }
+        if (client == null || !client.connected()) {
+            throw new IllegalStateException("the board is not connected to the broker: the acknowledgement cannot travel to flat " + flatId);
+        }
+        client.acknowledge(flatId, alertId, who);
+        flat.ackSent(alertId, who, clock.instant());
+        return "acknowledgement of alert " + alertId + " sent to flat " + flatId + " by " + who
+                + "; the board shows it as acknowledged once the flat confirms";
+    }
+
+    Board board() {
+        return board;
+    }
+
+    @Override
+    public void close() {
+        if (client != null) {
+            client.close();
+        }
+        intake.close();
+    }
+}

@@ -1,0 +1,83 @@
+package org.tinysep.mqtt.board.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.time.Clock;
+import java.time.Duration;
+import java.time.Instant;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
+import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
+import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
+import org.eclipse.paho.mqttv5.common.MqttMessage;
+import org.junit.jupiter.api.Test;
+import org.tinysep.testsupport.mqtt.Mosquitto;
+
+/**
+ * The board on Debian's real Mosquitto: a flat (a plain Paho client publishing exactly the contract's messages)
+ * raises an alert, the board shows it, the board's acknowledgement travels to the flat, the flat's ACKNOWLEDGED
+ * comes back and the board shows it confirmed; the flat's link dies and its Last Will makes it offline.
+ */
+class BoardBrokerTest {
+
+    static final Duration LIMIT = Duration.ofSeconds(60);
+
+    @Test
+    void alertTravelsToTheBoardAndItsAcknowledgementBackToTheFlat() throws Exception {
+        assumeTrue(Mosquitto.isInstalled(), "Debian's mosquitto is not installed (scripts/install-deps.sh)");
+        try (Mosquitto broker = Mosquitto.builder().user("care", "b0ard-pass").start();
+                Central central = new Central(Configs.board(Map.of("brokerUrl", broker.url(), "username", "care",
+                        "password", "b0ard-pass")), Clock.systemUTC(), null)) {
+            MqttAsyncClient flat = new MqttAsyncClient(broker.url(), "17", new MemoryPersistence());
+            MqttConnectionOptions o = new MqttConnectionOptions();
+            o.setUserName("care"); // the test support makes one user
+            o.setPassword("b0ard-pass".getBytes(StandardCharsets.UTF_8));
+            o.setWill("tinysep/17/status", new MqttMessage("offline".getBytes(StandardCharsets.UTF_8), 1, true, null));
+            Callback callback = new Callback();
+            flat.setCallback(callback);
+            flat.connect(o).waitForCompletion(20_000);
+            BlockingQueue<String> acks = callback.messages;
+            flat.subscribe("tinysep/17/command/alert/+/ack", 1).waitForCompletion(20_000);
+
+            publish(flat, "tinysep/17/status", "online");
+            publish(flat, "tinysep/17/platform", BoardTest.platform(Instant.now()));
+            publish(flat, "tinysep/17/alert/3", BoardTest.alert(3, "OPEN", 1));
+            Conditions.await("the board to show flat 17's open alert", LIMIT,
+                    () -> central.json().contains("\"state\":\"OPEN\"") && central.json().contains("\"status\":\"ONLINE\""),
+                    central::json);
+
+            String words = central.acknowledge("17", "3", "Eva");
+            assertTrue(words.startsWith("acknowledgement of alert 3 sent to flat 17 by Eva"), words);
+            String ack = acks.poll(60, TimeUnit.SECONDS);
+            assertEquals("tinysep/17/command/alert/3/ack {\"by\":\"Eva\"}", ack);
+            assertTrue(central.json().contains("acknowledgement sent by Eva at "), central.json());
+
+            publish(flat, "tinysep/17/alert/3", BoardTest.alert(3, "ACKNOWLEDGED", 2)); // the flat confirms
+            Conditions.await("the board to show the flat's confirmation", LIMIT,
+                    () -> central.json().contains("acknowledged by Eva at 14:05; the flat confirmed it at "), central::json);
+
+            flat.disconnectForcibly(0, 1000, false); // the link dies without a DISCONNECT: the broker sends the will
+            Conditions.await("flat 17 offline by its Last Will", LIMIT,
+                    () -> central.json().contains("\"status\":\"OFFLINE\"") && central.json().contains("Last Will"), central::json);
+            assertTrue(central.json().contains("\"connected\":true"), central.json());
+            assertTrue(!central.json().contains("b0ard-pass"), "the password never reaches the page");
+            flat.close(true);
+        }
+    }
+
+    @Test
+    void idleWithoutABrokerAndSaysSo() throws Exception {
+        try (Central central = new Central(Configs.board(Map.of()), Clock.systemUTC(), null)) {
+            assertTrue(central.json().contains("idle: no broker configured"), central.json());
+        }
+    }
+
+    static void publish(MqttAsyncClient client, String topic, String payload) throws Exception {
+        client.publish(topic, payload.getBytes(StandardCharsets.UTF_8), 1, true).waitForCompletion(20_000);
+    }
+}
