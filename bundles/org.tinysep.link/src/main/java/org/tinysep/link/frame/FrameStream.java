@@ -20,10 +20,14 @@ import java.util.function.ObjIntConsumer;
  * they must not call back into this stream. If a callback throws, the exception leaves {@code accept}, the stream
  * stays consistent, and the bytes of that call not yet buffered are not processed.
  *
+ * <p>
+ * Each family's public decoder ({@code AmicaStreamDecoder}, {@code SunSpotStreamDecoder}) is this class with its
+ * format and its own sink type; the methods are final.
+ *
  * @param <F> the frame
  * @param <R> the reject reason
  */
-public final class FrameStream<F, R> {
+public class FrameStream<F, R> {
 
     /** Capacity of the buffer, in bytes; also the longest run reported at once. */
     public static final int BUFFER_SIZE = 4096;
@@ -54,7 +58,7 @@ public final class FrameStream<F, R> {
      *
      * @throws IndexOutOfBoundsException if the range lies outside {@code src}
      */
-    public void accept(byte[] src, int off, int len) {
+    public final void accept(byte[] src, int off, int len) {
         Objects.checkFromIndexSize(off, len, src.length);
         while (len > 0) {
             if (start > 0) {
@@ -77,7 +81,7 @@ public final class FrameStream<F, R> {
      * exceed it, the first {@value #BUFFER_SIZE} bytes are reported with the run's reason and the rest of the
      * candidate as a second, truncated run.
      */
-    public void reset() {
+    public final void reset() {
         int left = count;
         start = 0;
         count = 0;
@@ -96,7 +100,7 @@ public final class FrameStream<F, R> {
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */
-    public int buffered() {
+    public final int buffered() {
         return count;
     }
 
