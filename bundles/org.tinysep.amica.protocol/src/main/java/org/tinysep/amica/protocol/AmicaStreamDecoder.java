@@ -1,6 +1,5 @@
 package org.tinysep.amica.protocol;
 
-import java.util.Objects;
 import org.tinysep.link.frame.FrameStream;
 
 /**
@@ -16,21 +15,12 @@ import org.tinysep.link.frame.FrameStream;
  */
 public final class AmicaStreamDecoder extends FrameStream<AmicaFrame, RejectReason> {
 
-    /** Receives what the decoder finds. */
-    public interface Sink {
-
-        /** @param f a valid frame, in stream order */
-        void frame(AmicaFrame f);
-
-        /**
-         * @param r            the reason seen at the first byte of the dropped run
-         * @param skippedBytes how many consecutive bytes were dropped, at least 1
-         */
-        void rejected(RejectReason r, int skippedBytes);
+    /** Receives what the decoder finds: valid frames in stream order, and each run of dropped bytes. */
+    public interface Sink extends FrameStream.Sink<AmicaFrame, RejectReason> {
     }
 
     /** @param sink receives frames and rejections */
     public AmicaStreamDecoder(Sink sink) {
-        super(AmicaFormat.INSTANCE, Objects.requireNonNull(sink, "sink")::frame, sink::rejected);
+        super(AmicaFormat.INSTANCE, sink);
     }
 }

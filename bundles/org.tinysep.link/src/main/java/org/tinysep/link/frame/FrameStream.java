@@ -42,6 +42,29 @@ public class FrameStream<F, R> {
     private R skipReason;
 
     /**
+     * Receives what a stream finds (a family's decoder names its own {@code Sink} that extends this one).
+     *
+     * @param <F> the frame
+     * @param <R> the reject reason
+     */
+    public interface Sink<F, R> {
+
+        /** @param f a valid frame, in stream order */
+        void frame(F f);
+
+        /**
+         * @param r            the reason seen at the first byte of the dropped run
+         * @param skippedBytes how many consecutive bytes were dropped, at least 1
+         */
+        void rejected(R r, int skippedBytes);
+    }
+
+    /** @param sink receives frames and rejections (not null) */
+    protected FrameStream(FrameFormat<F, R> format, Sink<F, R> sink) {
+        this(format, Objects.requireNonNull(sink, "sink")::frame, sink::rejected);
+    }
+
+    /**
      * @param format     the frames to find
      * @param frames     receives each valid frame, in stream order
      * @param rejections receives each dropped run: the reason seen at its first byte and how many consecutive bytes

@@ -1,6 +1,5 @@
 package org.tinysep.sunspot.protocol;
 
-import java.util.Objects;
 import org.tinysep.link.frame.FrameStream;
 
 /**
@@ -13,26 +12,17 @@ import org.tinysep.link.frame.FrameStream;
  * so a valid frame right after garbage is still found), the reporting of dropped runs (once each, with the reason
  * seen at the run's first byte, in chunks of at most {@value #BUFFER_SIZE} bytes), {@code reset} and the bounded
  * buffer are the skeleton both families share, {@link FrameStream} (bundles/org.tinysep.link, compiled into this
- * bundle); this class adds the rules of {@code SunSpotFormat}. Not thread-safe: one reader thread feeds one decoder; sink
- * callbacks run inside {@code accept} and must not call back into it.
+ * bundle); this class adds the rules of {@code SunSpotFormat}. Not thread-safe: one reader thread feeds one
+ * decoder; sink callbacks run inside {@code accept} and must not call back into it.
  */
 public final class SunSpotStreamDecoder extends FrameStream<SunSpotFrame, RejectReason> {
 
-    /** Receives what the decoder finds. */
-    public interface Sink {
-
-        /** @param f a valid frame, in stream order */
-        void frame(SunSpotFrame f);
-
-        /**
-         * @param r            the reason seen at the first byte of the dropped run
-         * @param skippedBytes how many consecutive bytes were dropped, at least 1
-         */
-        void rejected(RejectReason r, int skippedBytes);
+    /** Receives what the decoder finds: valid frames in stream order, and each run of dropped bytes. */
+    public interface Sink extends FrameStream.Sink<SunSpotFrame, RejectReason> {
     }
 
     /** @param sink receives frames and rejections */
     public SunSpotStreamDecoder(Sink sink) {
-        super(SunSpotFormat.INSTANCE, Objects.requireNonNull(sink, "sink")::frame, sink::rejected);
+        super(SunSpotFormat.INSTANCE, sink);
     }
 }
