@@ -20,6 +20,7 @@ import java.util.zip.ZipOutputStream;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 10 items 4 and 6 on the real distribution (a process, driven through its shell as a user does): the state
@@ -140,14 +141,14 @@ public class CraftedArchiveTest {
         FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
         Files.setPosixFilePermissions(flat.home.resolve("var"), PosixFilePermissions.fromString("rwxr-xr-x"));
         Files.writeString(flat.home.resolve("etc/org.tinysep.mailmanager.cfg"), "host=127.0.0.1\nport="
-                + PlatformProcess.freeUdpPort() + "\nsecurity=NONE\nuser=anna\npassword=" + PASSWORD
+                + Platforms.freeUdpPort() + "\nsecurity=NONE\nuser=anna\npassword=" + PASSWORD
                 + "\nfrom=tinysep@example.org\nrecipients=carer@example.org\n");
         return flat.home;
     }
 
     /** @return the platform, started, with a room added (so House Information has written the house) */
     private static PlatformProcess started(Path home) throws Exception {
-        PlatformProcess p = PlatformProcess.start(home);
+        PlatformProcess p = Platforms.start(home);
         try {
             RestartRestoresEverythingTest.await(p, () -> p.command("tinysep:drivers").toString(),
                     s -> s.contains("TimeController") && s.contains("HouseInformation"), "drivers up");

@@ -25,6 +25,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.tinysep.simulator.cli.Run;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 6 point 5: the real distribution process is killed with SIGKILL ({@code destroyForcibly}) at seeded random
@@ -50,7 +51,7 @@ public class CrashSafetyTest {
     public void everyAcknowledgedChangeSurvivesSigkill() throws Exception {
         FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
         Map<String, String> targets = new LinkedHashMap<>();
-        try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+        try (PlatformProcess p = Platforms.start(flat.home)) {
             RestartRestoresEverythingTest.await(p, () -> p.command("tinysep:drivers").toString(),
                     s -> s.contains("TimeController") && s.contains("BusRadioAmicaUdp"), "drivers up");
             Run.simulate(flat.simulatorArgs("06:00", "06:05"));
@@ -70,7 +71,7 @@ public class CrashSafetyTest {
         long started = System.nanoTime();
         try {
             for (int kill = 1; kill <= KILLS; kill++) {
-                try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+                try (PlatformProcess p = Platforms.start(flat.home)) {
                     verify(p, flat.home, acked, inFlight, kill);
                     inFlight.clear();
                     if (kill > 1) {
@@ -102,7 +103,7 @@ public class CrashSafetyTest {
                     }
                 }
             }
-            try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+            try (PlatformProcess p = Platforms.start(flat.home)) {
                 verify(p, flat.home, acked, inFlight, KILLS + 1);
                 survived++;
                 p.stop(Duration.ofSeconds(60));

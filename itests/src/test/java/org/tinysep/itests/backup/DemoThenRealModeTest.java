@@ -20,6 +20,7 @@ import java.util.stream.Stream;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 10.3 / 17.5, "demo then real mode": the demo of {@code ./run.sh} runs in its own throwaway state and leaves
@@ -39,10 +40,10 @@ public class DemoThenRealModeTest {
     @Test
     public void theDemoLeavesTheInstallationAsItWasAndTheNextStartIsInRealTime() throws Exception {
         Path home = tmp.newFolder("home").toPath();
-        PlatformProcess.install(home);
-        int amica = PlatformProcess.freeUdpPort();
-        int sunSpot = PlatformProcess.freeUdpPort();
-        int sync = PlatformProcess.freeUdpPort();
+        Platforms.install(home);
+        int amica = Platforms.freeUdpPort();
+        int sunSpot = Platforms.freeUdpPort();
+        int sync = Platforms.freeUdpPort();
         Path etc = home.resolve("etc");
         Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + amica + "\nbindAddress=127.0.0.1\n");
         Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"),
@@ -59,7 +60,7 @@ public class DemoThenRealModeTest {
         assertEquals(prepared.output, 0, prepared.exit);
         assertEquals("prepare writes nothing into the user's etc/ or var/", before, snapshot(home));
 
-        try (PlatformProcess p = PlatformProcess.start(home, logs, "--home", demo.resolve("home").toString(),
+        try (PlatformProcess p = Platforms.start(home, logs, "--home", demo.resolve("home").toString(),
                 "--var", demo.resolve("var").toString())) {
             RestartRestoresEverythingTest.await(p, () -> String.join("\n", p.command("tinysep:drivers")),
                     s -> s.contains("TimeController") && s.contains("BusRadioAmicaUdp") && s.contains("BusRadioSunSpot"),
@@ -81,7 +82,7 @@ public class DemoThenRealModeTest {
         }
         assertEquals("the demo wrote nothing into the user's etc/ or var/", before, snapshot(home));
 
-        try (PlatformProcess p = PlatformProcess.start(home, logs)) { // the user's own installation (TINYSEP_DEMO=0)
+        try (PlatformProcess p = Platforms.start(home, logs)) { // the user's own installation (TINYSEP_DEMO=0)
             RestartRestoresEverythingTest.await(p, () -> String.join("\n", p.command("tinysep:time")),
                     s -> s.contains("mode "), "the Time Controller");
             String time = String.join("\n", p.command("tinysep:time"));

@@ -17,13 +17,13 @@ final class FlatHome {
     static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
 
     final Path home;
-    final int amicaPort = PlatformProcess.freeUdpPort();
-    final int sunSpotPort = PlatformProcess.freeUdpPort();
-    final int syncPort = PlatformProcess.freeUdpPort();
+    final int amicaPort = Platforms.freeUdpPort();
+    final int sunSpotPort = Platforms.freeUdpPort();
+    final int syncPort = Platforms.freeUdpPort();
 
     FlatHome(Path home) throws IOException {
         this.home = home;
-        PlatformProcess.install(home);
+        Platforms.install(home);
         Path etc = home.resolve("etc");
         Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"),
                 "port=" + amicaPort + "\nbindAddress=127.0.0.1\n");

@@ -13,6 +13,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.tinysep.simulator.cli.Run;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * DESIGN.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the
@@ -36,7 +37,7 @@ public class RestartRestoresEverythingTest {
         String door;
         List<String> rooms;
         List<String> lastPackets;
-        try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+        try (PlatformProcess p = Platforms.start(flat.home)) {
             await(p, () -> p.command("tinysep:drivers").toString(), s -> s.contains("TimeController")
                     && s.contains("BusRadioAmicaUdp") && s.contains("BusRadioSunSpot"), "drivers up");
             Run.simulate(flat.simulatorArgs("06:00", "06:50"));
@@ -64,7 +65,7 @@ public class RestartRestoresEverythingTest {
         assertTrue(Files.isRegularFile(flat.home.resolve("var/backup/AmicaDoor/AmicaDoor-" + door + ".xml")));
         Path torn = flat.home.resolve("var/backup/AmicaDoor/AmicaDoor-0000dead-torn.xml");
         Files.writeString(torn, "<backup kind=\"DEVICE\"><uid>0000dead-torn</uid><name>half a fi");
-        try (PlatformProcess p = PlatformProcess.start(flat.home)) {
+        try (PlatformProcess p = Platforms.start(flat.home)) {
             TreeMap<String, List<String>> after = stable(p);
             String log = String.join("\n", p.command("tinysep:log 500"));
             assertTrue(log, log.contains("PROBLEM") && log.contains("damaged backup file AmicaDoor-0000dead-torn.xml"));

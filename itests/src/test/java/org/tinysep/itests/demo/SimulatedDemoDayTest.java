@@ -51,12 +51,14 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
     /**
      * Flat Occupancy. demo-day: Anna (asleep at home) wakes 06:45 -> OCCUPIED with her first motion; leaves 08:30
      * (± 90 s jitter), the door closes, UNOCCUPIED 600 s (leave timeout) later; arrives 11:40 (± 90 s) -> OCCUPIED
-     * when the door opens. Ben's visit (15:30-18:00) happens while Anna is home: no change.
+     * when the door opens. Ben's visit (15:30-18:00) happens while Anna is home: no change. Times are those the
+     * platform stamped: the second in which the simulator sent the frame (since issue 16's single lock-step driver,
+     * which ticks a second before sending its frames; one second later than the earlier frames-then-tick order).
      */
     private static final List<String> OCCUPANCY = List.of(
-            "06:45:13 OCCUPIED", // 06:45 wakes (+13 s jitter): her first bedroom motion
-            "08:39:28 UNOCCUPIED", // 08:30 leaves (-35 s jitter): door closed 08:29:28, + 600 s leave timeout
-            "11:40:12 OCCUPIED"); // 11:40 arrives (+12 s jitter): the outer door opens
+            "06:45:14 OCCUPIED", // 06:45 wakes (+13 s jitter): her first bedroom motion
+            "08:39:29 UNOCCUPIED", // 08:30 leaves (-35 s jitter): door closed 08:29:29, + 600 s leave timeout
+            "11:40:13 OCCUPIED"); // 11:40 arrives (+12 s jitter): the outer door opens
 
     /** Rooms lit, consecutive repeats merged; the scenario's walk along the house graph (Hall links everything). */
     private static final List<String> ROOMS_LIT = List.of(
@@ -77,11 +79,11 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
 
     /** Inactivity Recognition: watching while occupied, one ALERT after the bathroom limit (45 min) from 14:02. */
     private static final List<String> INACTIVITY = List.of(
-            "06:45:13 WATCHING", "08:39:28 NOT_WATCHING", "11:40:12 WATCHING", // with Flat Occupancy
+            "06:45:14 WATCHING", "08:39:29 NOT_WATCHING", "11:40:13 WATCHING", // with Flat Occupancy
             // last bathroom motion report about 14:01:15 (she collapses at 14:02 - jitter) + 45 min; to the minute:
             // an unchanged motion report is not paced in lock-step and may be stamped a second or two late
             "14:46 ALERT",
-            "15:29:42 WATCHING"); // 15:30 Ben arrives (-18 s jitter): the door opening is activity
+            "15:29:43 WATCHING"); // 15:30 Ben arrives (-18 s jitter): the door opening is activity
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {

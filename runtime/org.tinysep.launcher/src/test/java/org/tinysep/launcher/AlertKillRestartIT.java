@@ -21,6 +21,7 @@ import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 12 item 3 with the real distribution as a process: an inactivity alert raised (bathroom limit 1 min, real
@@ -73,24 +74,24 @@ class AlertKillRestartIT {
                     } catch (IOException | InterruptedException e) {
                         throw new IllegalStateException(e);
                     }
-                    return p.command("tinysep:devices").contains("state=WATCHING");
+                    return p.text("tinysep:devices").contains("state=WATCHING");
                 }, "Inactivity Recognition watching the bathroom");
-                TestDistribution.await(WAIT, () -> p.command("tinysep:alerts").contains("alert 1  OPEN"),
+                TestDistribution.await(WAIT, () -> p.text("tinysep:alerts").contains("alert 1  OPEN"),
                         "alert 1 open");
                 TestDistribution.await(WAIT, () -> read(state).contains("state=OPEN"), "the alert saved");
-                System.out.println("before the kill:\n" + p.command("tinysep:alerts"));
+                System.out.println("before the kill:\n" + p.text("tinysep:alerts"));
                 p.kill();
             }
             try (PlatformProcess p = PlatformProcess.start(home)) {
-                String alerts = p.command("tinysep:alerts");
+                String alerts = p.text("tinysep:alerts");
                 System.out.println("after the restart:\n" + alerts);
                 assertTrue(alerts.contains("alert 1  OPEN  INACTIVITY"), alerts);
                 assertTrue(alerts.contains("TinySEP: no activity in Bathroom since"), alerts);
-                String log = p.command("tinysep:log 400");
+                String log = p.text("tinysep:log 400");
                 assertTrue(log.contains("restored after a restart: 1 open alert(s)"), log);
-                String ack = p.command("tinysep:ack 1 Anna");
+                String ack = p.text("tinysep:ack 1 Anna");
                 assertTrue(ack.contains("alert 1 acknowledged by Anna"), ack);
-                assertTrue(p.command("tinysep:alerts").contains("(no open alerts)"));
+                assertTrue(p.text("tinysep:alerts").contains("(no open alerts)"));
             }
         }
     }

@@ -30,6 +30,7 @@ import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 10 item 2 with the real distribution as a process, in real time: a person moves in the bathroom (limit
@@ -100,7 +101,7 @@ class KillRestartIT {
                 assertTrue(raised.isBefore(t0.plus(LIMIT).plusSeconds(15)), "at the right time: " + alert);
                 assertFalse(alert.contains("late"), alert);
             }
-            assertTrue(p.command("tinysep:devices").contains("occupancy=OCCUPIED"), "flat occupancy restored");
+            assertTrue(p.text("tinysep:devices").contains("occupancy=OCCUPIED"), "flat occupancy restored");
 
             // 3. she moves again (the alert clears), then the platform dies and stays down past the deadline
             Instant t1 = moveInBathroom(p, bath, t0);
@@ -120,7 +121,7 @@ class KillRestartIT {
                     + " (Inactivity Recognition was not running from "), alert);
             assertTrue(alert.contains("; this alert is late)"), alert);
             System.out.println("after an outage past the deadline (due " + due + "): " + alert);
-            assertTrue(p.command("tinysep:log 300").contains("alert handed to the alert service"));
+            assertTrue(p.text("tinysep:log 300").contains("alert handed to the alert service"));
         }
     }
 
@@ -173,7 +174,7 @@ class KillRestartIT {
     private static String awaitEvent(PlatformProcess p, String text, Instant from) {
         String[] found = new String[1];
         TestDistribution.await(Duration.ofSeconds(120), () -> {
-            Optional<String> line = p.command("tinysep:log 400").lines().filter(l -> l.contains(text))
+            Optional<String> line = p.text("tinysep:log 400").lines().filter(l -> l.contains(text))
                     .filter(l -> !Instant.parse(l.split(" \\| ")[1].strip()).isBefore(from.minusSeconds(1)))
                     .findFirst();
             line.ifPresent(l -> found[0] = l);
@@ -183,7 +184,7 @@ class KillRestartIT {
     }
 
     private static String inactivity(PlatformProcess p) {
-        return p.command("tinysep:devices").lines().dropWhile(l -> !l.contains(" InactivityRecognition "))
+        return p.text("tinysep:devices").lines().dropWhile(l -> !l.contains(" InactivityRecognition "))
                 .filter(l -> l.strip().startsWith("parameters:")).findFirst().orElse("");
     }
 

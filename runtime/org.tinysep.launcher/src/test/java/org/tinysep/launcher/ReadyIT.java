@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.stream.IntStream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 12 item 5, "ready means ready": the banner ("N/N bundles active") comes only once the bus radios listen
@@ -33,7 +34,7 @@ class ReadyIT {
                 "port=" + port + "\nbindAddress=127.0.0.1\n");
         Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
                 "mode=REAL\nsyncPort=0\nsyncBindAddress=127.0.0.1\n");
-        try (PlatformProcess p = PlatformProcess.launch(home); AmicaSender sender = new AmicaSender(port)) {
+        try (PlatformProcess p = PlatformProcess.launch(home, home, List.of()); AmicaSender sender = new AmicaSender(port)) {
             String banner = p.awaitLine("bundles active", Duration.ofSeconds(120));
             for (int node = 1; node <= NODES; node++) {
                 sender.keepAlive(3, node);
@@ -42,7 +43,7 @@ class ReadyIT {
             List<String> missing = new ArrayList<>();
             long end = System.nanoTime() + Duration.ofSeconds(60).toNanos();
             while (System.nanoTime() < end) {
-                String devices = p.command("tinysep:devices");
+                String devices = p.text("tinysep:devices");
                 missing.clear();
                 IntStream.rangeClosed(1, NODES).mapToObj(n -> "3." + n)
                         .filter(n -> !devices.contains("\"AmICA node " + n + "\"")).forEach(missing::add);
@@ -52,7 +53,7 @@ class ReadyIT {
                 Thread.sleep(500);
             }
             assertTrue(missing.isEmpty(), "keep-alives sent right after the banner were lost, no device for nodes "
-                    + missing + "; " + p.command("tinysep:drivers"));
+                    + missing + "; " + p.text("tinysep:drivers"));
         }
     }
 }

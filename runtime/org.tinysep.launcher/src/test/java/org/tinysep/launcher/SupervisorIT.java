@@ -19,6 +19,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.testsupport.mail.SmtpSink;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * Issue 12 item 5, "the platform cannot die silently", without systemd: {@code java -jar tinysep.jar --supervise}
@@ -44,7 +45,7 @@ class SupervisorIT {
         try (SmtpSink smtp = new SmtpSink().start()) {
             Files.writeString(home.resolve("etc/org.tinysep.mailmanager.cfg"), "host=127.0.0.1\nport=" + smtp.port()
                     + "\nsecurity=NONE\nfrom=tinysep@localhost\nrecipients=carer@example.org\n");
-            PlatformProcess p = PlatformProcess.launch(home, List.of("-Dtinysep.heartbeat.seconds=1",
+            PlatformProcess p = PlatformProcess.launch(home, home, List.of("-Dtinysep.heartbeat.seconds=1",
                     "-D" + Supervisor.HANG_PROPERTY + "=6"), "--supervise");
             Long second = null;
             try {

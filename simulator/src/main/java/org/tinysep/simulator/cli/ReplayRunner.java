@@ -6,19 +6,20 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.LocalDate;
-import java.util.concurrent.locks.LockSupport;
 import org.tinysep.simulator.node.ReplayNodes;
 import org.tinysep.simulator.node.Target;
 import org.tinysep.simulator.replay.ReplayPlan;
+import org.tinysep.simulator.time.LockStepDriver;
 import org.tinysep.simulator.time.RealTimeDriver;
+import org.tinysep.simulator.time.Stepper;
 import org.tinysep.simulator.time.SyncClient;
 import org.tinysep.simulator.time.VirtualClock;
 import org.tinysep.simulator.time.Welcome;
 
 /**
- * Replays a recorded home against a platform ({@code --replay}). In lock-step each played second is first TICKed
- * (the platform's clock reads that second), then its frames are sent, stamped with it by the bus radio; after a
- * second with changes the driver pauses {@code --pace-ms} before the next TICK so the radio has taken them.
+ * Replays a recorded home against a platform ({@code --replay}), in real time or in lock-step through the
+ * simulator's one {@link LockStepDriver} (each played second TICKed, then its frames sent and stamped with it),
+ * skipping to the next second with something to send ({@link ReplayPlayer#next}).
  */
 final class ReplayRunner {
 
@@ -71,27 +72,18 @@ final class ReplayRunner {
         long played = 0;
         try (ReplayNodes nodes = ReplayNodes.create(replay.plan().nodes(), target, o.fullRate())) {
             ReplayPlayer player = new ReplayPlayer(replay, nodes, o.fullRate() ? 1 : QUIET_STEP);
-            long progressEvery = Math.max(1, o.progressMinutes()) * 60L;
-            long nextProgress = from.getEpochSecond() + progressEvery;
+            ReplayProgress progress = new ReplayProgress(replay, o.progressMinutes(), from);
             if (sync == null) {
                 new RealTimeDriver(clock, o.speed()).run(from, until, t -> player.step(t.getEpochSecond()));
                 played = until.getEpochSecond() - from.getEpochSecond();
             } else {
-                for (long t = from.getEpochSecond(); t < until.getEpochSecond(); t = player.next(t)) {
-                    Instant at = Instant.ofEpochSecond(t);
-                    clock.set(at);
-                    sync.tick(at);
-                    played++;
-                    if (player.step(t) > 0 && o.paceMillis() > 0) {
-                        LockSupport.parkNanos(o.paceMillis() * 1_000_000L);
-                    }
-                    if (t >= nextProgress) {
-                        System.out.printf("%s (recorded %s)  %d/%d events  %.1f s wall%n", at,
-                                replay.recordedTime(at), player.sent(), replay.plan().actions().size(),
-                                (System.nanoTime() - wall) / 1e9);
-                        nextProgress += progressEvery * ((t - nextProgress) / progressEvery + 1);
-                    }
-                }
+                Stepper stepper = at -> {
+                    int changed = player.step(at.getEpochSecond());
+                    progress.report(at, player.sent(), wall);
+                    return changed;
+                };
+                played = new LockStepDriver(sync, clock, o.paceMillis() * 1_000_000L).run(from, until, stepper,
+                        player::next);
             }
             Duration took = Duration.ofNanos(System.nanoTime() - wall);
             System.out.printf("done: %d events, %d virtual seconds (%d played) in %.1f s wall time%n", player.sent(),

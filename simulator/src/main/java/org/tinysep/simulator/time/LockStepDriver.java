@@ -4,13 +4,23 @@ import java.time.Instant;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * Lock-step with the platform's Time Controller (docs/time-sync.md): per virtual second, the simulation sends that
- * second's frames, then, if any reported value changed, pauses {@code paceNanos} so the bus radio has processed
- * them ("pace" in time-sync.md: nearly always enough on one machine, not a guarantee under heavy load; a repeated,
- * unchanged status stamped one second late does no harm, so unchanged seconds are not paced), then TICKs and waits
- * for DONE. Every second is ticked: the reed switch reports every second, so no second is idle.
+ * The one lock-step loop of the simulator, for scenarios and replays (docs/time-sync.md): per played second it sets
+ * the simulation's clock, TICKs the platform to that second and waits for DONE, then sends that second's frames
+ * (the bus radio stamps them with that second); if any reported value changed it pauses {@code paceNanos} before the
+ * next TICK so the radio has processed them ("pace" in time-sync.md: nearly always enough on one machine, not a
+ * guarantee under heavy load). Which second is played next is the caller's {@link NextSecond}: every second for a
+ * scenario (the reed switch reports every second), the next second with something to send for a replay.
  */
 public final class LockStepDriver {
+
+    /** The next second to play after a played one (epoch seconds, greater than {@code t}). */
+    @FunctionalInterface
+    public interface NextSecond {
+        long after(long t);
+    }
+
+    /** Every second is played. */
+    public static final NextSecond EVERY_SECOND = t -> t + 1;
 
     private final SyncClient sync;
     private final VirtualClock clock;
@@ -22,14 +32,23 @@ public final class LockStepDriver {
         this.paceNanos = paceNanos;
     }
 
-    /** Runs the seconds from {@code from} (inclusive) to {@code until} (exclusive). */
-    public void run(Instant from, Instant until, Stepper stepper) throws Exception {
-        for (Instant t = from; t.isBefore(until); t = t.plusSeconds(1)) {
-            clock.set(t);
-            if (stepper.step(t) > 0 && paceNanos > 0) {
+    /** Plays every second from {@code from} (inclusive) to {@code until} (exclusive). @return seconds played */
+    public long run(Instant from, Instant until, Stepper stepper) throws Exception {
+        return run(from, until, stepper, EVERY_SECOND);
+    }
+
+    /** Plays the seconds from {@code from} (inclusive) to {@code until} (exclusive) chosen by {@code next}. */
+    public long run(Instant from, Instant until, Stepper stepper, NextSecond next) throws Exception {
+        long played = 0;
+        for (long t = from.getEpochSecond(); t < until.getEpochSecond(); t = next.after(t)) {
+            Instant at = Instant.ofEpochSecond(t);
+            clock.set(at);
+            sync.tick(at);
+            played++;
+            if (stepper.step(at) > 0 && paceNanos > 0) {
                 LockSupport.parkNanos(paceNanos);
             }
-            sync.tick(t);
         }
+        return played;
     }
 }

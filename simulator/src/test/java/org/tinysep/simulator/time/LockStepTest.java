@@ -45,7 +45,7 @@ class LockStepTest {
     }
 
     @Test
-    void theDriverTicksEverySecondInOrderAfterItsFrames() throws Exception {
+    void theDriverTicksEverySecondInOrderBeforeItsFrames() throws Exception {
         try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
             assertTrue(c.hello().external());
             Instant from = Instant.parse("2026-11-23T08:00:00Z");
@@ -60,9 +60,25 @@ class LockStepTest {
             for (int i = 0; i < 100; i++) {
                 assertEquals(from.plusSeconds(i), ticks.get(i));
             }
-            assertEquals(from.plusSeconds(5) + " step, platform at " + from.plusSeconds(4), log.get(5),
-                    "each second's frames go out before its TICK, after the previous DONE");
+            assertEquals(from.plusSeconds(5) + " step, platform at " + from.plusSeconds(5), log.get(5),
+                    "each second's frames go out after its TICK's DONE, so the radio stamps them with that second");
             assertEquals(from.plusSeconds(99), clock.now());
+        }
+    }
+
+    @Test
+    void aReplaySkipsToTheNextSecondItsNextSecondFunctionNames() throws Exception {
+        try (FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL"); SyncClient c = new SyncClient(peer.address(), 2000)) {
+            assertTrue(c.hello().external());
+            Instant from = Instant.parse("2026-11-23T08:00:00Z");
+            List<Instant> stepped = new ArrayList<>();
+            long played = new LockStepDriver(c, new VirtualClock(from), 0).run(from, from.plusSeconds(100), t -> {
+                stepped.add(t);
+                return 0;
+            }, t -> t + 10);
+            assertEquals(10, played);
+            assertEquals(stepped, peer.ticks(), "every played second is ticked, and only those");
+            assertEquals(from.plusSeconds(90), stepped.get(9));
         }
     }
 

@@ -20,10 +20,14 @@ import java.util.function.ObjIntConsumer;
  * they must not call back into this stream. If a callback throws, the exception leaves {@code accept}, the stream
  * stays consistent, and the bytes of that call not yet buffered are not processed.
  *
+ * <p>
+ * Each family's public decoder ({@code AmicaStreamDecoder}, {@code SunSpotStreamDecoder}) is this class with its
+ * format and its own sink type; the methods are final.
+ *
  * @param <F> the frame
  * @param <R> the reject reason
  */
-public final class FrameStream<F, R> {
+public class FrameStream<F, R> {
 
     /** Capacity of the buffer, in bytes; also the longest run reported at once. */
     public static final int BUFFER_SIZE = 4096;
@@ -36,6 +40,29 @@ public final class FrameStream<F, R> {
     private int count;
     private int skipped;
     private R skipReason;
+
+    /**
+     * Receives what a stream finds (a family's decoder names its own {@code Sink} that extends this one).
+     *
+     * @param <F> the frame
+     * @param <R> the reject reason
+     */
+    public interface Sink<F, R> {
+
+        /** @param f a valid frame, in stream order */
+        void frame(F f);
+
+        /**
+         * @param r            the reason seen at the first byte of the dropped run
+         * @param skippedBytes how many consecutive bytes were dropped, at least 1
+         */
+        void rejected(R r, int skippedBytes);
+    }
+
+    /** @param sink receives frames and rejections (not null) */
+    protected FrameStream(FrameFormat<F, R> format, Sink<F, R> sink) {
+        this(format, Objects.requireNonNull(sink, "sink")::frame, sink::rejected);
+    }
 
     /**
      * @param format     the frames to find
@@ -54,7 +81,7 @@ public final class FrameStream<F, R> {
      *
      * @throws IndexOutOfBoundsException if the range lies outside {@code src}
      */
-    public void accept(byte[] src, int off, int len) {
+    public final void accept(byte[] src, int off, int len) {
         Objects.checkFromIndexSize(off, len, src.length);
         while (len > 0) {
             if (start > 0) {
@@ -77,7 +104,7 @@ public final class FrameStream<F, R> {
      * exceed it, the first {@value #BUFFER_SIZE} bytes are reported with the run's reason and the rest of the
      * candidate as a second, truncated run.
      */
-    public void reset() {
+    public final void reset() {
         int left = count;
         start = 0;
         count = 0;
@@ -96,7 +123,7 @@ public final class FrameStream<F, R> {
     }
 
     /** @return how many bytes are buffered, waiting to complete a candidate frame; at most {@value #BUFFER_SIZE} */
-    public int buffered() {
+    public final int buffered() {
         return count;
     }
 

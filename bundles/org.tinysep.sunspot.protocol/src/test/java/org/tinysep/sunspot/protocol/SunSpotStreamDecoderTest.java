@@ -16,8 +16,10 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tinysep.link.frame.testing.FrameChecks;
+import org.tinysep.link.frame.testing.StreamDecoderContract;
 
-class SunSpotStreamDecoderTest {
+/** The Sun SPOT rules of the stream decoder; what every family's decoder does is {@link StreamDecoderContract}'s. */
+class SunSpotStreamDecoderTest extends StreamDecoderContract {
 
     private final RecordingSink sink = new RecordingSink();
     private final SunSpotStreamDecoder decoder = new SunSpotStreamDecoder(sink);
@@ -30,12 +32,52 @@ class SunSpotStreamDecoderTest {
         decoder.accept(bytes, 0, bytes.length);
     }
 
-    @Test
-    void decodesBackToBackFrames() throws Exception {
-        feed(concat(MOVEMENT_1234, TEMPERATURE_5678, MOVEMENT_V2_1234, LIGHT_9ABC));
-        assertEquals(List.of(frameOf(MOVEMENT_1234), frameOf(TEMPERATURE_5678), frameOf(MOVEMENT_V2_1234),
-                frameOf(LIGHT_9ABC)), sink.events);
-        assertEquals(0, decoder.buffered());
+    @Override
+    protected Probe fresh() {
+        RecordingSink r = new RecordingSink();
+        SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
+        return new Probe(d::accept, d::buffered, d::reset, () -> r.events, () -> r.frames, () -> r.skipped);
+    }
+
+    @Override
+    protected List<byte[]> samples() {
+        return List.of(MOVEMENT_1234, LIGHT_9ABC, TEMPERATURE_5678, MOVEMENT_V2_1234);
+    }
+
+    @Override
+    protected String text(byte[] frame) throws Exception {
+        return frameOf(frame);
+    }
+
+    @Override
+    protected byte[] numbered(int i) {
+        return SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(i),
+                SunSpotPayloads.encode(new LightStatus(i % 101))));
+    }
+
+    @Override
+    protected int maxFrame() {
+        return SunSpotCodec.MAX_FRAME;
+    }
+
+    @Override
+    protected int checksumIndex() {
+        return 10;
+    }
+
+    @Override
+    protected String zeroRunReason() {
+        return "UNKNOWN_PAYLOAD"; // zeros: S = L = 0, sensor type 0 is unknown
+    }
+
+    @Override
+    protected int zerosLeftBuffered() {
+        return SunSpotCodec.HEADER_LENGTH - 1;
+    }
+
+    @Override
+    protected void newWithNullSink() {
+        new SunSpotStreamDecoder(null);
     }
 
     @Test
@@ -53,91 +95,10 @@ class SunSpotStreamDecoderTest {
     }
 
     @Test
-    void frameWithBadChecksumIsSkippedAndTheNextFrameDecoded() throws Exception {
-        byte[] bad = TEMPERATURE_5678.clone();
-        bad[10] ^= 0x40;
-        feed(concat(bad, TEMPERATURE_5678));
-        assertEquals(List.of("BAD_CHECKSUM 16", frameOf(TEMPERATURE_5678)), sink.events);
-    }
-
-    @Test
     void frameWhoseTypeDiffersFromItsPayloadIsSkipped() throws Exception {
         byte[] wrongType = SunSpotCodec.encode(new SunSpotFrame(SPOT_1234, 3, hex("02 01 00 01")));
         feed(concat(wrongType, MOVEMENT_1234));
         assertEquals(List.of("TYPE_MISMATCH 16", frameOf(MOVEMENT_1234)), sink.events);
-    }
-
-    @Test
-    void frameWithALostByteIsSkippedAndTheNextFrameDecoded() throws Exception {
-        byte[] lost = Arrays.copyOf(MOVEMENT_1234, MOVEMENT_1234.length - 1);
-        feed(concat(lost, LIGHT_9ABC));
-        assertEquals(List.of("BAD_CHECKSUM 15", frameOf(LIGHT_9ABC)), sink.events);
-    }
-
-    @Test
-    void sameResultWhenSplitAtEveryPairOfByteBoundaries() throws Exception {
-        byte[] bad = LIGHT_9ABC.clone();
-        bad[10] = 0;
-        byte[] stream = concat(hex("01 02 03"), MOVEMENT_1234, hex("FF"), TEMPERATURE_5678, bad, LIGHT_9ABC,
-                MOVEMENT_V2_1234);
-        feed(stream);
-        List<String> expected = List.copyOf(sink.events);
-        assertEquals(4, sink.frames);
-        assertEquals("LENGTH_MISMATCH 3", expected.get(0));
-        assertEquals("BAD_CHECKSUM 16", expected.get(4));
-        assertEquals(frameOf(MOVEMENT_V2_1234), expected.get(expected.size() - 1));
-        FrameChecks.assertSplitsAlike(stream, expected, () -> {
-            RecordingSink r = new RecordingSink();
-            return new FrameChecks.Feeding(new SunSpotStreamDecoder(r)::accept, () -> r.events);
-        });
-    }
-
-    @Test
-    void decodesMoreFramesInOneCallThanTheBufferHolds() throws Exception {
-        int count = 2000;
-        byte[][] frames = new byte[count][];
-        for (int i = 0; i < count; i++) {
-            frames[i] = SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(i),
-                    SunSpotPayloads.encode(new LightStatus(i % 101))));
-        }
-        feed(concat(frames));
-        assertEquals(count, sink.frames);
-        assertEquals(frameOf(frames[count - 1]), sink.events.get(count - 1));
-        assertEquals(0, sink.skipped);
-    }
-
-    @Test
-    void bufferStaysBoundedUnderEndlessGarbageAndEveryByteIsAccountedFor() throws Exception {
-        long fed = FrameChecks.assertEndlessGarbageStaysBounded(new FrameChecks.Counted(decoder::accept,
-                decoder::buffered, () -> sink.frames, () -> sink.skipped, () -> sink.events.size()),
-                SunSpotCodec.MAX_FRAME, SunSpotStreamDecoder.BUFFER_SIZE);
-
-        byte[] padding = new byte[SunSpotCodec.MAX_FRAME];
-        feed(concat(MOVEMENT_1234, padding, LIGHT_9ABC));
-        assertTrue(sink.frames >= 1 && sink.frames <= 2, "frames after garbage: " + sink.frames);
-        assertEquals(frameOf(LIGHT_9ABC), sink.events.get(sink.events.size() - 1));
-        assertNull(sink.badRun);
-    }
-
-    @Test
-    void longRunsAreReportedInChunksOfTheBufferSize() throws Exception {
-        feed(new byte[10_000]); // zeros: S = L = 0, sensor type 0 is unknown
-        assertEquals(List.of("UNKNOWN_PAYLOAD 4096", "UNKNOWN_PAYLOAD 4096"), sink.events);
-        assertEquals(SunSpotCodec.HEADER_LENGTH - 1, decoder.buffered());
-        feed(MOVEMENT_1234);
-        assertEquals(List.of("UNKNOWN_PAYLOAD 4096", "UNKNOWN_PAYLOAD 4096", "UNKNOWN_PAYLOAD 1808",
-                frameOf(MOVEMENT_1234)), sink.events);
-    }
-
-    @Test
-    void resetReportsAnIncompleteFrameAndStartsAfresh() throws Exception {
-        feed(Arrays.copyOf(MOVEMENT_V2_1234, 14));
-        assertEquals(14, decoder.buffered());
-        decoder.reset();
-        assertEquals(List.of("TRUNCATED 14"), sink.events);
-        assertEquals(0, decoder.buffered());
-        feed(MOVEMENT_1234);
-        assertEquals(List.of("TRUNCATED 14", frameOf(MOVEMENT_1234)), sink.events);
     }
 
     @Test
@@ -149,12 +110,6 @@ class SunSpotStreamDecoderTest {
         assertEquals(List.of("LENGTH_MISMATCH 17"), sink.events);
         decoder.reset();
         assertEquals(1, sink.events.size(), "nothing left to report");
-    }
-
-    @Test
-    void rejectsRangesOutsideTheInput() {
-        assertThrows(IndexOutOfBoundsException.class, () -> decoder.accept(new byte[4], 2, 3));
-        assertThrows(NullPointerException.class, () -> new SunSpotStreamDecoder(null));
     }
 
     @Test

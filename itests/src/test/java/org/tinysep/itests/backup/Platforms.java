@@ -1,0 +1,68 @@
+package org.tinysep.itests.backup;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+import java.util.stream.Stream;
+import org.tinysep.testsupport.process.PlatformProcess;
+
+/**
+ * The real distribution ({@code runtime/org.tinysep.launcher/target/tinysep}, system property {@code tinysep.dist})
+ * for the backup tests: copied to a test folder and started as its own process ({@link PlatformProcess}) with the
+ * platform's log at INFO.
+ */
+final class Platforms {
+
+    private static final List<String> INFO_LOG = List.of("-Dorg.slf4j.simpleLogger.defaultLogLevel=info");
+
+    private Platforms() {
+    }
+
+    /** @return the distribution folder to copy */
+    static Path distribution() {
+        Path dist = Path.of(System.getProperty("tinysep.dist", "../runtime/org.tinysep.launcher/target/tinysep"));
+        if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
+            throw new IllegalStateException("no distribution at " + dist.toAbsolutePath() + " (build the launcher)");
+        }
+        return dist;
+    }
+
+    /** Copies the distribution (without var/) to {@code home}. */
+    static void install(Path home) throws IOException {
+        Path from = distribution();
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : files.filter(p -> !from.relativize(p).startsWith("var")).toList()) {
+                Path target = home.resolve(from.relativize(f).toString());
+                if (Files.isDirectory(f)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
+                }
+            }
+        }
+    }
+
+    /** @return a UDP port free right now on 127.0.0.1 */
+    static int freeUdpPort() {
+        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** Starts the platform in {@code home} (its log there too) and waits until its shell answers. */
+    static PlatformProcess start(Path home) throws IOException {
+        return start(home, home);
+    }
+
+    /** Starts {@code home}'s tinysep.jar with {@code launcherArgs}, its log in {@code logDir}; waits for the shell. */
+    static PlatformProcess start(Path home, Path logDir, String... launcherArgs) throws IOException {
+        return PlatformProcess.start(home, logDir, INFO_LOG, launcherArgs);
+    }
+}
