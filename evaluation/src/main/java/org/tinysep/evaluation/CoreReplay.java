@@ -31,11 +31,15 @@ final class CoreReplay {
 
     static final Duration LEAVE = Duration.ofSeconds(600);
     static final Duration GRACE = Duration.ofSeconds(10);
+    /** {@code -Dseated=false}: a seat mat turning ON is not told apart (session 20's detector), for comparison. */
+    static final boolean SEATED = !"false".equals(System.getProperty("seated"));
 
     /** An activity as the detector sees it. */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
         Sighting sighting() {
-            return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room, false);
+            boolean on = what.endsWith(" on");
+            return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
+                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED);
         }
     }
 

@@ -3,14 +3,12 @@ package org.tinysep.evaluation;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
-import java.time.LocalDate;
 import java.time.LocalDateTime;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
-import org.tinysep.simulator.replay.SensorEvent;
 
 /**
  * Analysis and sweeps on the detector core ({@link CoreReplay}), in seconds instead of the platform's minutes:
@@ -45,8 +43,8 @@ public final class CoreSweep {
 
     static void report(Home home, boolean learned, int k, int n) {
         CoreReplay core = new CoreReplay(home, learned);
-        List<List<Fold>> folds = new ArrayList<>();
-        folds.add(k == 0 ? List.of(Fold.half(home)) : Fold.cv(home, k));
+        List<List<CoreFold>> folds = new ArrayList<>();
+        folds.add(k == 0 ? List.of(CoreFold.half(home)) : CoreFold.cv(home, k));
         int fa = 0;
         int faNight = 0;
         double days = 0;
@@ -57,7 +55,7 @@ public final class CoreSweep {
         List<Long> dayDelays = new ArrayList<>();
         List<Long> nightDelays = new ArrayList<>();
         List<CoreReplay.Act> everything = core.acts(home.events());
-        for (Fold f : folds.get(0)) {
+        for (CoreFold f : folds.get(0)) {
             List<CoreReplay.Act> hist = core.acts(f.history());
             List<CoreReplay.Act> test = core.acts(f.test());
             if (f.cv()) { // each test day ends with the recording's next activity (the next day's first)
@@ -145,63 +143,5 @@ public final class CoreSweep {
         List<Long> s = new ArrayList<>(v);
         s.sort(null);
         return s.get(s.size() / 2);
-    }
-
-    /** History and test events of one split. */
-    record Fold(List<SensorEvent> history, List<SensorEvent> test, List<LocalDate> testDays, boolean cv,
-            LocalDateTime from, LocalDateTime to, double share, LocalDateTime end) {
-        double days() {
-            if (!cv) {
-                return Duration.between(from, to).toSeconds() / 86400.0;
-            }
-            double d = 0;
-            for (LocalDate day : testDays) {
-                LocalDateTime a = day.atStartOfDay().isBefore(from) ? from : day.atStartOfDay();
-                LocalDateTime b = day.plusDays(1).atStartOfDay().isAfter(to) ? to : day.plusDays(1).atStartOfDay();
-                d += Math.max(0, Duration.between(a, b).toSeconds()) / 86400.0;
-            }
-            return d;
-        }
-
-        boolean judged(Instant t) {
-            LocalDateTime l = LocalDateTime.ofInstant(t, ZoneOffset.UTC);
-            return cv ? testDays.contains(l.toLocalDate()) && !l.isAfter(end) : !l.isBefore(from) && !l.isAfter(to);
-        }
-
-        List<org.tinysep.simulator.replay.Interval> candidates(Home h) {
-            List<org.tinysep.simulator.replay.Interval> out = new ArrayList<>();
-            if (!cv) {
-                return Collapses.candidates(h.labels(), from, to);
-            }
-            for (LocalDate d : testDays) {
-                LocalDateTime e = d.plusDays(1).atStartOfDay();
-                out.addAll(Collapses.candidates(h.labels(), d.atStartOfDay(), e.isAfter(end) ? end : e));
-            }
-            return out;
-        }
-
-        static Fold half(Home h) {
-            LocalDateTime s = h.split();
-            return new Fold(h.events().stream().filter(e -> e.time().isBefore(s)).toList(),
-                    h.events().stream().filter(e -> !e.time().isBefore(s)).toList(), List.of(), false, s, h.end(), 1, h.end());
-        }
-
-        /** Day i of the recording is tested in fold i mod k and learned from in every other fold. */
-        static List<Fold> cv(Home h, int k) {
-            LocalDate first = h.events().get(0).time().toLocalDate();
-            LocalDate last = h.end().toLocalDate();
-            int all = (int) (last.toEpochDay() - first.toEpochDay()) + 1;
-            List<Fold> folds = new ArrayList<>();
-            for (int f = 0; f < k; f++) {
-                List<LocalDate> days = new ArrayList<>();
-                for (int i = f; i < all; i += k) {
-                    days.add(first.plusDays(i));
-                }
-                folds.add(new Fold(h.events().stream().filter(e -> !days.contains(e.time().toLocalDate())).toList(),
-                        h.events().stream().filter(e -> days.contains(e.time().toLocalDate())).toList(), days, true,
-                        h.events().get(0).time(), h.end(), (double) days.size() / all, h.end()));
-            }
-            return folds;
-        }
     }
 }

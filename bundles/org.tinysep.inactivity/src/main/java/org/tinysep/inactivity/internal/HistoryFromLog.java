@@ -31,8 +31,8 @@ final class HistoryFromLog {
             "door closed", "window opened", "window closed", "bed on", "bed off", "seat on", "seat off",
             "flush on", "flush off", "appliance on", "appliance off", "other on", "other off");
 
-    /** A waiting activity entry: when and which device. */
-    record Raw(Instant at, String device, boolean inBed) {
+    /** A waiting activity entry: when, which device, and whether it was a bed ("bed on") or seat mat turning ON. */
+    record Raw(Instant at, String device, boolean inBed, boolean seated) {
     }
 
     private final HistoryLearner learner;
@@ -61,7 +61,7 @@ final class HistoryFromLog {
             for (EventEntry e : h.entries()) {
                 String m = e.message();
                 if (ACTIVITY.contains(m) || m.startsWith("movement detected at ")) {
-                    pending.add(new Raw(e.time(), e.origin(), m.equals("bed on")));
+                    pending.add(new Raw(e.time(), e.origin(), m.equals("bed on"), m.equals("seat on")));
                     activities++;
                 } else if (m.startsWith("flat unoccupied (") || m.startsWith("flat occupied (")) {
                     learner.occupancy(m.startsWith("flat unoccupied"), e.time());

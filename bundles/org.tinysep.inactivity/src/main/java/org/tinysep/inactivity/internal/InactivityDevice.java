@@ -120,7 +120,7 @@ final class InactivityDevice extends AbstractDevice
                 return Optional.empty();
             }
             ActivityFactory.Placed p = activities.placed(raw.device());
-            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), raw.inBed()));
+            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), raw.inBed(), raw.seated()));
         });
         if (n > 0) {
             event("learning: " + n + " logged activities of connected sensors added to the history");

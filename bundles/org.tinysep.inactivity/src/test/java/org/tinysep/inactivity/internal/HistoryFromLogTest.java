@@ -59,4 +59,23 @@ class HistoryFromLogTest {
                 "Living room", false))));
         assertEquals(10, learner.size());
     }
+
+    /** A seat mat turning ON in the log is a sitting-down sighting (its own quiet periods), as it is live. */
+    @Test
+    void seatOnEntriesAreSittingDown() {
+        Instant t = Instant.parse("2026-12-07T08:00:00Z");
+        List<EventEntry> entries = List.of(new EventEntry(0, t, EventKind.DEVICE_EVENT, "Sofa", "seat on"),
+                new EventEntry(1, t.plusSeconds(600), EventKind.DEVICE_EVENT, "Sofa", "seat off"),
+                new EventEntry(2, t.plusSeconds(700), EventKind.DEVICE_EVENT, "Bed", "bed on"));
+        HistoryFromLog fromLog = new HistoryFromLog(new HistoryLearner(ZoneOffset.UTC,
+                new SleepRule(21, 7, ZoneOffset.UTC), LearningSettings.defaults()));
+        fromLog.load(new Log(entries), t, 28);
+        List<HistoryFromLog.Raw> raw = new ArrayList<>();
+        fromLog.resolve(r -> {
+            raw.add(r);
+            return Optional.empty();
+        });
+        assertEquals(List.of(true, false, false), raw.stream().map(HistoryFromLog.Raw::seated).toList());
+        assertEquals(List.of(false, false, true), raw.stream().map(HistoryFromLog.Raw::inBed).toList());
+    }
 }

@@ -32,9 +32,10 @@ public final class LearnedLimits {
         history.add(s);
         boolean asleep = history.sleep().asleep(s);
         LearningSettings set = history.settings();
-        return history.profile(now).learned(s.room(), s.roomName(), asleep, s.at())
+        boolean seated = s.seated() && !asleep;
+        return history.profile(now).learned(s.room(), s.roomName(), asleep, seated, s.at())
                 .map(l -> new Limit(l.limit(), asleep, l.explain(set)))
-                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, now)
+                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, seated, now)
                         .map(l -> blend(s, l, fixed, asleep, set))
                         .orElseGet(() -> coldStart(s, fixed, asleep, set)));
     }

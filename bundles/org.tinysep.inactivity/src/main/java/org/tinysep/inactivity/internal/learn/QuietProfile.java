@@ -25,7 +25,7 @@ public final class QuietProfile {
 
     private enum DayType { WEEKDAY, WEEKEND }
 
-    private record Key(String room, boolean asleep, int hour, DayType day) {
+    private record Key(String room, boolean asleep, boolean seated, int hour, DayType day) {
     }
 
     private final Map<String, List<Gap>> byRoom = new HashMap<>();
@@ -43,19 +43,25 @@ public final class QuietProfile {
 
     /** @return the learned limit for a quiet period beginning at {@code at} in {@code room}, if history suffices */
     public Optional<Learned> learned(String room, String roomName, boolean asleep, Instant at) {
+        return learned(room, roomName, asleep, false, at);
+    }
+
+    /** As {@link #learned(String, String, boolean, Instant)}, for a quiet period that a seat mat turning ON began. */
+    public Optional<Learned> learned(String room, String roomName, boolean asleep, boolean seated, Instant at) {
         ZonedDateTime t = at.atZone(zone);
-        Key key = new Key(room, asleep, t.getHour(), dayType(t.getDayOfWeek()));
+        Key key = new Key(room, asleep, seated && !asleep, t.getHour(), dayType(t.getDayOfWeek()));
         return cache.computeIfAbsent(key, k -> compute(k, roomName));
     }
 
     private Optional<Learned> compute(Key k, String roomName) {
-        List<Gap> all = byRoom.getOrDefault(k.room(), List.of()).stream().filter(g -> g.asleep() == k.asleep())
-                .toList();
+        List<Gap> all = byRoom.getOrDefault(k.room(), List.of()).stream().filter(g -> g.asleep() == k.asleep()
+                && seated(g) == k.seated()).toList();
         List<Gap> around = all.stream().filter(g -> near(g, k.hour())).toList();
         int from = Math.floorMod(k.hour() - settings.halfWindow(), 24);
         int to = Math.floorMod(k.hour() + settings.halfWindow() + 1, 24);
-        String hours = settings.halfWindow() >= 12 ? "at any time of day"
-                : String.format("between %02d:00 and %02d:00", from, to);
+        String sit = k.seated() ? " after sitting down (a seat mat turned on)" : "";
+        String hours = (settings.halfWindow() >= 12 ? "at any time of day"
+                : String.format("between %02d:00 and %02d:00", from, to)) + sit;
         List<Gap> sameDay = around.stream().filter(g -> dayOf(g) == k.day()).toList();
         List<Gap> otherDay = around.stream().filter(g -> dayOf(g) != k.day()).toList();
         if (days(sameDay).size() >= settings.minDays() && days(otherDay).size() >= settings.minDays()) {
@@ -66,7 +72,7 @@ public final class QuietProfile {
             return Optional.of(learn(around, roomName, k.asleep(), hours));
         }
         if (days(all).size() >= settings.minDays()) {
-            return Optional.of(learn(all, roomName, k.asleep(), "at any time of day"));
+            return Optional.of(learn(all, roomName, k.asleep(), "at any time of day" + sit));
         }
         return Optional.empty();
     }
@@ -81,11 +87,18 @@ public final class QuietProfile {
      *         least one but fewer than {@code minDays} days before today; else empty
      */
     public Optional<Learned> partial(String room, String roomName, boolean asleep, Instant now) {
+        return partial(room, roomName, asleep, false, now);
+    }
+
+    /** As {@link #partial(String, String, boolean, Instant)}, for a quiet period that a seat mat began. */
+    public Optional<Learned> partial(String room, String roomName, boolean asleep, boolean seated, Instant now) {
         LocalDate today = now.atZone(zone).toLocalDate();
+        boolean sit = seated && !asleep;
         List<Gap> all = byRoom.getOrDefault(room, List.of()).stream().filter(g -> g.asleep() == asleep
-                && g.start().at().atZone(zone).toLocalDate().isBefore(today)).toList();
+                && seated(g) == sit && g.start().at().atZone(zone).toLocalDate().isBefore(today)).toList();
         int n = days(all).size();
-        return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"))
+        return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"
+                + (sit ? " after sitting down (a seat mat turned on)" : "")))
                 : Optional.empty();
     }
 
@@ -103,6 +116,10 @@ public final class QuietProfile {
             m.merge(g.start().at().atZone(zone).toLocalDate(), g.length(), (a, b) -> a.compareTo(b) >= 0 ? a : b);
         }
         return m;
+    }
+
+    private static boolean seated(Gap g) {
+        return g.start().seated() && !g.asleep();
     }
 
     private boolean near(Gap g, int hour) {

@@ -12,8 +12,15 @@ import java.util.Objects;
  * @param roomName the room's name for people, e.g. "Bathroom"
  * @param roomType the room's type, e.g. "Bedroom" (empty when unknown)
  * @param inBed    true when a bed mat reported the person in bed
+ * @param seated   true when a seat mat turned ON with this activity: the person is there and resting (sitting),
+ *                 a quiet period that is normal for a resting person, not for one moving about
  */
-public record Sighting(Instant at, String room, String roomName, String roomType, boolean inBed) {
+public record Sighting(Instant at, String room, String roomName, String roomType, boolean inBed, boolean seated) {
+
+    /** A sighting that is no seat mat turning ON. */
+    public Sighting(Instant at, String room, String roomName, String roomType, boolean inBed) {
+        this(at, room, roomName, roomType, inBed, false);
+    }
 
     public Sighting {
         Objects.requireNonNull(at, "at");
