@@ -40,8 +40,8 @@ public final class HistoryLearner {
     public synchronized void add(Sighting s) {
         if (!sightings.isEmpty()) {
             Sighting last = sightings.get(sightings.size() - 1);
-            if (last.room().equals(s.room()) && last.inBed() == s.inBed() && last.seated() == s.seated() && !s.at().isBefore(last.at())
-                    && Duration.between(last.at(), s.at()).compareTo(MERGE) < 0) {
+            if (last.room().equals(s.room()) && last.inBed() == s.inBed() && last.seated() == s.seated()
+                    && !s.at().isBefore(last.at()) && Duration.between(last.at(), s.at()).compareTo(MERGE) < 0) {
                 sightings.set(sightings.size() - 1, s);
                 return;
             }
