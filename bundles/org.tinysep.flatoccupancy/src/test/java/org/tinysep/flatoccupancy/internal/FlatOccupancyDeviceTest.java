@@ -60,7 +60,7 @@ class FlatOccupancyDeviceTest {
         flat.movementReported(movement(), new MovementEvent(true, T0));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
 
-        flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5)); // the node powers up: closed
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.plusSeconds(5)); // the node powers up: closed
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "a first report is no evidence of leaving");
 
@@ -72,7 +72,7 @@ class FlatOccupancyDeviceTest {
 
     @Test
     void aFirstOpenReportCountsAsAnArrival() {
-        flat.doorChanged(door("front"), OpenState.OPEN, T0);
+        flat.doorChanged(door("front"), OpenState.OPEN, true, T0);
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
     }
 

@@ -38,7 +38,7 @@ class IndoorEvidenceTest {
 
     /** Someone came home (door opened) and the door closed behind them at T0 + 5 s. */
     private void arrived() {
-        flat.doorChanged(front, OpenState.CLOSED, T0.minusSeconds(60)); // first report: resting state
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.minusSeconds(60)); // first report: resting state
         flat.doorChanged(front, OpenState.OPEN, T0);
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
@@ -47,9 +47,8 @@ class IndoorEvidenceTest {
     @Test
     void aWindowOrContactChangeCancelsTheLeaveCheck() {
         WindowProvider fridge = window("fridge");
-        flat.watchStateForTest(fridge, OpenState.CLOSED);
         arrived();
-        flat.windowChanged(fridge, OpenState.OPEN, T0.plusSeconds(120));
+        flat.windowChanged(fridge, OpenState.OPEN, false, T0.plusSeconds(120));
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "the fridge opened after the door closed");
     }
@@ -58,7 +57,7 @@ class IndoorEvidenceTest {
     void aWindowsFirstReportIsNoActivity() {
         WindowProvider fridge = window("fridge");
         arrived();
-        flat.windowChanged(fridge, OpenState.CLOSED, T0.plusSeconds(120)); // its first report
+        flat.windowChanged(fridge, OpenState.CLOSED, true, T0.plusSeconds(120)); // its first report
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.UNOCCUPIED, flat.occupancy());
     }
@@ -66,9 +65,9 @@ class IndoorEvidenceTest {
     @Test
     void anInnerDoorChangeCancelsTheLeaveCheck() {
         DoorProvider bath = door("bathroom door", DoorKind.INNER);
-        flat.doorChanged(bath, OpenState.CLOSED, T0.minusSeconds(100));
+        flat.doorChanged(bath, OpenState.CLOSED, true, T0.minusSeconds(100)); // its first report
         arrived();
-        flat.doorChanged(bath, OpenState.OPEN, T0.plusSeconds(300));
+        flat.doorChanged(bath, OpenState.OPEN, false, T0.plusSeconds(300));
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
     }
@@ -76,7 +75,7 @@ class IndoorEvidenceTest {
     @Test
     void aSeatMatThatIsOnKeepsTheFlatOccupiedWhenAVisitorLeaves() {
         PresenceProvider seat = presence("seat", PresenceKind.SEAT);
-        flat.doorChanged(front, OpenState.CLOSED, T0.minusSeconds(3600));
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.minusSeconds(3600));
         flat.presenceChanged(seat, true, false, T0.minusSeconds(1800)); // the resident sits down
         flat.doorChanged(front, OpenState.OPEN, T0); // the visitor leaves
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5));

@@ -87,10 +87,14 @@ final class Fakes {
             super(uid);
         }
 
-        /** Like a door device: the state changes, then the listeners hear it (the first report too). */
+        /** Like a door device: a change (or the first report, {@code first}) is heard, a repeat is not. */
         void change(OpenState s, Instant at) {
+            if (s == state) {
+                return;
+            }
+            boolean first = state == OpenState.UNKNOWN;
             state = s;
-            List.copyOf(listeners).forEach(l -> l.doorChanged(this, s, at));
+            List.copyOf(listeners).forEach(l -> l.doorChanged(this, s, first, at));
         }
 
         @Override

@@ -13,41 +13,26 @@ import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.sensor.AmicaSensorDevice;
+import org.tinysep.device.support.sensor.ContactSensorDevice;
+import org.tinysep.device.support.sensor.Source;
 
 /**
  * Abstracts one AmICA reed switch on a door: Reed-Switch Status payloads (100 3 0 A) become door states.
  * Listeners and the event log hear changes only (the node repeats its state every second); the first report
- * establishes the state ({@code first}), it is not a change.
+ * establishes the state ({@code first}), it is not a change. The user sets whether the door is OUTER or INNER.
  */
-final class AmicaDoorDevice extends AmicaSensorDevice<DoorListener, ReedSwitchStatus, OpenState>
-        implements DoorProvider {
+final class AmicaDoorDevice extends ContactSensorDevice<DoorListener> implements DoorProvider {
 
     private volatile DoorKind kind = DoorKind.OUTER;
 
     AmicaDoorDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, bus, NodeType.DOOR, "Door " + bus.nodeId(), AmicaPayloads::decode, ReedSwitchStatus.class,
-                DoorProvider.class);
-    }
-
-    @Override
-    protected OpenState read(ReedSwitchStatus reed, Instant at) {
-        return reed.open() ? OpenState.OPEN : OpenState.CLOSED;
-    }
-
-    @Override
-    protected String describe(OpenState state) {
-        return state == OpenState.OPEN ? "door opened" : "door closed";
+        super(context, Source.amica(bus, AmicaPayloads::decode, ReedSwitchStatus.class, (r, at) -> open(r.open())),
+                NodeType.DOOR, "Door " + bus.nodeId(), "door", DoorProvider.class);
     }
 
     @Override
     protected void tell(DoorListener listener, OpenState state, boolean first, Instant at) {
         listener.doorChanged(this, state, first, at);
-    }
-
-    @Override
-    public OpenState state() {
-        return latestOr(OpenState.UNKNOWN);
     }
 
     @Override
@@ -58,11 +43,6 @@ final class AmicaDoorDevice extends AmicaSensorDevice<DoorListener, ReedSwitchSt
     @Override
     protected List<Parameter> settings() {
         return List.of(Parameter.writable("kind", kind, "OUTER (to the outside; watched by Flat Occupancy) or INNER"));
-    }
-
-    @Override
-    protected Object shownState() {
-        return state();
     }
 
     @Override

@@ -13,7 +13,8 @@ import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.sensor.AmicaSensorDevice;
+import org.tinysep.device.support.sensor.ContactSensorDevice;
+import org.tinysep.device.support.sensor.Source;
 
 /**
  * Abstracts one AmICA reed switch on a window: Reed-Switch Status payloads (100 3 0 A) become window states.
@@ -21,34 +22,18 @@ import org.tinysep.device.support.sensor.AmicaSensorDevice;
  * establishes the state ({@code first}), it is not a change. The user may give the window's position, which
  * listeners hear as {@code windowPositionChanged}.
  */
-final class AmicaWindowDevice extends AmicaSensorDevice<WindowListener, ReedSwitchStatus, OpenState>
-        implements WindowProvider {
+final class AmicaWindowDevice extends ContactSensorDevice<WindowListener> implements WindowProvider {
 
     private volatile Optional<Coordinates> position = Optional.empty();
 
     AmicaWindowDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, bus, NodeType.WINDOW, "Window " + bus.nodeId(), AmicaPayloads::decode,
-                ReedSwitchStatus.class, WindowProvider.class);
-    }
-
-    @Override
-    protected OpenState read(ReedSwitchStatus reed, Instant at) {
-        return reed.open() ? OpenState.OPEN : OpenState.CLOSED;
-    }
-
-    @Override
-    protected String describe(OpenState state) {
-        return state == OpenState.OPEN ? "window opened" : "window closed";
+        super(context, Source.amica(bus, AmicaPayloads::decode, ReedSwitchStatus.class, (r, at) -> open(r.open())),
+                NodeType.WINDOW, "Window " + bus.nodeId(), "window", WindowProvider.class);
     }
 
     @Override
     protected void tell(WindowListener listener, OpenState state, boolean first, Instant at) {
         listener.windowChanged(this, state, first, at);
-    }
-
-    @Override
-    public OpenState state() {
-        return latestOr(OpenState.UNKNOWN);
     }
 
     @Override
@@ -60,11 +45,6 @@ final class AmicaWindowDevice extends AmicaSensorDevice<WindowListener, ReedSwit
     protected List<Parameter> settings() {
         return List.of(Parameter.writable("position", Positions.format(position),
                 "x,y,z in metres in the house's frame, empty when unknown"));
-    }
-
-    @Override
-    protected Object shownState() {
-        return state();
     }
 
     @Override

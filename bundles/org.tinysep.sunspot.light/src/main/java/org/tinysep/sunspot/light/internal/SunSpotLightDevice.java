@@ -10,7 +10,8 @@ import org.tinysep.api.sensor.LightBrightnessListener;
 import org.tinysep.api.sensor.LightBrightnessProvider;
 import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.sensor.SunSpotSensorDevice;
+import org.tinysep.device.support.sensor.SensorDevice;
+import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.SunSpotPayloads;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
@@ -20,20 +21,15 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  * Sun SPOT light node has no actuator (thesis 4.4.2.10), so nothing is ever sent back. Listeners hear changes; the
  * node repeats its reading every 10 s.
  */
-final class SunSpotLightDevice extends SunSpotSensorDevice<LightBrightnessListener, LightStatus, Percent>
+final class SunSpotLightDevice extends SensorDevice<LightBrightnessListener, Percent>
         implements LightBrightnessProvider {
 
-    private static final Frames<LightStatus> FRAMES = new Frames<>(SunSpotSensorType.LIGHT.code(), "light",
-            SunSpotPayloads::decode, LightStatus.class);
+    private static final Source.Frames FRAMES = new Source.Frames(SunSpotSensorType.LIGHT.code(), "light");
 
     SunSpotLightDevice(DriverContext context, BusRadioSunSpotProvider bus) {
-        super(context, bus, NodeType.LIGHT_SENSOR, "Light sensor " + bus.nodeAddress(), FRAMES,
-                LightBrightnessProvider.class);
-    }
-
-    @Override
-    protected Percent read(LightStatus light, Instant at) {
-        return Percent.of(light.percent());
+        super(context, Source.sunSpot(bus, FRAMES, SunSpotPayloads::decode, LightStatus.class,
+                (light, at) -> Percent.of(light.percent())), NodeType.LIGHT_SENSOR,
+                "Light sensor " + bus.nodeAddress(), LightBrightnessProvider.class);
     }
 
     @Override

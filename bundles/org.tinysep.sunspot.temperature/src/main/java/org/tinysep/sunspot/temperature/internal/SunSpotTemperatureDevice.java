@@ -9,7 +9,8 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.TemperatureListener;
 import org.tinysep.api.sensor.TemperatureProvider;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.sensor.SunSpotSensorDevice;
+import org.tinysep.device.support.sensor.SensorDevice;
+import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.SunSpotPayloads;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
@@ -19,25 +20,20 @@ import org.tinysep.sunspot.protocol.TemperatureStatus;
  * {@link #celsius()} is always the latest reading; listeners hear a reading only when it differs from the last one
  * they heard by at least the dead band (parameter {@code deadbandCelsius}), so sensor noise does not reach them.
  */
-final class SunSpotTemperatureDevice extends SunSpotSensorDevice<TemperatureListener, TemperatureStatus, Double>
-        implements TemperatureProvider {
+final class SunSpotTemperatureDevice extends SensorDevice<TemperatureListener, Double> implements TemperatureProvider {
 
     static final double DEFAULT_DEADBAND = 0.1;
     /** Absorbs binary rounding, so that 21.6 → 21.7 counts as a step of 0.1. */
     private static final double EPSILON = 1e-9;
-    private static final Frames<TemperatureStatus> FRAMES = new Frames<>(SunSpotSensorType.TEMPERATURE.code(),
-            "temperature", SunSpotPayloads::decode, TemperatureStatus.class);
+    private static final Source.Frames FRAMES =
+            new Source.Frames(SunSpotSensorType.TEMPERATURE.code(), "temperature");
 
     private volatile double deadband = DEFAULT_DEADBAND;
 
     SunSpotTemperatureDevice(DriverContext context, BusRadioSunSpotProvider bus) {
-        super(context, bus, NodeType.TEMPERATURE, "Temperature sensor " + bus.nodeAddress(), FRAMES,
+        super(context, Source.sunSpot(bus, FRAMES, SunSpotPayloads::decode, TemperatureStatus.class,
+                (t, at) -> t.celsius()), NodeType.TEMPERATURE, "Temperature sensor " + bus.nodeAddress(),
                 TemperatureProvider.class);
-    }
-
-    @Override
-    protected Double read(TemperatureStatus t, Instant at) {
-        return t.celsius();
     }
 
     /** A change is a step of at least the dead band from the last reading the listeners heard. */
