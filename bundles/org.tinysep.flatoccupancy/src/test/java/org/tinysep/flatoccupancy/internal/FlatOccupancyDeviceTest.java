@@ -1,19 +1,14 @@
 package org.tinysep.flatoccupancy.internal;
 
+import static org.tinysep.flatoccupancy.internal.Sensors.door;
+import static org.tinysep.flatoccupancy.internal.Sensors.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.time.Duration;
 import java.time.Instant;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
-import org.tinysep.api.device.Connection;
-import org.tinysep.api.sensor.DoorKind;
-import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.api.sensor.MovementListener;
-import org.tinysep.api.sensor.MovementLocation;
-import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.device.support.DriverContext;
@@ -29,30 +24,6 @@ class FlatOccupancyDeviceTest {
     private final FlatOccupancyDevice flat = new FlatOccupancyDevice(
             new DriverContext(null, "d", "FlatOccupancy", logs.reporter(), new PlatformClock(() -> T0)),
             Duration.ofMinutes(10), Duration.ofSeconds(10));
-
-    private static DoorProvider door(String uid) {
-        return new DoorProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(DoorListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.UNKNOWN;
-            }
-
-            @Override
-            public DoorKind kind() {
-                return DoorKind.OUTER;
-            }
-        };
-    }
 
     @Test
     void aFirstClosedReportStartsNoLeaveCheckButARealClosingDoes() {
@@ -74,29 +45,5 @@ class FlatOccupancyDeviceTest {
     void aFirstOpenReportCountsAsAnArrival() {
         flat.doorChanged(door("front"), OpenState.OPEN, true, T0);
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
-    }
-
-    private static MovementProvider movement() {
-        return new MovementProvider() {
-            @Override
-            public String deviceUid() {
-                return "hall-movement";
-            }
-
-            @Override
-            public Connection connect(MovementListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public Optional<MovementEvent> lastMovement() {
-                return Optional.empty();
-            }
-
-            @Override
-            public MovementLocation location() {
-                return MovementLocation.INSIDE;
-            }
-        };
     }
 }

@@ -1,21 +1,18 @@
 package org.tinysep.flatoccupancy.internal;
 
+import static org.tinysep.flatoccupancy.internal.Sensors.door;
+import static org.tinysep.flatoccupancy.internal.Sensors.presence;
+import static org.tinysep.flatoccupancy.internal.Sensors.window;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.time.Duration;
 import java.time.Instant;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
-import org.tinysep.api.device.Connection;
-import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.DoorKind;
-import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
-import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.device.support.DriverContext;
@@ -72,6 +69,19 @@ class IndoorEvidenceTest {
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
     }
 
+    /**
+     * Issue 16: the door device says which report is its first, so a change is a change even when this device
+     * (re)started after the door did and never heard the door's first report (it used to be taken for one).
+     */
+    @Test
+    void anInnerDoorsChangeCountsEvenIfThisDeviceMissedItsFirstReport() {
+        DoorProvider bath = door("bathroom door", DoorKind.INNER);
+        arrived();
+        flat.doorChanged(bath, OpenState.OPEN, false, T0.plusSeconds(300));
+        flat.tick(T0.plusSeconds(5 + 600));
+        assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "the bathroom door opened after the front door closed");
+    }
+
     @Test
     void aSeatMatThatIsOnKeepsTheFlatOccupiedWhenAVisitorLeaves() {
         PresenceProvider seat = presence("seat", PresenceKind.SEAT);
@@ -102,77 +112,5 @@ class IndoorEvidenceTest {
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(1005));
         flat.tick(T0.plusSeconds(1005 + 600));
         assertEquals(Occupancy.UNOCCUPIED, flat.occupancy(), "a flush that is ON holds nobody");
-    }
-
-    private static DoorProvider door(String uid, DoorKind kind) {
-        return new DoorProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(DoorListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.UNKNOWN;
-            }
-
-            @Override
-            public DoorKind kind() {
-                return kind;
-            }
-        };
-    }
-
-    private static WindowProvider window(String uid) {
-        return new WindowProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(WindowListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.CLOSED;
-            }
-
-            @Override
-            public Optional<Coordinates> position() {
-                return Optional.empty();
-            }
-        };
-    }
-
-    private static PresenceProvider presence(String uid, PresenceKind kind) {
-        return new PresenceProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(PresenceListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public PresenceKind kind() {
-                return kind;
-            }
-
-            @Override
-            public boolean present() {
-                return false;
-            }
-        };
     }
 }

@@ -85,10 +85,9 @@ public abstract class SensorDevice<L, V> extends AbstractDevice
         source.attach(this);
     }
 
+    @SuppressWarnings("unchecked")
     final <X> void connectBus(Provider<X> bus, Class<?> busInterface) {
-        @SuppressWarnings("unchecked")
-        X me = (X) this;
-        connect(bus, busInterface, me, true);
+        connect(bus, busInterface, (X) this, true); // the bus provider's listener: this device (both interfaces)
     }
 
     @Override

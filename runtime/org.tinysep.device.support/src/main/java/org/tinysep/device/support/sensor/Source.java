@@ -7,6 +7,7 @@ import java.util.function.BiFunction;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.bus.BusRadioSunSpotProvider;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.device.Provider;
 
 /**
  * Where a sensor's readings come from: its bus device, the node family's decoder, the payload type it reads and
@@ -44,23 +45,36 @@ public abstract sealed class Source<V> permits Source.Amica, Source.SunSpot {
         return new SunSpot<>(bus, frames, decoder, type, read);
     }
 
+    private final Provider<?> bus;
+    private final Class<?> busInterface;
+    private final String nodeAddress;
     private final Decoder decoder;
     private final Class<?> type;
     private final BiFunction<Object, Instant, ? extends V> read;
 
     @SuppressWarnings("unchecked")
-    private <P> Source(Decoder decoder, Class<P> type, BiFunction<? super P, Instant, ? extends V> read) {
+    private <P> Source(Provider<?> bus, Class<?> busInterface, String nodeAddress, Decoder decoder, Class<P> type,
+            BiFunction<? super P, Instant, ? extends V> read) {
+        this.bus = bus;
+        this.busInterface = busInterface;
+        this.nodeAddress = nodeAddress;
         this.decoder = decoder;
         this.type = type;
         this.read = (BiFunction<Object, Instant, ? extends V>) read;
     }
 
-    abstract String busDeviceUid();
+    final String busDeviceUid() {
+        return bus.deviceUid();
+    }
 
-    abstract String nodeAddress();
+    final String nodeAddress() {
+        return nodeAddress;
+    }
 
-    /** Connects the device to its bus device. */
-    abstract void attach(SensorDevice<?, V> device);
+    /** Connects the device to its bus device (vital). */
+    final void attach(SensorDevice<?, V> device) {
+        device.connectBus(bus, busInterface);
+    }
 
     /** @return the source's own read-only parameters, shown last */
     List<Parameter> parameters() {
@@ -82,27 +96,10 @@ public abstract sealed class Source<V> permits Source.Amica, Source.SunSpot {
     }
 
     static final class Amica<V> extends Source<V> {
-        private final BusRadioAmicaProvider bus;
 
         <P> Amica(BusRadioAmicaProvider bus, Decoder decoder, Class<P> type,
                 BiFunction<? super P, Instant, ? extends V> read) {
-            super(decoder, type, read);
-            this.bus = bus;
-        }
-
-        @Override
-        String busDeviceUid() {
-            return bus.deviceUid();
-        }
-
-        @Override
-        String nodeAddress() {
-            return bus.nodeId();
-        }
-
-        @Override
-        void attach(SensorDevice<?, V> device) {
-            device.connectBus(bus, BusRadioAmicaProvider.class);
+            super(bus, BusRadioAmicaProvider.class, bus.nodeId(), decoder, type, read);
         }
 
         void received(SensorDevice<?, V> device, byte[] payload, Instant at) {
@@ -119,30 +116,13 @@ public abstract sealed class Source<V> permits Source.Amica, Source.SunSpot {
     }
 
     static final class SunSpot<V> extends Source<V> {
-        private final BusRadioSunSpotProvider bus;
         private final Frames frames;
         private final AtomicLong rejected = new AtomicLong();
 
         <P> SunSpot(BusRadioSunSpotProvider bus, Frames frames, Decoder decoder, Class<P> type,
                 BiFunction<? super P, Instant, ? extends V> read) {
-            super(decoder, type, read);
-            this.bus = bus;
+            super(bus, BusRadioSunSpotProvider.class, bus.nodeAddress(), decoder, type, read);
             this.frames = frames;
-        }
-
-        @Override
-        String busDeviceUid() {
-            return bus.deviceUid();
-        }
-
-        @Override
-        String nodeAddress() {
-            return bus.nodeAddress();
-        }
-
-        @Override
-        void attach(SensorDevice<?, V> device) {
-            device.connectBus(bus, BusRadioSunSpotProvider.class);
         }
 
         void received(SensorDevice<?, V> device, int sensorType, byte[] payload, Instant at) {
