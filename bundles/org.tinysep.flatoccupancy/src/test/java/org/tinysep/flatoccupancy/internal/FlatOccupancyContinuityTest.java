@@ -1,7 +1,7 @@
 package org.tinysep.flatoccupancy.internal;
 
-import static org.tinysep.flatoccupancy.internal.Sensors.door;
-import static org.tinysep.flatoccupancy.internal.Sensors.movement;
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,18 +1,16 @@
 package org.tinysep.flatoccupancy.internal;
 
-import static org.tinysep.flatoccupancy.internal.Sensors.door;
-import static org.tinysep.flatoccupancy.internal.Sensors.movement;
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.flat;
+import static org.tinysep.flatoccupancy.internal.Fixtures.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.time.Duration;
 import java.time.Instant;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
 
 /** Door reports through the device: a door node's first report is its resting state, not a closing. */
@@ -21,9 +19,7 @@ class FlatOccupancyDeviceTest {
     private static final Instant T0 = Instant.parse("2026-11-22T07:00:00Z");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final FlatOccupancyDevice flat = new FlatOccupancyDevice(
-            new DriverContext(null, "d", "FlatOccupancy", logs.reporter(), new PlatformClock(() -> T0)),
-            Duration.ofMinutes(10), Duration.ofSeconds(10));
+    private final FlatOccupancyDevice flat = flat(logs, T0);
 
     @Test
     void aFirstClosedReportStartsNoLeaveCheckButARealClosingDoes() {

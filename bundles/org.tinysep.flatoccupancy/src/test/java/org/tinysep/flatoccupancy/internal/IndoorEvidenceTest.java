@@ -1,11 +1,11 @@
 package org.tinysep.flatoccupancy.internal;
 
-import static org.tinysep.flatoccupancy.internal.Sensors.door;
-import static org.tinysep.flatoccupancy.internal.Sensors.presence;
-import static org.tinysep.flatoccupancy.internal.Sensors.window;
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.flat;
+import static org.tinysep.flatoccupancy.internal.Fixtures.presence;
+import static org.tinysep.flatoccupancy.internal.Fixtures.window;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.time.Duration;
 import java.time.Instant;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.sensor.DoorKind;
@@ -15,8 +15,6 @@ import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
 
 /**
@@ -28,9 +26,7 @@ class IndoorEvidenceTest {
     private static final Instant T0 = Instant.parse("2026-11-22T07:00:00Z");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final FlatOccupancyDevice flat = new FlatOccupancyDevice(
-            new DriverContext(null, "d", "FlatOccupancy", logs.reporter(), new PlatformClock(() -> T0)),
-            Duration.ofMinutes(10), Duration.ofSeconds(10));
+    private final FlatOccupancyDevice flat = flat(logs, T0);
     private final DoorProvider front = door("front", DoorKind.OUTER);
 
     /** Someone came home (door opened) and the door closed behind them at T0 + 5 s. */

@@ -1,5 +1,7 @@
 package org.tinysep.flatoccupancy.internal;
 
+import java.time.Duration;
+import java.time.Instant;
 import java.util.Optional;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.sensor.Coordinates;
@@ -16,14 +18,24 @@ import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
+import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.PlatformClock;
+import org.tinysep.device.support.RecordingLogs;
 
 /**
- * The sensors these tests hand to the device directly: only their identity and kind matter (connecting needs a
- * framework, so they refuse it; the tests call the device's listener methods themselves).
+ * What these tests build: the device (T = 10 min, G = 10 s) and the sensors they hand to it directly, of which
+ * only identity and kind matter (connecting needs a framework, so they refuse it; the tests call the device's
+ * listener methods themselves).
  */
-final class Sensors {
+final class Fixtures {
 
-    private Sensors() {
+    private Fixtures() {
+    }
+
+    /** @return a Flat Occupancy device whose platform clock stands at {@code now}, logging into {@code logs} */
+    static FlatOccupancyDevice flat(RecordingLogs logs, Instant now) {
+        return new FlatOccupancyDevice(new DriverContext(null, "d", "FlatOccupancy", logs.reporter(),
+                new PlatformClock(() -> now)), Duration.ofMinutes(10), Duration.ofSeconds(10));
     }
 
     private static Connection refused() {
