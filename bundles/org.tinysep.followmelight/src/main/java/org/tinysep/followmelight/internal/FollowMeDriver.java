@@ -47,12 +47,11 @@ public final class FollowMeDriver extends AbstractDriver {
         start(bundleContext);
         directory = new TrackedPlacements(bundleContext);
         wiring = new SingleDeviceWiring<>(this, FollowMeDevice.class,
-                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDriver::attach,
-                FollowMeDevice::forget);
-        wiring.optional(bundleContext, FlatOccupancyProvider.class);
-        wiring.optional(bundleContext, HouseInformationProvider.class);
-        wiring.optional(bundleContext, MovementProvider.class);
-        wiring.optional(bundleContext, PetMovementProvider.class);
+                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDevice::forget);
+        wiring.optional(bundleContext, FlatOccupancyProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, HouseInformationProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, MovementProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, PetMovementProvider.class, FollowMeDevice::use);
         wiring.source(bundleContext, SimpleLightProvider.class, (d, p) -> d.control(p));
         wiring.source(bundleContext, DimmableLightProvider.class, (d, p) -> d.control(p));
         ticker = new PlatformTicker(bundleContext, "follow-me-light",
@@ -65,17 +64,5 @@ public final class FollowMeDriver extends AbstractDriver {
         wiring.close();
         stop();
         directory.close();
-    }
-
-    private static void attach(FollowMeDevice d, Object p) {
-        if (p instanceof FlatOccupancyProvider f) {
-            d.use(f);
-        } else if (p instanceof HouseInformationProvider h) {
-            d.use(h);
-        } else if (p instanceof MovementProvider m) {
-            d.use(m);
-        } else if (p instanceof PetMovementProvider m) {
-            d.use(m);
-        }
     }
 }

@@ -79,11 +79,10 @@ public final class InactivityDriver extends AbstractDriver {
         start(bundleContext);
         policy = policy(config, zone);
         directory = new TrackedPlacements(bundleContext);
-        wiring = new SingleDeviceWiring<>(this, InactivityDevice.class, this::newDevice, InactivityDriver::attach,
-                InactivityDevice::forget);
-        wiring.optional(bundleContext, FlatOccupancyProvider.class);
-        wiring.optional(bundleContext, MailManagerProvider.class);
-        wiring.optional(bundleContext, HouseInformationProvider.class);
+        wiring = new SingleDeviceWiring<>(this, InactivityDevice.class, this::newDevice, InactivityDevice::forget);
+        wiring.optional(bundleContext, FlatOccupancyProvider.class, InactivityDevice::use);
+        wiring.optional(bundleContext, MailManagerProvider.class, InactivityDevice::use);
+        wiring.optional(bundleContext, HouseInformationProvider.class, InactivityDevice::use);
         wiring.source(bundleContext, MovementProvider.class, (d, p) -> d.watch(p));
         wiring.source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
         wiring.source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
@@ -154,16 +153,6 @@ public final class InactivityDriver extends AbstractDriver {
         wiring.close();
         stop();
         directory.close();
-    }
-
-    private static void attach(InactivityDevice d, Object p) {
-        if (p instanceof FlatOccupancyProvider f) {
-            d.use(f);
-        } else if (p instanceof MailManagerProvider m) {
-            d.use(m);
-        } else if (p instanceof HouseInformationProvider h) {
-            d.use(h);
-        }
     }
 
     /** @return the single device (not yet registered), its room types known to the learner */

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BiConsumer;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.osgi.framework.BundleContext;
 
@@ -22,22 +23,20 @@ public final class SingleDeviceWiring<D extends AbstractDevice> implements AutoC
     private final AbstractDriver driver;
     private final Class<D> deviceType;
     private final Supplier<D> create;
-    private final BiConsumer<D, Object> attach;
     private final BiConsumer<D, String> forget;
-    private final Map<String, Object> optional = new ConcurrentHashMap<>();
+    /** How to give each optional provider present now to a device. */
+    private final Map<String, Consumer<D>> optional = new ConcurrentHashMap<>();
     private final List<ProviderTracker<?>> trackers = new ArrayList<>();
 
     /**
      * @param create makes the (not yet registered) device
-     * @param attach gives the device an optional provider
      * @param forget tells the device that the provider of that UID went
      */
     public SingleDeviceWiring(AbstractDriver driver, Class<D> deviceType, Supplier<D> create,
-            BiConsumer<D, Object> attach, BiConsumer<D, String> forget) {
+            BiConsumer<D, String> forget) {
         this.driver = driver;
         this.deviceType = deviceType;
         this.create = create;
-        this.attach = attach;
         this.forget = forget;
     }
 
@@ -47,11 +46,12 @@ public final class SingleDeviceWiring<D extends AbstractDevice> implements AutoC
                 (p, uid) -> watch.accept(device(), p), (p, uid) -> gone(uid))).open());
     }
 
-    /** Every provider of {@code type} is given to the device whenever both are there. */
-    public <P> void optional(BundleContext bc, Class<P> type) {
+    /** Every provider of {@code type} is given to the device ({@code use}) whenever both are there. */
+    public <P> void optional(BundleContext bc, Class<P> type, BiConsumer<D, P> use) {
         trackers.add(new ProviderTracker<>(bc, type, null, ProviderTracker.Callback.of((p, uid) -> {
-            optional.put(type.getName() + '/' + uid, p);
-            current().forEach(d -> attach.accept(d, p));
+            Consumer<D> give = d -> use.accept(d, p);
+            optional.put(type.getName() + '/' + uid, give);
+            current().forEach(give);
         }, (p, uid) -> {
             optional.remove(type.getName() + '/' + uid);
             gone(uid);
@@ -75,7 +75,7 @@ public final class SingleDeviceWiring<D extends AbstractDevice> implements AutoC
             return all.get(0);
         }
         D d = driver.addDevice(create.get());
-        optional.values().forEach(p -> attach.accept(d, p));
+        optional.values().forEach(give -> give.accept(d));
         return d;
     }
 
