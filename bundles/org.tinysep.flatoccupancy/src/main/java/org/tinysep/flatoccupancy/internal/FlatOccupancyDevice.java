@@ -49,10 +49,6 @@ final class FlatOccupancyDevice extends AbstractDevice
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
-    /** The last state each door reported, so a first "closed" report is not taken for a closing. */
-    private final Map<String, OpenState> lastDoorStates = new ConcurrentHashMap<>();
-    /** The last state each window or contact reported: only a change from it is activity. */
-    private final Map<String, OpenState> lastWindowStates = new ConcurrentHashMap<>();
     private final Set<String> windows = ConcurrentHashMap.newKeySet();
 
     FlatOccupancyDevice(DriverContext context, Duration leaveTimeout, Duration exitGrace) {
@@ -77,12 +73,6 @@ final class FlatOccupancyDevice extends AbstractDevice
             return; // the driver's tracker and a new device may both offer it
         }
         connect(window, WindowProvider.class, this, false);
-        lastWindowStates.put(window.deviceUid(), window.state());
-    }
-
-    /** The window's state as if it had been connected in {@code state} (tests: connecting needs a framework). */
-    void watchStateForTest(WindowProvider window, OpenState state) {
-        lastWindowStates.put(window.deviceUid(), state);
     }
 
     /** Mats, flush and appliances: evidence, and a home with nothing else still has a Flat Occupancy. */
@@ -103,12 +93,18 @@ final class FlatOccupancyDevice extends AbstractDevice
         }
     }
 
+    /** A window's or contact's change is activity; its first report (after its device started) only its state. */
     @Override
-    public void windowChanged(WindowProvider source, OpenState state, Instant at) {
-        OpenState previous = lastWindowStates.put(source.deviceUid(), state);
-        if (state != OpenState.UNKNOWN && previous != null && previous != OpenState.UNKNOWN && previous != state) {
+    public void windowChanged(WindowProvider source, OpenState state, boolean first, Instant at) {
+        if (!first && state != OpenState.UNKNOWN) {
             activity(at, "window " + source.deviceUid() + " " + state.name().toLowerCase());
         }
+    }
+
+    /** A caller of the sensor API 1.0 call reports a change. */
+    @Override
+    public void windowChanged(WindowProvider source, OpenState state, Instant at) {
+        windowChanged(source, state, false, at);
     }
 
     @Override
@@ -157,20 +153,20 @@ final class FlatOccupancyDevice extends AbstractDevice
         }
     }
 
+    /**
+     * A door's first report (after its device started) tells its state: a first CLOSED is no evidence that anyone
+     * left; a first OPEN of the outer door counts as an opening. An inner door's change is indoor activity.
+     */
     @Override
-    public void doorChanged(DoorProvider source, OpenState state, Instant at) {
-        OpenState previous = lastDoorStates.put(source.deviceUid(), state);
-        if (state == OpenState.UNKNOWN) {
+    public void doorChanged(DoorProvider source, OpenState state, boolean first, Instant at) {
+        if (state == OpenState.UNKNOWN || (first && state == OpenState.CLOSED)) {
             return;
         }
         if (source.kind() != DoorKind.OUTER) {
-            if (previous != null && previous != OpenState.UNKNOWN && previous != state) {
+            if (!first) {
                 activity(at, "inner door " + source.deviceUid() + " " + state.name().toLowerCase());
             }
             return;
-        }
-        if (state == OpenState.CLOSED && (previous == null || previous == OpenState.UNKNOWN)) {
-            return; // a door node's first report (power-up, restart) is no evidence that anyone left
         }
         Optional<Occupancy> change;
         Optional<Instant> wentBack;
@@ -184,6 +180,12 @@ final class FlatOccupancyDevice extends AbstractDevice
             saveBackup(); // a pending leave check survives a crash
         }
         announce(change, at, "outer door " + source.deviceUid() + " " + state.name().toLowerCase());
+    }
+
+    /** A caller of the sensor API 1.0 call reports a change. */
+    @Override
+    public void doorChanged(DoorProvider source, OpenState state, Instant at) {
+        doorChanged(source, state, false, at);
     }
 
     /** Advances the algorithm's clock; called every second by the driver. */

@@ -1,5 +1,7 @@
 package org.tinysep.flatoccupancy.internal;
 
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -7,17 +9,10 @@ import java.lang.reflect.Method;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.Map;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.api.device.Connection;
-import org.tinysep.api.sensor.DoorKind;
-import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.api.sensor.MovementListener;
-import org.tinysep.api.sensor.MovementLocation;
-import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.device.support.AbstractDevice;
@@ -36,7 +31,7 @@ class FlatOccupancyContinuityTest {
 
     private Instant now = T0;
     private final RecordingLogs logs = new RecordingLogs(() -> now);
-    private final DoorProvider front = new Door();
+    private final DoorProvider front = door("front");
 
     private FlatOccupancyDevice device(ComponentBackup saved) {
         FlatOccupancyDevice d = new FlatOccupancyDevice(
@@ -60,7 +55,7 @@ class FlatOccupancyContinuityTest {
     }
 
     private void motion(FlatOccupancyDevice d) {
-        d.movementReported(new Hall(), new MovementEvent(true, now));
+        d.movementReported(movement(), new MovementEvent(true, now));
     }
 
     @Test
@@ -136,49 +131,5 @@ class FlatOccupancyContinuityTest {
         assertEquals(Occupancy.UNKNOWN, d.occupancy());
         assertTrue(logs.events().stream().anyMatch(e -> e.message().startsWith("saved occupancy")),
                 logs.events().toString());
-    }
-
-    private static final class Door implements DoorProvider {
-        @Override
-        public String deviceUid() {
-            return "front";
-        }
-
-        @Override
-        public Connection connect(DoorListener listener) {
-            throw new UnsupportedOperationException();
-        }
-
-        @Override
-        public OpenState state() {
-            return OpenState.UNKNOWN;
-        }
-
-        @Override
-        public DoorKind kind() {
-            return DoorKind.OUTER;
-        }
-    }
-
-    private static final class Hall implements MovementProvider {
-        @Override
-        public String deviceUid() {
-            return "hall-movement";
-        }
-
-        @Override
-        public Connection connect(MovementListener listener) {
-            throw new UnsupportedOperationException();
-        }
-
-        @Override
-        public Optional<MovementEvent> lastMovement() {
-            return Optional.empty();
-        }
-
-        @Override
-        public MovementLocation location() {
-            return MovementLocation.INSIDE;
-        }
     }
 }

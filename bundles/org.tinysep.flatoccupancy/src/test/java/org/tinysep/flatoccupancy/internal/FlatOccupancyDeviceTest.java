@@ -1,23 +1,16 @@
 package org.tinysep.flatoccupancy.internal;
 
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.flat;
+import static org.tinysep.flatoccupancy.internal.Fixtures.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.time.Duration;
 import java.time.Instant;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
-import org.tinysep.api.device.Connection;
-import org.tinysep.api.sensor.DoorKind;
-import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.api.sensor.MovementListener;
-import org.tinysep.api.sensor.MovementLocation;
-import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
 
 /** Door reports through the device: a door node's first report is its resting state, not a closing. */
@@ -26,33 +19,7 @@ class FlatOccupancyDeviceTest {
     private static final Instant T0 = Instant.parse("2026-11-22T07:00:00Z");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final FlatOccupancyDevice flat = new FlatOccupancyDevice(
-            new DriverContext(null, "d", "FlatOccupancy", logs.reporter(), new PlatformClock(() -> T0)),
-            Duration.ofMinutes(10), Duration.ofSeconds(10));
-
-    private static DoorProvider door(String uid) {
-        return new DoorProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(DoorListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.UNKNOWN;
-            }
-
-            @Override
-            public DoorKind kind() {
-                return DoorKind.OUTER;
-            }
-        };
-    }
+    private final FlatOccupancyDevice flat = flat(logs, T0);
 
     @Test
     void aFirstClosedReportStartsNoLeaveCheckButARealClosingDoes() {
@@ -60,7 +27,7 @@ class FlatOccupancyDeviceTest {
         flat.movementReported(movement(), new MovementEvent(true, T0));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
 
-        flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5)); // the node powers up: closed
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.plusSeconds(5)); // the node powers up: closed
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "a first report is no evidence of leaving");
 
@@ -72,31 +39,7 @@ class FlatOccupancyDeviceTest {
 
     @Test
     void aFirstOpenReportCountsAsAnArrival() {
-        flat.doorChanged(door("front"), OpenState.OPEN, T0);
+        flat.doorChanged(door("front"), OpenState.OPEN, true, T0);
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
-    }
-
-    private static MovementProvider movement() {
-        return new MovementProvider() {
-            @Override
-            public String deviceUid() {
-                return "hall-movement";
-            }
-
-            @Override
-            public Connection connect(MovementListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public Optional<MovementEvent> lastMovement() {
-                return Optional.empty();
-            }
-
-            @Override
-            public MovementLocation location() {
-                return MovementLocation.INSIDE;
-            }
-        };
     }
 }

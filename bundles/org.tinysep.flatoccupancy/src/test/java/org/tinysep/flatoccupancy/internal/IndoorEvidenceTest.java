@@ -1,25 +1,20 @@
 package org.tinysep.flatoccupancy.internal;
 
+import static org.tinysep.flatoccupancy.internal.Fixtures.door;
+import static org.tinysep.flatoccupancy.internal.Fixtures.flat;
+import static org.tinysep.flatoccupancy.internal.Fixtures.presence;
+import static org.tinysep.flatoccupancy.internal.Fixtures.window;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.time.Duration;
 import java.time.Instant;
-import java.util.Optional;
 import org.junit.jupiter.api.Test;
-import org.tinysep.api.device.Connection;
-import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.DoorKind;
-import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
-import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
 
 /**
@@ -31,14 +26,12 @@ class IndoorEvidenceTest {
     private static final Instant T0 = Instant.parse("2026-11-22T07:00:00Z");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final FlatOccupancyDevice flat = new FlatOccupancyDevice(
-            new DriverContext(null, "d", "FlatOccupancy", logs.reporter(), new PlatformClock(() -> T0)),
-            Duration.ofMinutes(10), Duration.ofSeconds(10));
+    private final FlatOccupancyDevice flat = flat(logs, T0);
     private final DoorProvider front = door("front", DoorKind.OUTER);
 
     /** Someone came home (door opened) and the door closed behind them at T0 + 5 s. */
     private void arrived() {
-        flat.doorChanged(front, OpenState.CLOSED, T0.minusSeconds(60)); // first report: resting state
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.minusSeconds(60)); // first report: resting state
         flat.doorChanged(front, OpenState.OPEN, T0);
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
@@ -47,9 +40,8 @@ class IndoorEvidenceTest {
     @Test
     void aWindowOrContactChangeCancelsTheLeaveCheck() {
         WindowProvider fridge = window("fridge");
-        flat.watchStateForTest(fridge, OpenState.CLOSED);
         arrived();
-        flat.windowChanged(fridge, OpenState.OPEN, T0.plusSeconds(120));
+        flat.windowChanged(fridge, OpenState.OPEN, false, T0.plusSeconds(120));
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "the fridge opened after the door closed");
     }
@@ -58,7 +50,7 @@ class IndoorEvidenceTest {
     void aWindowsFirstReportIsNoActivity() {
         WindowProvider fridge = window("fridge");
         arrived();
-        flat.windowChanged(fridge, OpenState.CLOSED, T0.plusSeconds(120)); // its first report
+        flat.windowChanged(fridge, OpenState.CLOSED, true, T0.plusSeconds(120)); // its first report
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.UNOCCUPIED, flat.occupancy());
     }
@@ -66,17 +58,30 @@ class IndoorEvidenceTest {
     @Test
     void anInnerDoorChangeCancelsTheLeaveCheck() {
         DoorProvider bath = door("bathroom door", DoorKind.INNER);
-        flat.doorChanged(bath, OpenState.CLOSED, T0.minusSeconds(100));
+        flat.doorChanged(bath, OpenState.CLOSED, true, T0.minusSeconds(100)); // its first report
         arrived();
-        flat.doorChanged(bath, OpenState.OPEN, T0.plusSeconds(300));
+        flat.doorChanged(bath, OpenState.OPEN, false, T0.plusSeconds(300));
         flat.tick(T0.plusSeconds(5 + 600));
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
+    }
+
+    /**
+     * Issue 16: the door device says which report is its first, so a change is a change even when this device
+     * (re)started after the door did and never heard the door's first report (it used to be taken for one).
+     */
+    @Test
+    void anInnerDoorsChangeCountsEvenIfThisDeviceMissedItsFirstReport() {
+        DoorProvider bath = door("bathroom door", DoorKind.INNER);
+        arrived();
+        flat.doorChanged(bath, OpenState.OPEN, false, T0.plusSeconds(300));
+        flat.tick(T0.plusSeconds(5 + 600));
+        assertEquals(Occupancy.OCCUPIED, flat.occupancy(), "the bathroom door opened after the front door closed");
     }
 
     @Test
     void aSeatMatThatIsOnKeepsTheFlatOccupiedWhenAVisitorLeaves() {
         PresenceProvider seat = presence("seat", PresenceKind.SEAT);
-        flat.doorChanged(front, OpenState.CLOSED, T0.minusSeconds(3600));
+        flat.doorChanged(front, OpenState.CLOSED, true, T0.minusSeconds(3600));
         flat.presenceChanged(seat, true, false, T0.minusSeconds(1800)); // the resident sits down
         flat.doorChanged(front, OpenState.OPEN, T0); // the visitor leaves
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(5));
@@ -103,77 +108,5 @@ class IndoorEvidenceTest {
         flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(1005));
         flat.tick(T0.plusSeconds(1005 + 600));
         assertEquals(Occupancy.UNOCCUPIED, flat.occupancy(), "a flush that is ON holds nobody");
-    }
-
-    private static DoorProvider door(String uid, DoorKind kind) {
-        return new DoorProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(DoorListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.UNKNOWN;
-            }
-
-            @Override
-            public DoorKind kind() {
-                return kind;
-            }
-        };
-    }
-
-    private static WindowProvider window(String uid) {
-        return new WindowProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(WindowListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public OpenState state() {
-                return OpenState.CLOSED;
-            }
-
-            @Override
-            public Optional<Coordinates> position() {
-                return Optional.empty();
-            }
-        };
-    }
-
-    private static PresenceProvider presence(String uid, PresenceKind kind) {
-        return new PresenceProvider() {
-            @Override
-            public String deviceUid() {
-                return uid;
-            }
-
-            @Override
-            public Connection connect(PresenceListener listener) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public PresenceKind kind() {
-                return kind;
-            }
-
-            @Override
-            public boolean present() {
-                return false;
-            }
-        };
     }
 }

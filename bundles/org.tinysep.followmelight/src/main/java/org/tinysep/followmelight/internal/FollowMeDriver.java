@@ -1,11 +1,6 @@
 package org.tinysep.followmelight.internal;
 
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.function.BiConsumer;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -20,7 +15,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.SingleDeviceWiring;
 import org.tinysep.device.support.TrackedPlacements;
 
 /**
@@ -35,8 +30,7 @@ public final class FollowMeDriver extends AbstractDriver {
     static final String PID = "org.tinysep.followmelight";
     static final String NAME = "FollowMeLight";
 
-    private final Map<String, Object> optional = new ConcurrentHashMap<>();
-    private final List<ProviderTracker<?>> trackers = new ArrayList<>();
+    private SingleDeviceWiring<FollowMeDevice> wiring;
     private Duration grace;
     private Percent brightness;
     private TrackedPlacements directory;
@@ -52,69 +46,23 @@ public final class FollowMeDriver extends AbstractDriver {
         brightness = Percent.of(Math.min(100, Math.max(1, config.brightness())));
         start(bundleContext);
         directory = new TrackedPlacements(bundleContext);
-        track(bundleContext, FlatOccupancyProvider.class);
-        track(bundleContext, HouseInformationProvider.class);
-        track(bundleContext, MovementProvider.class);
-        track(bundleContext, PetMovementProvider.class);
-        light(bundleContext, SimpleLightProvider.class, (d, p) -> d.control(p));
-        light(bundleContext, DimmableLightProvider.class, (d, p) -> d.control(p));
-        ticker = new PlatformTicker(bundleContext, "follow-me-light", now -> current().forEach(d -> d.tick(now)));
+        wiring = new SingleDeviceWiring<>(this, FollowMeDevice.class,
+                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDevice::forget);
+        wiring.optional(bundleContext, FlatOccupancyProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, HouseInformationProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, MovementProvider.class, FollowMeDevice::use);
+        wiring.optional(bundleContext, PetMovementProvider.class, FollowMeDevice::use);
+        wiring.source(bundleContext, SimpleLightProvider.class, (d, p) -> d.control(p));
+        wiring.source(bundleContext, DimmableLightProvider.class, (d, p) -> d.control(p));
+        ticker = new PlatformTicker(bundleContext, "follow-me-light",
+                now -> wiring.current().forEach(d -> d.tick(now)));
     }
 
     @Deactivate
     void deactivate() {
         ticker.close();
-        for (int i = trackers.size() - 1; i >= 0; i--) {
-            trackers.get(i).close();
-        }
-        trackers.clear();
+        wiring.close();
         stop();
         directory.close();
-    }
-
-    private <P> void light(BundleContext bc, Class<P> type, BiConsumer<FollowMeDevice, P> control) {
-        trackers.add(new ProviderTracker<>(bc, type, null, ProviderTracker.Callback.of(
-                (p, uid) -> control.accept(device(), p), (p, uid) -> {
-                    current().forEach(d -> d.forget(uid));
-                    providerGone(uid);
-                })).open());
-    }
-
-    private <P> void track(BundleContext bc, Class<P> type) {
-        trackers.add(new ProviderTracker<>(bc, type, null, ProviderTracker.Callback.of((p, uid) -> {
-            optional.put(type.getName() + '/' + uid, p);
-            current().forEach(d -> attach(d, p));
-        }, (p, uid) -> {
-            optional.remove(type.getName() + '/' + uid);
-            current().forEach(d -> d.forget(uid));
-            providerGone(uid);
-        })).open());
-    }
-
-    private static void attach(FollowMeDevice d, Object p) {
-        if (p instanceof FlatOccupancyProvider f) {
-            d.use(f);
-        } else if (p instanceof HouseInformationProvider h) {
-            d.use(h);
-        } else if (p instanceof MovementProvider m) {
-            d.use(m);
-        } else if (p instanceof PetMovementProvider m) {
-            d.use(m);
-        }
-    }
-
-    private List<FollowMeDevice> current() {
-        return devices(FollowMeDevice.class);
-    }
-
-    /** @return the single device, created (and connected to the optional providers) on first need */
-    private synchronized FollowMeDevice device() {
-        List<FollowMeDevice> all = current();
-        if (!all.isEmpty()) {
-            return all.get(0);
-        }
-        FollowMeDevice d = addDevice(new FollowMeDevice(context(), directory, grace, brightness));
-        optional.values().forEach(p -> attach(d, p));
-        return d;
     }
 }

@@ -1,27 +1,21 @@
 package org.tinysep.followmelight.internal;
 
 import java.time.Instant;
-import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import org.tinysep.api.actuator.DimmableLightListener;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.actuator.SimpleLightListener;
 import org.tinysep.api.actuator.SimpleLightProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.api.sensor.MovementListener;
-import org.tinysep.api.sensor.MovementLocation;
-import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.Percent;
 import org.tinysep.api.sensor.PetMovementListener;
 import org.tinysep.api.sensor.PetMovementProvider;
-import org.tinysep.api.service.FlatOccupancyListener;
-import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.testing.FakeFlat;
+import org.tinysep.device.support.testing.FakeMovement;
+import org.tinysep.device.support.testing.FakePlacements;
+import org.tinysep.device.support.testing.FakeProvider;
 
 /** Hand-written fakes of the API providers; every light command goes into one shared journal. */
 final class Fakes {
@@ -29,31 +23,9 @@ final class Fakes {
     private Fakes() {
     }
 
-    static class Base<L> {
-        final String uid;
-        final List<L> listeners = new ArrayList<>();
-
+    static class Base<L> extends FakeProvider<L> {
         Base(String uid) {
-            this.uid = uid;
-        }
-
-        public String deviceUid() {
-            return uid;
-        }
-
-        public Connection connect(L l) {
-            listeners.add(l);
-            return new Connection() {
-                @Override
-                public void close() {
-                    listeners.remove(l);
-                }
-
-                @Override
-                public boolean isOpen() {
-                    return listeners.contains(l);
-                }
-            };
+            super(uid);
         }
     }
 
@@ -103,23 +75,9 @@ final class Fakes {
         }
     }
 
-    static final class Movement extends Base<MovementListener> implements MovementProvider {
+    static final class Movement extends FakeMovement {
         Movement(String uid) {
             super(uid);
-        }
-
-        void report(Instant at) {
-            List.copyOf(listeners).forEach(l -> l.movementReported(this, new MovementEvent(true, at)));
-        }
-
-        @Override
-        public Optional<MovementEvent> lastMovement() {
-            return Optional.empty();
-        }
-
-        @Override
-        public MovementLocation location() {
-            return MovementLocation.INSIDE;
         }
     }
 
@@ -138,44 +96,12 @@ final class Fakes {
         }
     }
 
-    static final class Flat extends Base<FlatOccupancyListener> implements FlatOccupancyProvider {
-        Occupancy occupancy;
-        Instant since;
-
+    static final class Flat extends FakeFlat {
         Flat(String uid, Occupancy occupancy, Instant since) {
-            super(uid);
-            this.occupancy = occupancy;
-            this.since = since;
-        }
-
-        void change(Occupancy o, Instant at) {
-            occupancy = o;
-            since = at;
-            List.copyOf(listeners).forEach(l -> l.occupancyChanged(this, o, at));
-        }
-
-        @Override
-        public Occupancy occupancy() {
-            return occupancy;
-        }
-
-        @Override
-        public Instant since() {
-            return since;
+            super(uid, occupancy, since);
         }
     }
 
-    static final class Directory implements Placements {
-        final Map<String, String> rooms = new HashMap<>();
-
-        @Override
-        public Optional<String> roomOf(String deviceUid) {
-            return Optional.ofNullable(rooms.get(deviceUid));
-        }
-
-        @Override
-        public String nameOf(String deviceUid) {
-            return deviceUid;
-        }
+    static final class Directory extends FakePlacements {
     }
 }

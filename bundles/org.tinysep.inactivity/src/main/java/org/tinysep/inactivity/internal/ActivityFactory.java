@@ -30,7 +30,9 @@ import org.tinysep.device.support.Placements;
 /**
  * Turns "device X reported something at T" into an {@link Activity}: the room from the device's
  * {@code tinysep.room} property at that moment, its name and type from House Information, its limit from the
- * {@link LimitTable}. A door's or window's first report is no activity ({@link ContactStates}).
+ * {@link LimitTable}. A door's or window's first report after its device started only tells its state: it is no
+ * activity (the device says so: {@code first}, sensor API 1.1). Counting it would make every restart look like
+ * activity in every room with a door or window, and would move an unanswered alert's clock to another room.
  */
 final class ActivityFactory implements MovementListener, DoorListener, WindowListener, PresenceListener {
 
@@ -39,7 +41,6 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private final LimitPolicy policy;
     private final Supplier<Instant> clock;
     private final Consumer<Activity> sink;
-    private final ContactStates contacts = new ContactStates();
     private volatile Map<String, Room> rooms = Map.of();
 
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
@@ -60,11 +61,6 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         this.sink = sink;
     }
 
-    /** A door or window was connected in state {@code current}. */
-    void contactConnected(String deviceUid, OpenState current) {
-        contacts.connected(deviceUid, current);
-    }
-
     @Override
     public void movementReported(MovementProvider source, MovementEvent movement) {
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
@@ -73,17 +69,29 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     }
 
     @Override
-    public void doorChanged(DoorProvider source, OpenState state, Instant at) {
-        if (contacts.isChange(source.deviceUid(), state)) {
+    public void doorChanged(DoorProvider source, OpenState state, boolean first, Instant at) {
+        if (!first && state != OpenState.UNKNOWN) {
             sink.accept(of(source.deviceUid(), n -> "door " + n + " " + lower(state), at));
         }
     }
 
+    /** A caller of the sensor API 1.0 call reports a change. */
     @Override
-    public void windowChanged(WindowProvider source, OpenState state, Instant at) {
-        if (contacts.isChange(source.deviceUid(), state)) {
+    public void doorChanged(DoorProvider source, OpenState state, Instant at) {
+        doorChanged(source, state, false, at);
+    }
+
+    @Override
+    public void windowChanged(WindowProvider source, OpenState state, boolean first, Instant at) {
+        if (!first && state != OpenState.UNKNOWN) {
             sink.accept(of(source.deviceUid(), n -> "window " + n + " " + lower(state), at));
         }
+    }
+
+    /** A caller of the sensor API 1.0 call reports a change. */
+    @Override
+    public void windowChanged(WindowProvider source, OpenState state, Instant at) {
+        windowChanged(source, state, false, at);
     }
 
     /** A mat, flush or appliance turning on or off is activity; a bed mat turning on says the person is in bed. */

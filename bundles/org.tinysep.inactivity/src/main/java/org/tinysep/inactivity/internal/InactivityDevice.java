@@ -88,13 +88,11 @@ final class InactivityDevice extends AbstractDevice
 
     void watch(DoorProvider p) {
         connect(p, DoorProvider.class, activities, true);
-        activities.contactConnected(p.deviceUid(), p.state());
         sources.add(p.deviceUid());
     }
 
     void watch(WindowProvider p) {
         connect(p, WindowProvider.class, activities, true);
-        activities.contactConnected(p.deviceUid(), p.state());
         sources.add(p.deviceUid());
     }
 

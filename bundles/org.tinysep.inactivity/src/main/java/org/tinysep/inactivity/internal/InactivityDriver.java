@@ -16,11 +16,7 @@ import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.LearningSettings;
 import org.tinysep.inactivity.internal.learn.SleepRule;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.function.BiConsumer;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -37,7 +33,7 @@ import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.SingleDeviceWiring;
 import org.tinysep.device.support.TrackedPlacements;
 
 /**
@@ -53,8 +49,7 @@ public final class InactivityDriver extends AbstractDriver {
     static final String NAME = "InactivityRecognition";
     private static final Logger LOG = LoggerFactory.getLogger(InactivityDriver.class);
 
-    private final Map<String, Object> optional = new ConcurrentHashMap<>();
-    private final List<ProviderTracker<?>> trackers = new ArrayList<>();
+    private SingleDeviceWiring<InactivityDevice> wiring;
     private LimitTable limits;
     private AlertMail words;
     private TrackedPlacements directory;
@@ -84,14 +79,15 @@ public final class InactivityDriver extends AbstractDriver {
         start(bundleContext);
         policy = policy(config, zone);
         directory = new TrackedPlacements(bundleContext);
-        track(bundleContext, FlatOccupancyProvider.class);
-        track(bundleContext, MailManagerProvider.class);
-        track(bundleContext, HouseInformationProvider.class);
-        source(bundleContext, MovementProvider.class, (d, p) -> d.watch(p));
-        source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
-        source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
-        source(bundleContext, PresenceProvider.class, (d, p) -> d.watch(p));
-        ticker = new PlatformTicker(bundleContext, "inactivity", now -> current().forEach(d -> d.tick(now)));
+        wiring = new SingleDeviceWiring<>(this, InactivityDevice.class, this::newDevice, InactivityDevice::forget);
+        wiring.optional(bundleContext, FlatOccupancyProvider.class, InactivityDevice::use);
+        wiring.optional(bundleContext, MailManagerProvider.class, InactivityDevice::use);
+        wiring.optional(bundleContext, HouseInformationProvider.class, InactivityDevice::use);
+        wiring.source(bundleContext, MovementProvider.class, (d, p) -> d.watch(p));
+        wiring.source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
+        wiring.source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
+        wiring.source(bundleContext, PresenceProvider.class, (d, p) -> d.watch(p));
+        ticker = new PlatformTicker(bundleContext, "inactivity", now -> wiring.current().forEach(d -> d.tick(now)));
         if (fromLog != null) {
             int days = learner.settings().historyDays();
             loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "inactivity-history"));
@@ -154,55 +150,17 @@ public final class InactivityDriver extends AbstractDriver {
             loader.shutdownNow();
         }
         ticker.close();
-        for (int i = trackers.size() - 1; i >= 0; i--) {
-            trackers.get(i).close();
-        }
-        trackers.clear();
+        wiring.close();
         stop();
         directory.close();
     }
 
-    private <P> void source(BundleContext bc, Class<P> type, BiConsumer<InactivityDevice, P> watch) {
-        trackers.add(new ProviderTracker<>(bc, type, null, ProviderTracker.Callback.of(
-                (p, uid) -> watch.accept(device(), p), (p, uid) -> providerGone(uid))).open());
-    }
-
-    private <P> void track(BundleContext bc, Class<P> type) {
-        trackers.add(new ProviderTracker<>(bc, type, null, ProviderTracker.Callback.of((p, uid) -> {
-            optional.put(type.getName() + '/' + uid, p);
-            current().forEach(d -> attach(d, p));
-        }, (p, uid) -> {
-            optional.remove(type.getName() + '/' + uid);
-            current().forEach(d -> d.forget(uid));
-            providerGone(uid);
-        })).open());
-    }
-
-    private static void attach(InactivityDevice d, Object p) {
-        if (p instanceof FlatOccupancyProvider f) {
-            d.use(f);
-        } else if (p instanceof MailManagerProvider m) {
-            d.use(m);
-        } else if (p instanceof HouseInformationProvider h) {
-            d.use(h);
-        }
-    }
-
-    private List<InactivityDevice> current() {
-        return devices(InactivityDevice.class);
-    }
-
-    /** @return the single device, created (and connected to the optional providers) on first need */
-    private synchronized InactivityDevice device() {
-        List<InactivityDevice> all = current();
-        if (!all.isEmpty()) {
-            return all.get(0);
-        }
-        InactivityDevice d = addDevice(new InactivityDevice(context(), directory, limits, words, policy, fromLog));
+    /** @return the single device (not yet registered), its room types known to the learner */
+    private InactivityDevice newDevice() {
+        InactivityDevice d = new InactivityDevice(context(), directory, limits, words, policy, fromLog);
         if (learner != null) {
             learner.roomTypes(d::roomType);
         }
-        optional.values().forEach(p -> attach(d, p));
         return d;
     }
 

@@ -6,51 +6,25 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
-import org.tinysep.api.bus.BusRadioAmicaListener;
-import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
+import org.tinysep.api.sensor.DoorListener;
+import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.testing.FakeAmicaBus;
 
 /** Reed-switch payloads in, door changes out; repeated states are not re-announced. */
 class AmicaDoorDeviceTest {
 
     private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
 
-    private final BusRadioAmicaProvider bus = new BusRadioAmicaProvider() {
-        @Override
-        public String deviceUid() {
-            return "bus-1";
-        }
-
-        @Override
-        public Connection connect(BusRadioAmicaListener listener) {
-            throw new UnsupportedOperationException("not needed here");
-        }
-
-        @Override
-        public String nodeId() {
-            return "1.20";
-        }
-
-        @Override
-        public Set<String> nodeTypes() {
-            return Set.of("door");
-        }
-
-        @Override
-        public void send(byte[] payload) {
-            throw new UnsupportedOperationException("a door sends nothing");
-        }
-    };
+    private final FakeAmicaBus bus = new FakeAmicaBus("1.20", "door");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
     private final AmicaDoorDevice door = new AmicaDoorDevice(
@@ -70,6 +44,34 @@ class AmicaDoorDeviceTest {
         long t = T0.getEpochSecond();
         assertEquals(List.of("CLOSED@" + t, "OPEN@" + (t + 2)), seen);
         assertEquals(OpenState.OPEN, door.state());
+    }
+
+    /** Issue 16: the first report establishes the state and says so; every later call is a change. */
+    @Test
+    void theFirstReportEstablishesTheStateAndListenersAreToldSo() {
+        List<String> seen = new ArrayList<>();
+        door.connect(new DoorListener() {
+            @Override
+            public void doorChanged(DoorProvider source, OpenState state, Instant at) {
+                seen.add("old " + state);
+            }
+
+            @Override
+            public void doorChanged(DoorProvider source, OpenState state, boolean first, Instant at) {
+                seen.add((first ? "first " : "change ") + state);
+            }
+        });
+        List<String> old = new ArrayList<>();
+        door.connect((src, state, at) -> old.add(state.name())); // a 1.0 listener hears every call as before
+
+        door.payloadReceived(bus, AmicaPayloads.encode(new ReedSwitchStatus(false)), T0);
+        door.payloadReceived(bus, AmicaPayloads.encode(new ReedSwitchStatus(false)), T0.plusSeconds(1));
+        door.payloadReceived(bus, AmicaPayloads.encode(new ReedSwitchStatus(true)), T0.plusSeconds(2));
+        door.payloadReceived(bus, AmicaPayloads.encode(new ReedSwitchStatus(false)), T0.plusSeconds(3));
+
+        assertEquals(List.of("first CLOSED", "change OPEN", "change CLOSED"), seen);
+        assertEquals(List.of("CLOSED", "OPEN", "CLOSED"), old);
+        assertEquals(0, bus.sent.size(), "a door is never sent anything");
     }
 
     @Test

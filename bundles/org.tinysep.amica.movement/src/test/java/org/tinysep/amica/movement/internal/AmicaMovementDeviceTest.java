@@ -6,52 +6,24 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
-import org.tinysep.api.bus.BusRadioAmicaListener;
-import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.testing.FakeAmicaBus;
 
 /** Movement Detection payloads in, movement reports out. */
 class AmicaMovementDeviceTest {
 
     private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
 
-    private final BusRadioAmicaProvider bus = new BusRadioAmicaProvider() {
-        @Override
-        public String deviceUid() {
-            return "bus-1";
-        }
-
-        @Override
-        public Connection connect(BusRadioAmicaListener listener) {
-            throw new UnsupportedOperationException("not needed here");
-        }
-
-        @Override
-        public String nodeId() {
-            return "1.17";
-        }
-
-        @Override
-        public Set<String> nodeTypes() {
-            return Set.of("movement", "door");
-        }
-
-        @Override
-        public void send(byte[] payload) {
-            throw new UnsupportedOperationException("a movement sensor sends nothing");
-        }
-    };
+    private final FakeAmicaBus bus = new FakeAmicaBus("1.17", "movement", "door");
 
     private final RecordingLogs logs = new RecordingLogs(() -> T0);
     private final AmicaMovementDevice movement = new AmicaMovementDevice(

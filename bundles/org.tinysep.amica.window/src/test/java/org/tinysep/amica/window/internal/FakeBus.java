@@ -1,46 +1,11 @@
 package org.tinysep.amica.window.internal;
 
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Set;
-import org.tinysep.api.bus.BusRadioAmicaListener;
-import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
+import org.tinysep.device.support.testing.FakeAmicaBus;
 
-/** A hand-written AmICA bus device: one node, records every payload sent to it. */
-final class FakeBus implements BusRadioAmicaProvider {
-
-    final List<byte[]> sent = new ArrayList<>();
-    private final String nodeId;
-    private final Set<String> types;
+/** A hand-written AmICA bus device: one node, records every payload sent to it (device support's testing double). */
+final class FakeBus extends FakeAmicaBus {
 
     FakeBus(String nodeId, String... types) {
-        this.nodeId = nodeId;
-        this.types = Set.of(types);
-    }
-
-    @Override
-    public String deviceUid() {
-        return "bus-" + nodeId;
-    }
-
-    @Override
-    public Connection connect(BusRadioAmicaListener listener) {
-        throw new UnsupportedOperationException("devices under test are fed directly");
-    }
-
-    @Override
-    public String nodeId() {
-        return nodeId;
-    }
-
-    @Override
-    public Set<String> nodeTypes() {
-        return types;
-    }
-
-    @Override
-    public void send(byte[] payload) {
-        sent.add(payload.clone());
+        super(nodeId, types);
     }
 }

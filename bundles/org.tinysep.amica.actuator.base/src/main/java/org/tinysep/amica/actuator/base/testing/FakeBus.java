@@ -1,55 +1,15 @@
 package org.tinysep.amica.actuator.base.testing;
 
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Set;
-import org.tinysep.api.bus.BusRadioAmicaListener;
-import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
+import org.tinysep.device.support.testing.FakeAmicaBus;
 
 /**
  * For unit tests of AmICA actuator devices: a hand-written bus device of one node that records every payload sent
- * to it, or fails on demand. Never referenced by main code, so bnd never copies it into a bundle.
+ * to it ({@code sent}), or fails on demand ({@code failure}); device support's testing double under the name the
+ * actuator tests know. Never referenced by main code, so bnd never copies it into a bundle.
  */
-public final class FakeBus implements BusRadioAmicaProvider {
-
-    /** Payloads sent, in order. */
-    public final List<byte[]> sent = new ArrayList<>();
-    /** Thrown by {@link #send} when set. */
-    public RuntimeException failure;
-    private final String nodeId;
-    private final Set<String> types;
+public final class FakeBus extends FakeAmicaBus {
 
     public FakeBus(String nodeId, String... types) {
-        this.nodeId = nodeId;
-        this.types = Set.of(types);
-    }
-
-    @Override
-    public String deviceUid() {
-        return "bus-" + nodeId;
-    }
-
-    @Override
-    public Connection connect(BusRadioAmicaListener listener) {
-        throw new UnsupportedOperationException("devices under test are fed directly");
-    }
-
-    @Override
-    public String nodeId() {
-        return nodeId;
-    }
-
-    @Override
-    public Set<String> nodeTypes() {
-        return types;
-    }
-
-    @Override
-    public void send(byte[] payload) {
-        if (failure != null) {
-            throw failure;
-        }
-        sent.add(payload.clone());
+        super(nodeId, types);
     }
 }

@@ -1,0 +1,11 @@
+/**
+ * Sensor abstraction devices as small declarations (issue 16): {@link SensorDevice} owns status, decoding and
+ * filtering through its {@link Source} (one per node family), change detection, the first-report rule, the
+ * {@code state}/{@code since} parameters and the listeners; {@link ContactSensorDevice}, {@link MotionSensorDevice}
+ * and {@link MovementSensorDevice} add the rules of their kind once for both node families; {@link SensorDriver}
+ * is the driver. Compiled into each sensor bundle like the rest of device support ({@code -conditionalpackage}).
+ */
+@Version("1.0.0")
+package org.tinysep.device.support.sensor;
+
+import org.osgi.annotation.versioning.Version;
