@@ -56,6 +56,9 @@ public final class Mosquitto implements AutoCloseable {
         if (options.tls) {
             Certificates.generate(dir);
         }
+        if (options.clientCertificates) {
+            Certificates.generateClientCa(dir);
+        }
         Files.writeString(dir.resolve("mosquitto.conf"), config(), StandardCharsets.UTF_8);
         Files.createDirectories(dir.resolve("data"));
     }
@@ -116,6 +119,10 @@ public final class Mosquitto implements AutoCloseable {
         if (options.tls) {
             c.append("certfile ").append(dir.resolve(Certificates.CERT)).append('\n');
             c.append("keyfile ").append(dir.resolve(Certificates.KEY)).append('\n');
+        }
+        if (options.clientCertificates) {
+            c.append("require_certificate true\n");
+            c.append("cafile ").append(dir.resolve(Certificates.CLIENT_CA)).append('\n');
         }
         c.append("log_dest stdout\n");
         c.append("log_type error\nlog_type warning\nlog_type notice\nlog_type information\n");
@@ -241,6 +248,15 @@ public final class Mosquitto implements AutoCloseable {
         return dir.resolve(Certificates.TRUST_STORE);
     }
 
+    /** @return the PEM of the CA whose client certificates the broker accepts (see {@link ClientCertificates}) */
+    public Path clientCa() {
+        if (!options.clientCertificates) {
+            throw new IllegalStateException("this broker does not ask for client certificates"
+                    + " (Mosquitto.builder().requireClientCertificate(true))");
+        }
+        return dir.resolve(Certificates.CLIENT_CA);
+    }
+
     private void requireTls() {
         if (!options.tls) {
             throw new IllegalStateException("this broker runs without TLS (Mosquitto.builder().tls(true))");
@@ -295,6 +311,7 @@ public final class Mosquitto implements AutoCloseable {
     public static final class Builder {
         private boolean persistence;
         private boolean tls;
+        private boolean clientCertificates;
         private String user;
         private String password;
         private int port;
@@ -312,6 +329,16 @@ public final class Mosquitto implements AutoCloseable {
         /** Serves TLS with a generated self-signed certificate for 127.0.0.1 (url {@code ssl://...}). */
         public Builder tls(boolean on) {
             this.tls = on;
+            return this;
+        }
+
+        /**
+         * Serves TLS (as {@link #tls(boolean)}) and refuses every client without a certificate signed by the broker's
+         * own client CA ({@code require_certificate true}); {@link ClientCertificates#issue} makes such certificates.
+         */
+        public Builder requireClientCertificate(boolean on) {
+            this.clientCertificates = on;
+            this.tls = tls || on;
             return this;
         }
 
