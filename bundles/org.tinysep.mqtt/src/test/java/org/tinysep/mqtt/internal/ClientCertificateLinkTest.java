@@ -3,18 +3,11 @@ package org.tinysep.mqtt.internal;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.testsupport.mqtt.ClientCertificates;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 
@@ -22,22 +15,11 @@ import org.tinysep.testsupport.mqtt.Mosquitto;
  * The Paho link against a real Mosquitto that requires client certificates ({@code require_certificate true});
  * certificates made by openssl in the test ({@link ClientCertificates}): with the flat's certificate it connects and
  * publishes; without one, or with one the broker's CA did not sign, it is refused in plain words, as "refused"
- * (retrying does not help) and without a stack trace.
+ * (the bridge device shows ERROR) and without a stack trace.
  */
-class ClientCertificateLinkTest {
+class ClientCertificateLinkTest extends LinkTestSupport {
 
     private static final String PASSWORD = "flat-key-pw";
-
-    @TempDir
-    Path var;
-
-    private final ExecutorService executor = Executors.newSingleThreadExecutor();
-    private final LinkedBlockingQueue<String> events = new LinkedBlockingQueue<>();
-
-    @AfterEach
-    void stop() {
-        executor.shutdownNow();
-    }
 
     private Link link(Mosquitto broker, Path keyStore) throws Exception {
         Map<String, String> c = new HashMap<>();
@@ -51,43 +33,17 @@ class ClientCertificateLinkTest {
             c.put("keyStorePasswordFile", pw.toString());
         }
         Settings s = Settings.parse(c, var);
-        Topics topics = new Topics(s.topicPrefix(), s.flatId(), s.discoveryPrefix());
-        return new Link(s, topics, executor, new Link.Events() {
-            @Override
-            public void connected(int generation) {
-                events.add("connected");
-            }
-
-            @Override
-            public void failed(int generation, String why, boolean refused) {
-                events.add("failed" + (refused ? " (refused)" : "") + ": " + why);
-            }
-
-            @Override
-            public void lost(int generation, String why) {
-                events.add("lost: " + why);
-            }
-
-            @Override
-            public void published(int generation, Message m, boolean ok) {
-                events.add("published " + m.topic() + " " + ok);
-            }
-
-            @Override
-            public void command(String topic, byte[] payload) {
-                events.add("command " + topic + " " + new String(payload, StandardCharsets.UTF_8));
-            }
-        });
+        return new Link(s, new Topics(s.topicPrefix(), s.flatId(), s.discoveryPrefix()), executor, events);
     }
 
-    private String next() throws InterruptedException {
-        String e = events.poll(60, TimeUnit.SECONDS);
-        return e == null ? "(nothing within 60 s)" : e;
-    }
-
-    /** One line, no exception class names or stack frames. */
-    private static void plainWords(String s) {
-        assertTrue(!s.contains("\n") && !s.contains("Exception") && !s.contains("\tat "), s);
+    /** Connects with this key store (null: none) and checks the refusal's words: one line, no exception name. */
+    private void refused(Mosquitto broker, Path keyStore, String start, String end) throws Exception {
+        Link link = link(broker, keyStore);
+        link.connect();
+        String failed = events.next();
+        assertTrue(failed.startsWith("failed (refused): TLS failed: " + start) && failed.endsWith(end), failed);
+        assertTrue(!failed.contains("\n") && !failed.contains("Exception") && !failed.contains("\tat "), failed);
+        link.close(2000);
     }
 
     @Test
@@ -96,9 +52,9 @@ class ClientCertificateLinkTest {
             Path keyStore = ClientCertificates.issue(broker, var.resolve("certs"), "f1", PASSWORD);
             Link link = link(broker, keyStore);
             link.connect();
-            assertEquals("connected", next(), broker.log());
+            assertEquals("connected", events.next(), broker.log());
             link.publish(Message.state("tinysep/f1/status", "online"));
-            assertEquals("published tinysep/f1/status true", next());
+            assertEquals("published tinysep/f1/status true", events.next());
             link.close(2000);
         }
     }
@@ -106,29 +62,17 @@ class ClientCertificateLinkTest {
     @Test
     void isRefusedInWordsWithoutACertificate() throws Exception {
         try (Mosquitto broker = Mosquitto.builder().requireClientCertificate(true).start()) {
-            Link link = link(broker, null);
-            link.connect();
-            String failed = next();
-            assertTrue(failed.startsWith("failed (refused): TLS failed: the broker requires a client certificate ("),
-                    failed);
-            assertTrue(failed.endsWith("; set keyStore and keyStorePasswordFile)"), failed);
-            plainWords(failed);
-            link.close(2000);
+            refused(broker, null, "the broker requires a client certificate (",
+                    "; set keyStore and keyStorePasswordFile)");
         }
     }
 
     @Test
     void isRefusedInWordsWithAnUntrustedCertificate() throws Exception {
         try (Mosquitto broker = Mosquitto.builder().requireClientCertificate(true).start()) {
-            Path keyStore = ClientCertificates.selfSigned(var.resolve("certs"), "f1", PASSWORD);
-            Link link = link(broker, keyStore);
-            link.connect();
-            String failed = next();
-            assertTrue(failed.startsWith("failed (refused): TLS failed: the broker refused this flat's client certificate ("),
-                    failed);
-            assertTrue(failed.endsWith("; is it signed by a CA the broker trusts, and still valid?)"), failed);
-            plainWords(failed);
-            link.close(2000);
+            refused(broker, ClientCertificates.selfSigned(var.resolve("certs"), "f1", PASSWORD),
+                    "the broker refused this flat's client certificate (",
+                    "; is it signed by a CA the broker trusts, and still valid?)");
         }
     }
 }
