@@ -7,12 +7,9 @@ import java.net.http.HttpResponse;
 import java.nio.file.Files;
 import java.time.Duration;
 import java.time.Instant;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Map;
 import org.junit.Test;
 import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
@@ -21,7 +18,7 @@ import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.alert.AlertState;
-import org.tinysep.itests.web.WebTestSupport;
+import org.tinysep.itests.mqtt.MqttBridgeSupport;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 
 /**
@@ -33,33 +30,9 @@ import org.tinysep.testsupport.mqtt.Mosquitto;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
-public class BoardBridgeTest extends WebTestSupport {
+public class BoardBridgeTest extends MqttBridgeSupport {
 
     static final Duration WAIT = Duration.ofSeconds(60);
-
-    @Override
-    protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.add("org.tinysep.alerts");
-        all.add("org.tinysep.sensorhealth");
-        all.add("org.tinysep.mqtt");
-        return all;
-    }
-
-    @Override
-    protected List<Option> options() {
-        List<Option> o = super.options();
-        o.add(reactorBundle("org.tinysep.testsupport.mqtt", 5));
-        o.add(reactorBundle("org.tinysep.mqtt.board", 5));
-        return o;
-    }
-
-    @Override
-    protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.alerts", Map.of("summaryTime", "", "timeZone", "UTC"));
-        return configs;
-    }
 
     @Test
     public void theBridgesAlertOnTheBoardAndItsAcknowledgementBackToTheAlertService() throws Exception {

@@ -28,7 +28,7 @@ import java.util.stream.Stream;
  * WebDriver, no download): open a page, run JavaScript in it, wait for conditions, take screenshots. One fresh,
  * empty profile per instance, deleted on {@link #close()}.
  */
-final class Chromium implements AutoCloseable {
+public final class Chromium implements AutoCloseable {
 
     private static final List<String> CANDIDATES = List.of("/usr/bin/chromium", "/usr/bin/chromium-browser",
             "/usr/bin/google-chrome");
@@ -46,11 +46,11 @@ final class Chromium implements AutoCloseable {
     }
 
     /** @return the Chromium binary, or null when none is installed (scripts/install-deps.sh installs it) */
-    static Path binary() {
+    public static Path binary() {
         return CANDIDATES.stream().map(Path::of).filter(Files::isExecutable).findFirst().orElse(null);
     }
 
-    static Chromium start(Duration timeout) throws Exception {
+    public static Chromium start(Duration timeout) throws Exception {
         Path bin = binary();
         if (bin == null) {
             throw new AssertionError("no Chromium: run scripts/install-deps.sh (apt-get install chromium)");
@@ -137,12 +137,12 @@ final class Chromium implements AutoCloseable {
         }
     }
 
-    void navigate(String url) {
+    public void navigate(String url) {
         command("Page.navigate", "{\"url\":" + quote(url) + "}");
     }
 
     /** Runs {@code expression} in the page (promises awaited); @return its value as JSON text */
-    String eval(String expression) {
+    public String eval(String expression) {
         String answer = command("Runtime.evaluate", "{\"expression\":" + quote("JSON.stringify(" + expression + ")")
                 + ",\"awaitPromise\":true,\"returnByValue\":true}");
         if (answer.contains("\"exceptionDetails\"")) {
@@ -153,7 +153,7 @@ final class Chromium implements AutoCloseable {
     }
 
     /** Waits until {@code condition} (JavaScript) is true in the page, checking every 100 ms. */
-    void waitFor(String condition, Duration timeout, String what) throws InterruptedException {
+    public void waitFor(String condition, Duration timeout, String what) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();
         String last = "";
         while (System.nanoTime() < deadline) {
@@ -184,7 +184,7 @@ final class Chromium implements AutoCloseable {
         command("DOM.setFileInputFiles", "{\"files\":[" + quote(file.toAbsolutePath().toString()) + "],\"nodeId\":" + node.group(1) + "}");
     }
 
-    void screenshot(Path file) {
+    public void screenshot(Path file) {
         write(file, command("Page.captureScreenshot", "{\"format\":\"png\",\"captureBeyondViewport\":false}"));
     }
 
@@ -209,7 +209,7 @@ final class Chromium implements AutoCloseable {
         }
     }
 
-    static String quote(String s) {
+    public static String quote(String s) {
         StringBuilder sb = new StringBuilder("\"");
         for (char c : s.toCharArray()) {
             switch (c) {

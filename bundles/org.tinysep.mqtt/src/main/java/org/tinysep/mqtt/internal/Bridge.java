@@ -17,10 +17,10 @@ import org.tinysep.api.device.DeviceStatus;
 
 /**
  * The running bridge of one configuration. Everything happens on one executor thread ({@code tinysep-mqtt}):
- * reading state, the outbox, Paho's answers, commands. Nothing the platform calls waits for the broker: alert
- * changes and Paho callbacks are only queued here. Stopped by {@link #stop()} (orderly {@code offline}).
+ * reading state, the outbox, Paho's answers ({@link Session}), commands. Nothing the platform calls waits for the
+ * broker: alert changes and Paho callbacks are only queued here. Stopped by {@link #stop()} (orderly {@code offline}).
  */
-final class Bridge implements Link.Events {
+final class Bridge {
 
     private static final Logger LOG = LoggerFactory.getLogger(Bridge.class);
     private static final long DAY_SECONDS = 86_400;
@@ -37,15 +37,9 @@ final class Bridge implements Link.Events {
     private AlertFeed feed;
     private DeviceScan scan;
     private FlatState flat;
-    private Commands commands;
+    private Session session;
     private Link link;
-    private int connectedGeneration = -1;
-    private int backoffSeconds = 1;
-    private String lastProblem = "";
-    private long accepted;
-    private long rejected;
     private long lastSummary = Long.MIN_VALUE;
-    private String linkWords = "connecting";
 
     Bridge(BundleContext context, Settings settings, Supplier<Instant> clock,
             BiConsumer<DeviceStatus.State, String> status, Consumer<Figures> figures) {
@@ -82,7 +76,8 @@ final class Bridge implements Link.Events {
         scan = new DeviceScan(context, topics, clock);
         flat = new FlatState(context, topics, clock, settings.heartbeatSeconds());
         feed = new AlertFeed(context, executor, this::alertChanged, this::alertServiceAdded);
-        commands = new Commands(topics, scan, feed::service);
+        session = new Session(settings, executor, clock, status, figures, outbox,
+                new Commands(topics, scan, feed::service), scan);
         outbox.state(Message.state(topics.status(), "online"));
         if (topics.discovery()) {
             Discovery d = new Discovery(topics);
@@ -92,7 +87,7 @@ final class Bridge implements Link.Events {
             }
         }
         try {
-            link = new Link(settings, topics, executor, this);
+            link = new Link(settings, topics, executor, session);
         } catch (MqttException | RuntimeException e) {
             String why = "the MQTT client cannot be created for " + settings.brokerUrl() + ": " + Words.describe(e);
             LOG.warn("MQTT bridge not started: {}", why);
@@ -100,13 +95,13 @@ final class Bridge implements Link.Events {
             return;
         }
         LOG.info("MQTT bridge started: {}", settings.redacted());
-        status.accept(DeviceStatus.State.OFFLINE, "connecting to " + settings.brokerUrl());
-        link.connect();
+        session.start(link);
         executor.scheduleWithFixedDelay(guard(this::poll), 0, settings.pollSeconds(), TimeUnit.SECONDS);
         executor.scheduleWithFixedDelay(guard(this::heartbeat), 0, settings.heartbeatSeconds(), TimeUnit.SECONDS);
     }
 
-    private Runnable guard(Runnable r) {
+    /** @return the task, whose failure is logged in one line and does not stop the bridge's later runs */
+    static Runnable guard(Runnable r) {
         return () -> {
             try {
                 r.run();
@@ -119,8 +114,8 @@ final class Bridge implements Link.Events {
     private void poll() {
         scan.poll(outbox::state);
         flat.poll(outbox::state, feed.service(), alerts);
-        drain();
-        showFigures();
+        session.drain();
+        session.showFigures();
     }
 
     private void heartbeat() {
@@ -130,123 +125,26 @@ final class Bridge implements Link.Events {
             lastSummary = now;
             outbox.state(flat.summary(feed.service(), scan.devices(), scan.offline()));
         }
-        drain();
+        session.drain();
     }
 
     private void alertServiceAdded(org.tinysep.api.alert.AlertService service) {
         try {
             alerts.sync(service);
         } catch (IOException e) {
-            problem("alert messages cannot be written to the outbox " + settings.queueDir() + ": " + e.getMessage());
+            session.problem("alert messages cannot be written to the outbox " + settings.queueDir() + ": " + e.getMessage());
         }
-        drain();
+        session.drain();
     }
 
     private void alertChanged(org.tinysep.api.alert.Alert a) {
         try {
             alerts.changed(a);
         } catch (IOException e) {
-            problem("alert " + a.id() + " cannot be written to the outbox " + settings.queueDir() + ": "
+            session.problem("alert " + a.id() + " cannot be written to the outbox " + settings.queueDir() + ": "
                     + e.getMessage() + "; it is published when the disk works again");
         }
-        drain();
-    }
-
-    private void drain() {
-        if (link == null || connectedGeneration != link.generation()) {
-            return;
-        }
-        for (Message m : outbox.next()) {
-            link.publish(m);
-        }
-    }
-
-    @Override
-    public void connected(int generation) {
-        if (link == null || generation != link.generation()) {
-            return;
-        }
-        connectedGeneration = generation;
-        backoffSeconds = 1;
-        linkWords = "connected to " + settings.brokerUrl();
-        LOG.info("MQTT bridge connected to {} as {}", settings.brokerUrl(), settings.flatId());
-        lastProblem = "";
-        status.accept(DeviceStatus.State.ONLINE, linkWords);
-        outbox.connected();
-        drain();
-        showFigures();
-    }
-
-    @Override
-    public void failed(int generation, String why, boolean refused) {
-        if (link == null || generation != link.generation()) {
-            return;
-        }
-        offline(why, refused);
-    }
-
-    @Override
-    public void lost(int generation, String why) {
-        if (link == null || generation != link.generation()) {
-            return;
-        }
-        offline("connection lost: " + why, false);
-    }
-
-    private void offline(String why, boolean refused) {
-        connectedGeneration = -1;
-        int wait = backoffSeconds;
-        backoffSeconds = Math.min(30, backoffSeconds * 2);
-        linkWords = why + "; trying again in " + wait + " s";
-        if (!why.equals(lastProblem)) {
-            lastProblem = why;
-            LOG.warn("MQTT bridge: {}; trying again every {} s at most, alerts wait on disk", why, 30);
-        }
-        status.accept(refused ? DeviceStatus.State.ERROR : DeviceStatus.State.OFFLINE, linkWords);
-        executor.schedule(guard(link::connect), wait, TimeUnit.SECONDS);
-        showFigures();
-    }
-
-    @Override
-    public void published(int generation, Message m, boolean ok) {
-        try {
-            if (generation != connectedGeneration) {
-                if (ok && m.spooled()) {
-                    outbox.spool().delivered(m); // an answer of an earlier connection: still delivered
-                }
-                return;
-            }
-            outbox.done(m, ok);
-        } catch (IOException e) {
-            problem("the outbox " + settings.queueDir() + " cannot be updated: " + e.getMessage()
-                    + " (the message may be sent again)");
-        }
-        drain();
-    }
-
-    @Override
-    public void command(String topic, byte[] payload) {
-        Commands.Result r = commands.handle(topic, payload);
-        if (r.accepted()) {
-            accepted++;
-            LOG.info("MQTT command on {} carried out: {}", topic, r.reason());
-        } else {
-            rejected++;
-            LOG.info("MQTT command on {} refused: {}", topic, r.reason());
-        }
-        outbox.transientMessage(commands.result(topic, r, clock.get()));
-        drain();
-        showFigures();
-    }
-
-    private void problem(String why) {
-        LOG.warn("MQTT bridge: {}", why);
-        status.accept(DeviceStatus.State.ERROR, why);
-    }
-
-    private void showFigures() {
-        figures.accept(new Figures(linkWords, outbox.waitingAlerts(), outbox.waitingState(), outbox.delivered(),
-                accepted, rejected, outbox.droppedTransient(), scan.devices()));
+        session.drain();
     }
 
     /** Publishes {@code offline}, disconnects and stops the thread; waits at most a few seconds. */

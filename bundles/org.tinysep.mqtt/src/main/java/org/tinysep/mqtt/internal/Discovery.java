@@ -60,9 +60,12 @@ final class Discovery {
                 Json.object("topic", topics.deviceAvailability(uid))));
         c.put("availability_mode", "all");
         c.put("qos", 1);
-        c.put("device", Json.object("identifiers", List.of(topics.uniqueId(uid)), "name", name,
-                "manufacturer", "TinySEP", "model", kind.type, "suggested_area", room.isEmpty() ? null : room,
-                "via_device", topics.uniqueId("flat")));
+        Map<String, Object> device = Json.object("identifiers", List.of(topics.uniqueId(uid)), "name", name,
+                "manufacturer", "TinySEP", "model", kind.type, "via_device", topics.uniqueId("flat"));
+        if (!room.isEmpty()) { // Home Assistant refuses the whole config when suggested_area is null
+            device.put("suggested_area", room);
+        }
+        c.put("device", device);
         return Message.state(topics.discoveryConfig(kind.component, uid), Json.write(c));
     }
 

@@ -70,12 +70,24 @@ final class Link {
 
                 @Override
                 public void onFailure(IMqttToken token, Throwable e) {
-                    executor.execute(() -> events.failed(gen, Words.connectFailure(e), Words.refused(e)));
+                    executor.execute(() -> failed(gen, e));
                 }
             });
         } catch (MqttException | RuntimeException e) {
             executor.execute(() -> events.failed(gen, Words.connectFailure(e), Words.refused(e)));
         }
+    }
+
+    /** On the bridge's thread: a failure in words; for {@code ssl://} asks the broker for the TLS alert it hides. */
+    private void failed(int gen, Throwable e) {
+        if (settings.tls() && Words.mayHideTlsAlert(e)) {
+            java.util.Optional<String> refusal = TlsProbe.clientCertificateRefusal(settings);
+            if (refusal.isPresent()) {
+                events.failed(gen, refusal.get(), true);
+                return;
+            }
+        }
+        events.failed(gen, Words.connectFailure(e), Words.refused(e));
     }
 
     private void subscribe(int gen) {

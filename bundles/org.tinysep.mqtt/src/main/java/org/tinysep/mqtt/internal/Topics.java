@@ -28,61 +28,71 @@ final class Topics {
         return flatId;
     }
 
+    /** @return {@code P/F/<levels>}: the one place the flat's topics are built */
+    private String at(String... levels) {
+        return base + "/" + String.join("/", levels);
+    }
+
+    /** @return {@code P/F/device/<uid>/<leaf>} */
+    private String device(String uid, String leaf) {
+        return at("device", level(uid), leaf);
+    }
+
     String status() {
-        return base + "/status";
+        return at("status");
     }
 
     String platform() {
-        return base + "/platform";
+        return at("platform");
     }
 
     String summary() {
-        return base + "/summary";
+        return at("summary");
     }
 
     String occupancy() {
-        return base + "/occupancy";
+        return at("occupancy");
     }
 
     String deviceState(String uid) {
-        return base + "/device/" + level(uid) + "/state";
+        return device(uid, "state");
     }
 
     String deviceAvailability(String uid) {
-        return base + "/device/" + level(uid) + "/availability";
+        return device(uid, "availability");
     }
 
     String deviceHealth(String uid) {
-        return base + "/device/" + level(uid) + "/health";
+        return device(uid, "health");
     }
 
     String alert(String id) {
-        return base + "/alert/" + level(id);
+        return at("alert", level(id));
     }
 
     /** Additive to the contract (v1): one retained ON/OFF per alert kind, for Home Assistant's problem sensors. */
     String alertKind(String kind) {
-        return base + "/alertkind/" + level(kind);
+        return at("alertkind", level(kind));
     }
 
     String deviceCommand(String uid) {
-        return base + "/command/device/" + level(uid);
+        return at("command", "device", level(uid));
     }
 
     String deviceCommands() {
-        return base + "/command/device/+";
+        return at("command", "device", "+");
     }
 
     String alertAcks() {
-        return base + "/command/alert/+/ack";
+        return at("command", "alert", "+", "ack");
     }
 
     String commandPrefix() {
-        return base + "/command/";
+        return at("command", "");
     }
 
     String commandResult() {
-        return base + "/command/result";
+        return at("command", "result");
     }
 
     boolean discovery() {

@@ -9,6 +9,11 @@ import org.eclipse.paho.mqttv5.common.MqttException;
 /** Connection trouble in plain words, for the bridge device's status and one log line (never a stack trace). */
 final class Words {
 
+    /** TLS alerts a broker sends about the client's certificate (received fatal alert: …). */
+    private static final java.util.List<String> CLIENT_CERTIFICATE_ALERTS = java.util.List.of("unknown_ca",
+            "bad_certificate", "certificate_unknown", "unsupported_certificate", "certificate_expired",
+            "certificate_revoked", "access_denied");
+
     private Words() {
     }
 
@@ -40,11 +45,43 @@ final class Words {
         return "broker unreachable: " + describe(e);
     }
 
-    static String describe(Throwable e) {
+    /** @return whether Paho's failure may hide a TLS refusal that {@link TlsProbe} can name */
+    static boolean mayHideTlsAlert(Throwable e) {
+        Throwable root = root(e);
+        return !(root instanceof ConnectException || root instanceof UnknownHostException
+                || root instanceof SocketTimeoutException) && !(e instanceof MqttException m && refused(m));
+    }
+
+    /** @return whether a TLS failure's message is the broker's alert about the client certificate */
+    static boolean aboutClientCertificate(String message) {
+        return message.contains("certificate_required") || CLIENT_CERTIFICATE_ALERTS.stream().anyMatch(message::contains);
+    }
+
+    /** A TLS failure in words: which side refused what, and what to check. */
+    static String tls(String message) {
+        if (message.contains("certificate_required")) {
+            return "TLS failed: the broker requires a client certificate (" + message
+                    + "; set keyStore and keyStorePasswordFile)";
+        }
+        for (String alert : CLIENT_CERTIFICATE_ALERTS) {
+            if (message.contains(alert)) {
+                return "TLS failed: the broker refused this flat's client certificate (" + message
+                        + "; is it signed by a CA the broker trusts, and still valid?)";
+            }
+        }
+        return "TLS failed: " + message + " (is the broker's certificate in the trust store?)";
+    }
+
+    private static Throwable root(Throwable e) {
         Throwable root = e;
         while (root.getCause() != null && root.getCause() != root) {
             root = root.getCause();
         }
+        return root;
+    }
+
+    static String describe(Throwable e) {
+        Throwable root = root(e);
         if (root instanceof ConnectException) {
             return "connection refused (is the broker running, is the address right?)";
         }
@@ -55,7 +92,7 @@ final class Words {
             return "no answer within the timeout";
         }
         if (root instanceof SSLException || root instanceof java.security.cert.CertificateException) {
-            return "TLS failed: " + root.getMessage() + " (is the broker's certificate in the trust store?)";
+            return tls(String.valueOf(root.getMessage()));
         }
         String msg = root.getMessage() != null ? root.getMessage() : e.getMessage();
         return msg != null ? msg : root.getClass().getSimpleName();

@@ -4,68 +4,23 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Map;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.MqttTestClient;
 
 /** The Paho link against a real Mosquitto: connect, publish, commands in, trouble in words, reconnect. */
-class LinkTest {
-
-    @TempDir
-    Path var;
-
-    private final ExecutorService executor = Executors.newSingleThreadExecutor();
-    private final LinkedBlockingQueue<String> events = new LinkedBlockingQueue<>();
-
-    @AfterEach
-    void stop() {
-        executor.shutdownNow();
-    }
+class LinkTest extends LinkTestSupport {
 
     private Link link(String url) throws Exception {
         Settings s = Settings.parse(Map.of("brokerUrl", url, "flatId", "f1"), var);
         Topics topics = new Topics(s.topicPrefix(), s.flatId(), s.discoveryPrefix());
-        return new Link(s, topics, executor, new Link.Events() {
-            @Override
-            public void connected(int generation) {
-                events.add("connected");
-            }
-
-            @Override
-            public void failed(int generation, String why, boolean refused) {
-                events.add("failed: " + why);
-            }
-
-            @Override
-            public void lost(int generation, String why) {
-                events.add("lost: " + why);
-            }
-
-            @Override
-            public void published(int generation, Message m, boolean ok) {
-                events.add("published " + m.topic() + " " + ok);
-            }
-
-            @Override
-            public void command(String topic, byte[] payload) {
-                events.add("command " + topic + " " + new String(payload, StandardCharsets.UTF_8));
-            }
-        });
+        return new Link(s, topics, executor, events);
     }
 
     private String next() throws InterruptedException {
-        String e = events.poll(30, TimeUnit.SECONDS);
-        return e == null ? "(nothing within 30 s)" : e;
+        return events.next();
     }
 
     @Test

@@ -168,6 +168,8 @@ public final class MqttTestClient implements AutoCloseable {
         private Path trustStore;
         private String trustStorePassword = Mosquitto.TRUST_STORE_PASSWORD;
         private boolean cleanStart = true;
+        private Path keyStore;
+        private String keyStorePassword;
 
         private Builder(String url) {
             this.url = url;
@@ -187,6 +189,13 @@ public final class MqttTestClient implements AutoCloseable {
         public Builder trustStore(Path store, String password) {
             this.trustStore = store;
             this.trustStorePassword = password;
+            return this;
+        }
+
+        /** The client's certificate and key (PKCS12), for a broker that requires client certificates. */
+        public Builder keyStore(Path store, String password) {
+            this.keyStore = store;
+            this.keyStorePassword = password;
             return this;
         }
 
@@ -224,8 +233,19 @@ public final class MqttTestClient implements AutoCloseable {
             }
             TrustManagerFactory tmf = TrustManagerFactory.getInstance(TrustManagerFactory.getDefaultAlgorithm());
             tmf.init(trust);
+            javax.net.ssl.KeyManager[] keys = null;
+            if (keyStore != null) {
+                KeyStore ks = KeyStore.getInstance("PKCS12");
+                try (InputStream in = Files.newInputStream(keyStore)) {
+                    ks.load(in, keyStorePassword.toCharArray());
+                }
+                javax.net.ssl.KeyManagerFactory kmf = javax.net.ssl.KeyManagerFactory.getInstance(
+                        javax.net.ssl.KeyManagerFactory.getDefaultAlgorithm());
+                kmf.init(ks, keyStorePassword.toCharArray());
+                keys = kmf.getKeyManagers();
+            }
             SSLContext ssl = SSLContext.getInstance("TLS");
-            ssl.init(null, tmf.getTrustManagers(), null);
+            ssl.init(keys, tmf.getTrustManagers(), null);
             return ssl;
         }
     }

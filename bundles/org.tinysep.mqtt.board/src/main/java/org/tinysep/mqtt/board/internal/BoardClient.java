@@ -113,7 +113,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
         Arrays.fill(qos, 1);
         try {
             client.subscribe(filters, qos);
-            link = "connected to " + shown(serverURI) + " since " + Instant.now(clock);
+            link = "connected to " + shown(serverURI) + " since " + now();
             LOG.info("Central board: {}, following {}/+/…", link, settings.prefix());
         } catch (MqttException e) {
             link = "connected to " + shown(serverURI) + " but the subscription failed: " + e.getMessage();
@@ -126,9 +126,15 @@ final class BoardClient implements MqttCallback, AutoCloseable {
         intake.offer(topic, message.getPayload());
     }
 
+    /** @return the time now in words ("14:02"), in the board's zone */
+    private String now() {
+        Instant now = Instant.now(clock);
+        return Words.time(now, now, clock.getZone());
+    }
+
     @Override
     public void disconnected(MqttDisconnectResponse response) {
-        link = "lost the broker " + shown(settings.url()) + " at " + Instant.now(clock) + " ("
+        link = "lost the broker " + shown(settings.url()) + " at " + now() + " ("
                 + (response.getReasonString() == null ? "the connection closed" : response.getReasonString()) + "); trying again every " + RETRY_SECONDS + " s";
         LOG.warn("Central board: {}", link);
     }

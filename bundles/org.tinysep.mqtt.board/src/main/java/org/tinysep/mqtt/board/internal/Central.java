@@ -30,7 +30,7 @@ final class Central implements AutoCloseable {
         } else {
             client = new BoardClient(new BoardClient.Settings(c.brokerUrl(), c.clientId(), c.username(),
                     c.password().toCharArray(), c.trustStore(), c.trustStorePassword().toCharArray(), c.topicPrefix()),
-                    intake, clock);
+                    intake, clock.withZone(rules.zone())); // its zone: the times of its link words
             client.start();
         }
     }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class SecurityRulesTest {
@@ -15,6 +16,19 @@ class SecurityRulesTest {
         assertFalse(SecurityFilter.caregiverMay("POST", "/api/alerts/a-1/acknowledge/x"));
         assertFalse(SecurityFilter.caregiverMay("POST", "/api/rooms"));
         assertFalse(SecurityFilter.caregiverMay("POST", "/api/applications"));
+    }
+
+    @Test
+    void theCaregiverMayAcknowledgeOnTheCentralBoardAndNothingElseThere() {
+        String ack = "/board/api/flats/flat-17/alerts/5/acknowledge";
+        assertTrue(SecurityFilter.caregiverMay("POST", ack));
+        for (String method : List.of("PUT", "DELETE", "PATCH")) {
+            assertFalse(SecurityFilter.caregiverMay(method, ack), method);
+        }
+        for (String path : List.of(ack + "/x", "/board/api/flats/flat-17/alerts//acknowledge",
+                "/board/api/flats/a/b/alerts/5/acknowledge", "/board/api/flats", "/board/", "/x" + ack)) {
+            assertFalse(SecurityFilter.caregiverMay("POST", path), path);
+        }
     }
 
     @Test

@@ -1,0 +1,37 @@
+package org.tinysep.itests.mqtt;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.ops4j.pax.exam.Option;
+import org.tinysep.itests.web.WebTestSupport;
+
+/**
+ * The framework of the MQTT bridge's and the central board's tests: the web console, the alert service, Sensor
+ * Health, the bridge and the board (both idle until a test configures a broker), and the Mosquitto test support
+ * bundle (the real broker, certificates, a recording client).
+ */
+public abstract class MqttBridgeSupport extends WebTestSupport {
+
+    @Override
+    protected List<String> applications() {
+        List<String> all = new ArrayList<>(super.applications());
+        all.addAll(List.of("org.tinysep.alerts", "org.tinysep.sensorhealth", "org.tinysep.mqtt"));
+        return all;
+    }
+
+    @Override
+    protected List<Option> options() {
+        List<Option> o = super.options();
+        o.add(reactorBundle("org.tinysep.testsupport.mqtt", 5));
+        o.add(reactorBundle("org.tinysep.mqtt.board", 5));
+        return o;
+    }
+
+    @Override
+    protected Map<String, Map<String, String>> initialConfigurations() {
+        Map<String, Map<String, String>> configs = super.initialConfigurations();
+        configs.put("org.tinysep.alerts", Map.of("summaryTime", "", "timeZone", "UTC"));
+        return configs;
+    }
+}
