@@ -23,20 +23,22 @@ final class Fakes {
     private Fakes() {
     }
 
-    static class Base<L> extends FakeProvider<L> {
-        Base(String uid) {
+    /** A light: what the service asked of it goes to the journal ("uid on", "uid 40 %"). */
+    static class Light<L> extends FakeProvider<L> {
+        final List<String> journal;
+
+        Light(String uid, List<String> journal) {
             super(uid);
+            this.journal = journal;
         }
     }
 
     /** A simple light; {@link #confirm} plays the node's status report. */
-    static final class Simple extends Base<SimpleLightListener> implements SimpleLightProvider {
-        final List<String> journal;
+    static final class Simple extends Light<SimpleLightListener> implements SimpleLightProvider {
         Boolean on;
 
         Simple(String uid, List<String> journal) {
-            super(uid);
-            this.journal = journal;
+            super(uid, journal);
         }
 
         @Override
@@ -55,13 +57,11 @@ final class Fakes {
         }
     }
 
-    static final class Dimmable extends Base<DimmableLightListener> implements DimmableLightProvider {
-        final List<String> journal;
+    static final class Dimmable extends Light<DimmableLightListener> implements DimmableLightProvider {
         Percent level;
 
         Dimmable(String uid, List<String> journal) {
-            super(uid);
-            this.journal = journal;
+            super(uid, journal);
         }
 
         @Override
@@ -81,7 +81,7 @@ final class Fakes {
         }
     }
 
-    static final class Pet extends Base<PetMovementListener> implements PetMovementProvider {
+    static final class Pet extends FakeProvider<PetMovementListener> implements PetMovementProvider {
         Pet(String uid) {
             super(uid);
         }
