@@ -64,7 +64,7 @@ public final class BackupStoreService implements BackupStore {
         // not after them; a synchronous listener is told before any bundle stops
         this.frameworkStopping = e -> {
             if (e.getType() == org.osgi.framework.BundleEvent.STOPPING && e.getBundle().getBundleId() == 0) {
-                writer.flush();
+                frameworkStopping();
             }
         };
         context.addBundleListener(frameworkStopping);
@@ -72,6 +72,8 @@ public final class BackupStoreService implements BackupStore {
     }
 
     private org.osgi.framework.SynchronousBundleListener frameworkStopping;
+    /** System.nanoTime() when the framework began to stop; 0 before. */
+    private volatile long stoppingSince;
     private BundleContext context;
 
     private static long positive(long value, long otherwise) {
@@ -99,6 +101,19 @@ public final class BackupStoreService implements BackupStore {
         this.executor = ex;
         this.writer = new BackupWriter(files, written, executor, writeDelayMillis, this::writeFailed);
         load();
+    }
+
+    /**
+     * The framework begins to stop (before any bundle stops): the backlog is written at once, and the stop's time
+     * limit ({@code stopSaveSeconds}) counts from now, the drivers' own stop included, so that the whole stop stays
+     * within the launcher's 30 s and systemd's stop timeout (issue 14: 10,000 devices took 38-60 s, the limit then
+     * counted only from this store's own deactivation). Backups never saved before go first ({@link BackupWriter}).
+     */
+    void frameworkStopping() {
+        long now = System.nanoTime();
+        stoppingSince = now == 0 ? 1 : now;
+        writer.stopBy(stoppingSince + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        writer.flush();
     }
 
     /** Reads the folder again (after {@code tinysep:restore} replaced it); unsaved changes are written first. */
@@ -130,7 +145,8 @@ public final class BackupStoreService implements BackupStore {
     /**
      * An orderly stop saves every backup still queued (a burst of new devices can leave the writer thousands behind):
      * at once, without the write delay, on this thread after the writer's current batch; said in the log and the
-     * event log with the count, bounded by {@code stopSaveSeconds} (a disk that hangs must not hang the stop).
+     * event log with the count, bounded by {@code stopSaveSeconds} from the start of the framework's stop (a disk
+     * that hangs must not hang the stop), never-saved backups first.
      */
     @Deactivate
     void deactivate() throws InterruptedException {
@@ -146,7 +162,8 @@ public final class BackupStoreService implements BackupStore {
         if (backlog > 0) {
             say(String.format("saving %,d device backup(s) before stopping…", backlog));
         }
-        writer.stopBy(t0 + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        long since = stoppingSince;
+        writer.stopBy((since != 0 ? since : t0) + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
         executor.shutdown(); // the delayed run is dropped (policy set at construction): this thread writes now
         writer.drain(); // after the writer thread's current batch, which also keeps to the limit
         int left = writer.notSaved();

@@ -9,6 +9,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
+import java.util.function.Function;
+import java.util.function.Predicate;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.device.support.AtomicBatch;
 
@@ -130,7 +132,7 @@ final class BackupWriter {
      */
     private void write(List<Op> ops) {
         Map<Path, Op> byFile = new LinkedHashMap<>();
-        for (Op op : ops) {
+        for (Op op : stopping ? neverSavedFirst(ops, Op::uid, written::containsKey) : ops) {
             if (stopping && System.nanoTime() - stopBy > 0) {
                 if (!op.uid().equals(FLUSH_MARKER)) {
                     notSaved++;
@@ -167,6 +169,23 @@ final class BackupWriter {
             }
         });
         ops.forEach(op -> op.done().forEach(f -> f.complete(null)));
+    }
+
+    /**
+     * While the store stops against its time limit, backups with no file on disk yet (devices created in a burst
+     * just before the stop) are written before refreshes of ones already saved: a refresh not written loses only
+     * the last few seconds of state (the older file stays), a new device not written would be lost.
+     *
+     * @return the same operations, those whose UID has no file yet first, each group in its order
+     */
+    static <T> List<T> neverSavedFirst(List<T> ops, Function<T, String> uid, Predicate<String> onDisk) {
+        List<T> out = new ArrayList<>(ops.size());
+        List<T> later = new ArrayList<>();
+        for (T op : ops) {
+            (onDisk.test(uid.apply(op)) ? later : out).add(op);
+        }
+        out.addAll(later);
+        return out;
     }
 
     private void failed(Op op, Exception e) {
