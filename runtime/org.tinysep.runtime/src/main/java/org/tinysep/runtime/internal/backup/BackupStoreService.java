@@ -104,15 +104,16 @@ public final class BackupStoreService implements BackupStore {
     }
 
     /**
-     * The framework begins to stop (before any bundle stops): the backlog is written at once, and the stop's time
-     * limit ({@code stopSaveSeconds}) counts from now, the drivers' own stop included, so that the whole stop stays
-     * within the launcher's 30 s and systemd's stop timeout (issue 14: 10,000 devices took 38-60 s, the limit then
-     * counted only from this store's own deactivation). Backups never saved before go first ({@link BackupWriter}).
+     * The framework begins to stop (before any bundle stops): the backlog is written at once, and for refreshes of
+     * backups already on disk (a device's last state as it stops) the stop's time limit ({@code stopSaveSeconds})
+     * counts from now, the drivers' own stop included (issue 14: 10,000 devices took 38-60 s to stop, the limit then
+     * counted only from this store's own deactivation). Backups with no file yet (devices just created) go first and
+     * keep the limit from the store's deactivation: a device is never lost to a slow stop, a refresh may be.
      */
     void frameworkStopping() {
         long now = System.nanoTime();
         stoppingSince = now == 0 ? 1 : now;
-        writer.stopBy(stoppingSince + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        writer.stopBy(stoppingSince + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis), 0);
         writer.flush();
     }
 
@@ -163,9 +164,15 @@ public final class BackupStoreService implements BackupStore {
             say(String.format("saving %,d device backup(s) before stopping…", backlog));
         }
         long since = stoppingSince;
-        writer.stopBy((since != 0 ? since : t0) + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        long limit = TimeUnit.MILLISECONDS.toNanos(stopSaveMillis);
+        writer.stopBy((since != 0 ? since : t0) + limit, t0 + limit);
         executor.shutdown(); // the delayed run is dropped (policy set at construction): this thread writes now
         writer.drain(); // after the writer thread's current batch, which also keeps to the limit
+        int stale = writer.notRefreshed();
+        if (stale > 0) {
+            say(String.format("the last state of %,d device(s) was not saved within %d s of the stop"
+                    + " (stopSaveSeconds): their previous backups stay", stale, stopSaveMillis / 1000));
+        }
         int left = writer.notSaved();
         if (left > 0) {
             String msg = String.format("stopping with %,d device backup(s) not saved: the disk took longer than"
@@ -173,7 +180,7 @@ public final class BackupStoreService implements BackupStore {
                     left, stopSaveMillis / 1000);
             LOG.error("Backup store: {}", msg);
             events.record(EventKind.PROBLEM, ORIGIN, msg);
-        } else if (backlog > 0) {
+        } else if (backlog > 0 && stale == 0) {
             say(String.format("saved %,d device backup(s) in %.1f s before stopping", backlog,
                     (System.nanoTime() - t0) / 1e9));
         }

@@ -36,11 +36,16 @@ final class BackupWriter {
     private static final String FLUSH_MARKER = "\u0000flush-marker";
     /** Operations in the batch being written (for {@link #backlog}). */
     private volatile int inFlight;
-    /** System.nanoTime() after which a stopping store writes no more (0: not stopping). */
+    /** System.nanoTime() after which a stopping store writes no more refreshes of backups already on disk. */
     private volatile long stopBy;
+    /** System.nanoTime() after which it writes no more backups that have no file yet; valid once newLimited. */
+    private volatile long stopByNew;
+    private volatile boolean newLimited;
     private volatile boolean stopping;
-    /** Saves dropped because the stop's limit passed. */
+    /** Saves of backups with no file yet dropped because the stop's limit passed. */
     private volatile int notSaved;
+    /** Refreshes of backups on disk dropped because the stop's limit passed (their older file stays). */
+    private volatile int notRefreshed;
     /** Serialises drains (the executor's, and the caller's on stop or reload), so writes of one UID keep order. */
     private final Object writing = new Object();
     /** The group commit of each drain; used under {@link #writing}. */
@@ -110,15 +115,34 @@ final class BackupWriter {
         }
     }
 
-    /** The store is stopping: operations not begun by {@code nanoTime} are dropped (and counted). */
-    void stopBy(long nanoTime) {
-        stopBy = nanoTime;
+    /**
+     * The store is stopping: refreshes of backups already on disk not begun by {@code refreshBy} are dropped (their
+     * older file stays), and so are saves of backups with no file yet not begun by {@code newBy} (0: no limit yet);
+     * each counted.
+     */
+    void stopBy(long refreshBy, long newBy) {
+        stopBy = refreshBy;
+        stopByNew = newBy;
+        newLimited = newBy != 0;
         stopping = true;
     }
 
-    /** @return saves dropped because the stop's limit passed */
+    /** @return saves of backups with no file yet dropped because the stop's limit passed */
     int notSaved() {
         return notSaved;
+    }
+
+    /** @return refreshes of saved backups dropped because the stop's limit passed */
+    int notRefreshed() {
+        return notRefreshed;
+    }
+
+    private boolean late(String uid) {
+        if (!stopping) {
+            return false;
+        }
+        long now = System.nanoTime();
+        return written.containsKey(uid) ? now - stopBy > 0 : newLimited && now - stopByNew > 0;
     }
 
     /** @return saves and deletes not yet on disk: queued, or in the batch being written */
@@ -133,8 +157,12 @@ final class BackupWriter {
     private void write(List<Op> ops) {
         Map<Path, Op> byFile = new LinkedHashMap<>();
         for (Op op : stopping ? neverSavedFirst(ops, Op::uid, written::containsKey) : ops) {
-            if (stopping && System.nanoTime() - stopBy > 0) {
-                if (!op.uid().equals(FLUSH_MARKER)) {
+            if (late(op.uid())) {
+                if (op.uid().equals(FLUSH_MARKER)) {
+                    // nothing to count
+                } else if (written.containsKey(op.uid())) {
+                    notRefreshed++;
+                } else {
                     notSaved++;
                 }
                 IllegalStateException late = new IllegalStateException("not saved: the stop's time limit passed");
