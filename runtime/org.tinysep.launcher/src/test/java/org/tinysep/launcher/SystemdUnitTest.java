@@ -31,6 +31,17 @@ class SystemdUnitTest {
     }
 
     @Test
+    void systemdWaitsLongerThanTheLauncherWaitsForTheFrameworkToStop() throws Exception {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(?m)^TimeoutStopSec=(\\d+)$")
+                .matcher(Files.readString(UNIT));
+        assertTrue(m.find(), "TimeoutStopSec set");
+        long systemd = Long.parseLong(m.group(1));
+        assertTrue(systemd >= Main.STOP_TIMEOUT.toSeconds() + 10, "systemd " + systemd + " s, launcher "
+                + Main.STOP_TIMEOUT.toSeconds() + " s: a slow stop (backups being saved) is not killed mid-way");
+        assertTrue(Main.STOP_TIMEOUT.toSeconds() >= 25 + 30, "the backup store's 25 s after the drivers' stop");
+    }
+
+    @Test
     void systemdAcceptsTheUnit() throws Exception {
         if (!Files.isExecutable(Path.of("/usr/bin/systemd-analyze"))) {
             return;

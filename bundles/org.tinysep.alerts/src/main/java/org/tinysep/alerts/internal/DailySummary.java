@@ -3,8 +3,11 @@ package org.tinysep.alerts.internal;
 import java.time.Instant;
 import java.time.LocalDate;
 import java.time.ZonedDateTime;
+import java.util.ArrayList;
 import java.util.List;
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.health.SensorHealth;
@@ -20,14 +23,13 @@ import org.tinysep.api.device.DeviceStatus;
 final class DailySummary implements AutoCloseable {
 
     private final AlertSettings settings;
-    private final ServiceTracker<Device, Device> devices;
+    private final BundleContext context;
     private final ServiceTracker<SensorHealthProvider, SensorHealthProvider> health;
     private final SummaryText text;
 
     DailySummary(BundleContext context, AlertSettings settings, java.nio.file.Path stateFolder) {
         this.settings = settings;
-        this.devices = new ServiceTracker<>(context, Device.class, null);
-        this.devices.open();
+        this.context = context; // devices are read once a day, not held (issue 14: a stop of 10,000 devices)
         this.health = new ServiceTracker<>(context, SensorHealthProvider.class, null);
         this.health.open();
         this.text = new SummaryText(new Words(settings.zone()), stateFolder);
@@ -54,9 +56,7 @@ final class DailySummary implements AutoCloseable {
                 || (book.lastSummary() != null && !book.lastSummary().isBefore(today))) {
             return;
         }
-        List<Device> offline = devices.getTracked().values().stream()
-                .filter(d -> d.status().state() == DeviceStatus.State.OFFLINE
-                        || d.status().state() == DeviceStatus.State.ERROR).toList();
+        List<Device> offline = offlineDevices();
         ZonedDateTime due = today.atTime(settings.summaryTime()).atZone(settings.zone());
         boolean late = local.isAfter(due.plusMinutes(5));
         var mail = notifier.sendPlain(text.subject(today, book.open().size(), offline.size()),
@@ -72,7 +72,29 @@ final class DailySummary implements AutoCloseable {
     @Override
     public void close() {
         health.close();
-        devices.close();
+    }
+
+    /** @return the devices OFFLINE or in ERROR now; each service is got for the check only */
+    private List<Device> offlineDevices() {
+        List<Device> out = new ArrayList<>();
+        try {
+            for (ServiceReference<Device> ref : context.getServiceReferences(Device.class, null)) {
+                Device d = context.getService(ref);
+                if (d != null) {
+                    try {
+                        DeviceStatus.State s = d.status().state();
+                        if (s == DeviceStatus.State.OFFLINE || s == DeviceStatus.State.ERROR) {
+                            out.add(d);
+                        }
+                    } catch (RuntimeException gone) { // a device going away: not listed
+                    } finally {
+                        context.ungetService(ref);
+                    }
+                }
+            }
+        } catch (InvalidSyntaxException | IllegalStateException e) { // no filter; or the bundle is stopping
+        }
+        return out;
     }
 
     /** @return Sensor Health's nodes with a low battery, or null when Sensor Health is not running */

@@ -1,9 +1,9 @@
 package org.tinysep.sensorhealth.internal;
 
 import java.time.Instant;
-import java.util.HashSet;
+import java.util.Comparator;
 import java.util.List;
-import java.util.Set;
+import java.util.function.Function;
 import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.tinysep.api.device.Connection;
@@ -31,27 +31,26 @@ final class SensorHealthDevice extends AbstractDevice implements SensorHealthPro
 
     static final String TYPE = "SensorHealth";
 
-    private final NodeView view;
-    private final Notices notices;
+    private final NodeIndex index;
+    private final Function<String, String> roomName;
     private final NoticeWords words;
     private final Supplier<MailManagerProvider> mail;
     private final boolean mailNotices;
     private final long noticeAfterMinutes;
     private final Listeners<SensorHealthListener> listeners;
-    private volatile List<SensorHealth> sensors = List.of();
     private volatile List<UnmonitoredRoom> unmonitored = List.of();
     private volatile long sent;
     private volatile String lastNotice = "";
 
-    SensorHealthDevice(DriverContext context, NodeView view, NoticeWords words, Supplier<MailManagerProvider> mail,
-            SensorHealthConfig config) {
+    SensorHealthDevice(DriverContext context, NodeIndex index, Function<String, String> roomName, NoticeWords words,
+            Supplier<MailManagerProvider> mail, SensorHealthConfig config) {
         super(context, Uids.of(context.driverName(), "sensors"), TYPE, "Sensor health");
-        this.view = view;
+        this.index = index;
+        this.roomName = roomName;
         this.words = words;
         this.mail = mail;
         this.mailNotices = config.mailNotices();
         this.noticeAfterMinutes = Math.max(0, config.noticeAfterMinutes());
-        this.notices = new Notices(java.time.Duration.ofMinutes(noticeAfterMinutes));
         this.listeners = new Listeners<>(uid());
         publish(this, SensorHealthProvider.class);
     }
@@ -61,42 +60,41 @@ final class SensorHealthDevice extends AbstractDevice implements SensorHealthPro
         return false;
     }
 
-    /** One platform second. */
+    /** One platform second: only the nodes whose state or place changed are looked at again ({@link NodeIndex}). */
     void tick(Instant now) {
-        List<SensorHealth> all = view.sensors();
-        sensors = all;
-        rooms(Unmonitored.of(all), now);
-        List<Notice> due = notices.due(all, now);
-        if (!due.isEmpty()) {
-            send(due);
+        NodeIndex.Changes changes = index.tick(now);
+        unmonitored = index.rooms().unmonitored().stream().map(this::named)
+                .sorted(Comparator.comparing(UnmonitoredRoom::roomName)).toList();
+        rooms(changes.rooms(), now);
+        if (!changes.notices().isEmpty()) {
+            send(changes.notices());
         }
-        long offline = all.stream().filter(s -> !s.node().online()).count();
-        status(DeviceStatus.State.ONLINE, offline == 0 ? "all " + all.size() + " sensors heard"
-                : offline + " of " + all.size() + " sensors offline" + (unmonitored.isEmpty() ? ""
+        int all = index.known();
+        int offline = index.offline();
+        status(DeviceStatus.State.ONLINE, offline == 0 ? "all " + all + " sensors heard"
+                : offline + " of " + all + " sensors offline" + (unmonitored.isEmpty() ? ""
                         : "; unmonitored: " + unmonitored.stream().map(UnmonitoredRoom::roomName)
                                 .collect(Collectors.joining(", "))));
     }
 
-    private void rooms(List<UnmonitoredRoom> now, Instant at) {
-        Set<String> before = new HashSet<>();
-        unmonitored.forEach(r -> before.add(r.roomUid()));
-        Set<String> after = new HashSet<>();
-        now.forEach(r -> after.add(r.roomUid()));
-        List<UnmonitoredRoom> old = unmonitored;
-        unmonitored = List.copyOf(now);
-        for (UnmonitoredRoom r : now) {
-            if (!before.contains(r.roomUid())) {
-                context.reporter().event(EventKind.PROBLEM, uid(), "room " + r.roomName() + " is unmonitored: none "
-                        + "of its sensors has been heard since " + HealthWords.time(r.since())
-                        + "; inactivity there cannot be seen until one reports again");
-                listeners.fire(l -> l.roomUnmonitored(this, r, at));
-            }
+    /** The room with its current name (the house may have renamed it since it became unmonitored). */
+    private UnmonitoredRoom named(UnmonitoredRoom r) {
+        String name = roomName.apply(r.roomUid());
+        return name.equals(r.roomName()) ? r : new UnmonitoredRoom(r.roomUid(), name, r.since(), r.deviceUids());
+    }
+
+    private void rooms(RoomWatch.Changes changes, Instant at) {
+        for (UnmonitoredRoom u : changes.unmonitored()) {
+            UnmonitoredRoom r = named(u);
+            context.reporter().event(EventKind.PROBLEM, uid(), "room " + r.roomName() + " is unmonitored: none "
+                    + "of its sensors has been heard since " + HealthWords.time(r.since())
+                    + "; inactivity there cannot be seen until one reports again");
+            listeners.fire(l -> l.roomUnmonitored(this, r, at));
         }
-        for (UnmonitoredRoom r : old) {
-            if (!after.contains(r.roomUid())) {
-                event("room " + r.roomName() + " is monitored again: a sensor there reports again");
-                listeners.fire(l -> l.roomMonitoredAgain(this, r.roomUid(), at));
-            }
+        for (UnmonitoredRoom u : changes.monitoredAgain()) {
+            UnmonitoredRoom r = named(u);
+            event("room " + r.roomName() + " is monitored again: a sensor there reports again");
+            listeners.fire(l -> l.roomMonitoredAgain(this, r.roomUid(), at));
         }
     }
 
@@ -115,7 +113,7 @@ final class SensorHealthDevice extends AbstractDevice implements SensorHealthPro
 
     @Override
     public List<SensorHealth> sensors() {
-        return sensors;
+        return index.sensors();
     }
 
     @Override
@@ -135,7 +133,7 @@ final class SensorHealthDevice extends AbstractDevice implements SensorHealthPro
 
     @Override
     protected List<Parameter> moreParameters() {
-        List<SensorHealth> all = sensors;
+        List<SensorHealth> all = index.sensors();
         return List.of(
                 Parameter.readOnly("sensors", all.size(), "nodes watched"),
                 Parameter.readOnly("offline", list(all.stream().filter(s -> !s.node().online()).toList()),

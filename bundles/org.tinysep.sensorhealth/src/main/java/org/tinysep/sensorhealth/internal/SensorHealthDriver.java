@@ -1,7 +1,9 @@
 package org.tinysep.sensorhealth.internal;
 
 import java.time.DateTimeException;
+import java.time.Duration;
 import java.time.ZoneId;
+import java.util.function.Function;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -10,8 +12,10 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.Room;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.RoomDirectory;
 
 /**
  * Sensor Health (issue 12): creates its single device at once. It watches every bus device's node health, tells
@@ -36,11 +40,15 @@ public final class SensorHealthDriver extends AbstractDriver {
     @Activate
     void activate(BundleContext bundleContext, SensorHealthConfig config) {
         start(bundleContext);
-        view = new NodeView(bundleContext, context().rooms());
+        RoomDirectory rooms = context().rooms();
+        Function<String, String> roomName = uid -> rooms.room(uid).map(Room::name).orElse(uid);
+        NodeIndex index = new NodeIndex(new Notices(Duration.ofMinutes(Math.max(0, config.noticeAfterMinutes()))),
+                roomName);
+        view = new NodeView(bundleContext, index);
         mail = new ServiceTracker<>(bundleContext, MailManagerProvider.class, null);
         mail.open();
-        SensorHealthDevice device = addDevice(new SensorHealthDevice(context(), view, new NoticeWords(zone(config)),
-                mail::getService, config));
+        SensorHealthDevice device = addDevice(new SensorHealthDevice(context(), index, roomName,
+                new NoticeWords(zone(config)), mail::getService, config));
         ticker = new PlatformTicker(bundleContext, "sensor-health", device::tick);
     }
 

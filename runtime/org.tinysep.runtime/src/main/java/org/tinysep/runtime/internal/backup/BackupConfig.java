@@ -17,8 +17,9 @@ public @interface BackupConfig {
     long writeDelayMillis() default 500;
 
     @AttributeDefinition(description = "An orderly stop saves every backup still queued first (a burst of new devices "
-            + "can leave the writer thousands behind), for at most this many seconds; kept below the launcher's 30 s "
-            + "stop limit")
+            + "can leave the writer thousands behind): a device's last state until this many seconds after the framework "
+            + "began to stop, backups with no file yet this long after the store's own stop; kept below the launcher's "
+            + "60 s stop limit")
     int stopSaveSeconds() default 25;
 
     @AttributeDefinition(description = "tinysep:restore refuses an archive that expands to more than this many bytes "

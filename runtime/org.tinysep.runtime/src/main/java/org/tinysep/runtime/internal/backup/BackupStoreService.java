@@ -64,7 +64,7 @@ public final class BackupStoreService implements BackupStore {
         // not after them; a synchronous listener is told before any bundle stops
         this.frameworkStopping = e -> {
             if (e.getType() == org.osgi.framework.BundleEvent.STOPPING && e.getBundle().getBundleId() == 0) {
-                writer.flush();
+                frameworkStopping();
             }
         };
         context.addBundleListener(frameworkStopping);
@@ -72,6 +72,8 @@ public final class BackupStoreService implements BackupStore {
     }
 
     private org.osgi.framework.SynchronousBundleListener frameworkStopping;
+    /** System.nanoTime() when the framework began to stop; 0 before. */
+    private volatile long stoppingSince;
     private BundleContext context;
 
     private static long positive(long value, long otherwise) {
@@ -99,6 +101,20 @@ public final class BackupStoreService implements BackupStore {
         this.executor = ex;
         this.writer = new BackupWriter(files, written, executor, writeDelayMillis, this::writeFailed);
         load();
+    }
+
+    /**
+     * The framework begins to stop (before any bundle stops): the backlog is written at once, and for refreshes of
+     * backups already on disk (a device's last state as it stops) the stop's time limit ({@code stopSaveSeconds})
+     * counts from now, the drivers' own stop included (issue 14: 10,000 devices took 38-60 s to stop, the limit then
+     * counted only from this store's own deactivation). Backups with no file yet (devices just created) go first and
+     * keep the limit from the store's deactivation: a device is never lost to a slow stop, a refresh may be.
+     */
+    void frameworkStopping() {
+        long now = System.nanoTime();
+        stoppingSince = now == 0 ? 1 : now;
+        writer.stopBy(stoppingSince + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis), 0);
+        writer.flush();
     }
 
     /** Reads the folder again (after {@code tinysep:restore} replaced it); unsaved changes are written first. */
@@ -130,7 +146,8 @@ public final class BackupStoreService implements BackupStore {
     /**
      * An orderly stop saves every backup still queued (a burst of new devices can leave the writer thousands behind):
      * at once, without the write delay, on this thread after the writer's current batch; said in the log and the
-     * event log with the count, bounded by {@code stopSaveSeconds} (a disk that hangs must not hang the stop).
+     * event log with the count, bounded by {@code stopSaveSeconds} from the start of the framework's stop (a disk
+     * that hangs must not hang the stop), never-saved backups first.
      */
     @Deactivate
     void deactivate() throws InterruptedException {
@@ -146,9 +163,16 @@ public final class BackupStoreService implements BackupStore {
         if (backlog > 0) {
             say(String.format("saving %,d device backup(s) before stopping…", backlog));
         }
-        writer.stopBy(t0 + TimeUnit.MILLISECONDS.toNanos(stopSaveMillis));
+        long since = stoppingSince;
+        long limit = TimeUnit.MILLISECONDS.toNanos(stopSaveMillis);
+        writer.stopBy((since != 0 ? since : t0) + limit, t0 + limit);
         executor.shutdown(); // the delayed run is dropped (policy set at construction): this thread writes now
         writer.drain(); // after the writer thread's current batch, which also keeps to the limit
+        int stale = writer.notRefreshed();
+        if (stale > 0) {
+            say(String.format("the last state of %,d device(s) was not saved within %d s of the stop"
+                    + " (stopSaveSeconds): their previous backups stay", stale, stopSaveMillis / 1000));
+        }
         int left = writer.notSaved();
         if (left > 0) {
             String msg = String.format("stopping with %,d device backup(s) not saved: the disk took longer than"
@@ -156,7 +180,7 @@ public final class BackupStoreService implements BackupStore {
                     left, stopSaveMillis / 1000);
             LOG.error("Backup store: {}", msg);
             events.record(EventKind.PROBLEM, ORIGIN, msg);
-        } else if (backlog > 0) {
+        } else if (backlog > 0 && stale == 0) {
             say(String.format("saved %,d device backup(s) in %.1f s before stopping", backlog,
                     (System.nanoTime() - t0) / 1e9));
         }

@@ -9,6 +9,8 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BiConsumer;
+import java.util.function.Function;
+import java.util.function.Predicate;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.device.support.AtomicBatch;
 
@@ -34,11 +36,16 @@ final class BackupWriter {
     private static final String FLUSH_MARKER = "\u0000flush-marker";
     /** Operations in the batch being written (for {@link #backlog}). */
     private volatile int inFlight;
-    /** System.nanoTime() after which a stopping store writes no more (0: not stopping). */
+    /** System.nanoTime() after which a stopping store writes no more refreshes of backups already on disk. */
     private volatile long stopBy;
+    /** System.nanoTime() after which it writes no more backups that have no file yet; valid once newLimited. */
+    private volatile long stopByNew;
+    private volatile boolean newLimited;
     private volatile boolean stopping;
-    /** Saves dropped because the stop's limit passed. */
+    /** Saves of backups with no file yet dropped because the stop's limit passed. */
     private volatile int notSaved;
+    /** Refreshes of backups on disk dropped because the stop's limit passed (their older file stays). */
+    private volatile int notRefreshed;
     /** Serialises drains (the executor's, and the caller's on stop or reload), so writes of one UID keep order. */
     private final Object writing = new Object();
     /** The group commit of each drain; used under {@link #writing}. */
@@ -108,15 +115,34 @@ final class BackupWriter {
         }
     }
 
-    /** The store is stopping: operations not begun by {@code nanoTime} are dropped (and counted). */
-    void stopBy(long nanoTime) {
-        stopBy = nanoTime;
+    /**
+     * The store is stopping: refreshes of backups already on disk not begun by {@code refreshBy} are dropped (their
+     * older file stays), and so are saves of backups with no file yet not begun by {@code newBy} (0: no limit yet);
+     * each counted.
+     */
+    void stopBy(long refreshBy, long newBy) {
+        stopBy = refreshBy;
+        stopByNew = newBy;
+        newLimited = newBy != 0;
         stopping = true;
     }
 
-    /** @return saves dropped because the stop's limit passed */
+    /** @return saves of backups with no file yet dropped because the stop's limit passed */
     int notSaved() {
         return notSaved;
+    }
+
+    /** @return refreshes of saved backups dropped because the stop's limit passed */
+    int notRefreshed() {
+        return notRefreshed;
+    }
+
+    private boolean late(String uid) {
+        if (!stopping) {
+            return false;
+        }
+        long now = System.nanoTime();
+        return written.containsKey(uid) ? now - stopBy > 0 : newLimited && now - stopByNew > 0;
     }
 
     /** @return saves and deletes not yet on disk: queued, or in the batch being written */
@@ -130,9 +156,13 @@ final class BackupWriter {
      */
     private void write(List<Op> ops) {
         Map<Path, Op> byFile = new LinkedHashMap<>();
-        for (Op op : ops) {
-            if (stopping && System.nanoTime() - stopBy > 0) {
-                if (!op.uid().equals(FLUSH_MARKER)) {
+        for (Op op : stopping ? neverSavedFirst(ops, Op::uid, written::containsKey) : ops) {
+            if (late(op.uid())) {
+                if (op.uid().equals(FLUSH_MARKER)) {
+                    // nothing to count
+                } else if (written.containsKey(op.uid())) {
+                    notRefreshed++;
+                } else {
                     notSaved++;
                 }
                 IllegalStateException late = new IllegalStateException("not saved: the stop's time limit passed");
@@ -167,6 +197,23 @@ final class BackupWriter {
             }
         });
         ops.forEach(op -> op.done().forEach(f -> f.complete(null)));
+    }
+
+    /**
+     * While the store stops against its time limit, backups with no file on disk yet (devices created in a burst
+     * just before the stop) are written before refreshes of ones already saved: a refresh not written loses only
+     * the last few seconds of state (the older file stays), a new device not written would be lost.
+     *
+     * @return the same operations, those whose UID has no file yet first, each group in its order
+     */
+    static <T> List<T> neverSavedFirst(List<T> ops, Function<T, String> uid, Predicate<String> onDisk) {
+        List<T> out = new ArrayList<>(ops.size());
+        List<T> later = new ArrayList<>();
+        for (T op : ops) {
+            (onDisk.test(uid.apply(op)) ? later : out).add(op);
+        }
+        out.addAll(later);
+        return out;
     }
 
     private void failed(Op op, Exception e) {

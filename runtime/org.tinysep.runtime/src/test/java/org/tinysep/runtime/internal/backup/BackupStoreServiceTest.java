@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
@@ -102,6 +103,42 @@ class BackupStoreServiceTest {
         try (Stream<Path> files = Files.walk(root)) {
             assertEquals(List.of(), files.filter(Files::isRegularFile).toList(), "no file, whole or partial");
         }
+    }
+
+    @Test
+    void theStopLimitForRefreshesCountsFromTheStartOfTheFrameworkStopAndNewDevicesAreStillSaved() throws Exception {
+        // issue 14: the drivers of 10,000 devices took ~26 s to stop, then the store took its full 25 s for their
+        // last states: 38-60 s in all, past the launcher's 30 s and systemd's stop timeout
+        BackupStoreService store = new BackupStoreService(root, 600_000, events);
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        for (int i = 0; i < 10; i++) {
+            store.save(device("u-" + i, "Node " + i, "", t));
+        }
+        assertTrue(store.flush(Duration.ofSeconds(30)), "on disk before the stop");
+        store.stopSaveMillisForTest(200);
+        long stopping = System.nanoTime();
+        store.frameworkStopping();
+        while (System.nanoTime() - stopping < 400_000_000L) { // the drivers are still stopping past the limit
+            Thread.sleep(20);
+        }
+        for (int i = 0; i < 10; i++) {
+            store.save(device("u-" + i, "Node " + i + " last state", "", t.plusSeconds(60))); // as each stops
+            store.save(device("new-" + i, "New " + i, "", t.plusSeconds(60))); // created just before the stop
+        }
+        store.deactivate();
+        assertEquals(List.of(), problems, "no device is lost");
+        assertTrue(statuses.contains("the last state of 10 device(s) was not saved within 0 s of the stop"
+                + " (stopSaveSeconds): their previous backups stay"), statuses.toString());
+        BackupStoreService again = new BackupStoreService(root, 0, events);
+        assertEquals(20, again.all().size(), "the 10 new devices saved, the 10 others from before");
+        assertEquals("Node 3", again.find("u-3").orElseThrow().name(), "the previous backup stays");
+    }
+
+    @Test
+    void aStoppingWriterWritesBackupsNeverSavedBeforeRefreshesOfSavedOnes() {
+        List<String> queued = List.of("saved-1", "new-1", "saved-2", "new-2", "new-3");
+        assertEquals(List.of("new-1", "new-2", "new-3", "saved-1", "saved-2"),
+                BackupWriter.neverSavedFirst(queued, u -> u, u -> u.startsWith("saved")));
     }
 
     @Test
