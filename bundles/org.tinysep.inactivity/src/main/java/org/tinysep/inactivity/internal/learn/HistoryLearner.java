@@ -45,9 +45,9 @@ public final class HistoryLearner {
                 sightings.set(sightings.size() - 1, s);
                 return;
             }
-            if (s.at().isBefore(last.at())) {
-                dirty = true; // from the log after live ones: sorted at the next learning
-            }
+            // an older sighting (a frame replayed late, e.g. by a driver's handover) is sorted in at the next daily
+            // learning, like every sighting of today: it does not make the profile learn anew now (issue 14: that
+            // rebuilt the whole profile once per replayed frame); history read from the log calls loaded()
         }
         sightings.add(s);
     }
