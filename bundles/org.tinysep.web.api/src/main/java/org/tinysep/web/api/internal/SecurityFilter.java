@@ -22,7 +22,8 @@ import org.tinysep.web.api.internal.Sessions.Session;
  * Guards every page and API call of the HTTP service's default context: without a session, API calls get 401 and
  * pages a redirect to the login page; a state-changing call (anything but GET/HEAD) needs the session's CSRF token
  * in header {@value #CSRF_HEADER} and, when the browser sends an Origin, the same origin, else 403; the caregiver
- * may only read (403), except acknowledging an alert (the console's and the central board's acknowledge calls). Every answer gets the security headers (CSP without inline script, no framing, no sniffing).
+ * may only read (403), except acknowledging an alert (the console's and the central board's acknowledge calls).
+ * Every answer gets the security headers (CSP without inline script, no framing, no sniffing).
  */
 @Component(service = Filter.class, property = {
     "osgi.http.whiteboard.filter.pattern=/*",
@@ -100,7 +101,8 @@ public final class SecurityFilter implements Filter {
 
     /** The one change a caregiver may make: acknowledging an alert (the flat's own, or one on the central board). */
     static boolean caregiverMay(String method, String path) {
-        return method.equals("POST") && (ACKNOWLEDGE.matcher(path).matches() || BOARD_ACKNOWLEDGE.matcher(path).matches());
+        return method.equals("POST")
+                && (ACKNOWLEDGE.matcher(path).matches() || BOARD_ACKNOWLEDGE.matcher(path).matches());
     }
 
     static void headers(HttpServletResponse resp) {
