@@ -7,6 +7,7 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CopyOnWriteArraySet;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
 import java.util.function.ToLongFunction;
@@ -17,8 +18,9 @@ import org.slf4j.LoggerFactory;
  * Feeds live Server-Sent Events streams from one log: every {@value #PERIOD_MS} ms it reads the log's newest
  * entries ({@code recent}) and hands those with a higher sequence number than seen before to every subscriber,
  * already formatted as SSE messages ({@code id: <sequence>}). One poller per log, whatever the number of
- * streams; a subscriber that falls {@value #QUEUE} messages behind is cut off (its browser reconnects with
- * {@code Last-Event-ID} and gets the gap from {@link #since}).
+ * streams, and none while no stream is open (issue 14: an idle gateway should not wake up five times a second
+ * for nobody); a subscriber that falls {@value #QUEUE} messages behind is cut off (its browser reconnects with
+ * {@code Last-Event-ID} and {@link #subscribe} gives it the gap).
  *
  * @param <E> EventEntry or PacketEntry
  */
@@ -44,36 +46,54 @@ public final class LiveFeed<E> implements AutoCloseable {
     private final Set<Subscriber> subscribers = new CopyOnWriteArraySet<>();
     private final ScheduledExecutorService executor;
     private volatile long last;
+    private ScheduledFuture<?> polling; // guarded by subscribers
 
     public LiveFeed(String name, Function<Integer, List<E>> recent, ToLongFunction<E> sequence, Function<E, String> format) {
         this.name = name;
         this.recent = recent;
         this.sequence = sequence;
         this.format = format;
-        List<E> now = recent.apply(1);
-        this.last = now.isEmpty() ? -1 : sequence.applyAsLong(now.get(now.size() - 1));
         this.executor = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "tinysep-web-live-" + name);
             t.setDaemon(true);
             return t;
         });
-        executor.scheduleWithFixedDelay(this::poll, PERIOD_MS, PERIOD_MS, TimeUnit.MILLISECONDS);
     }
 
     /** @return a new subscriber; entries after {@code after} (a sequence number, or -1 for only new ones) come first */
     public Subscriber subscribe(long after) {
         Subscriber s = new Subscriber();
-        if (after >= 0) {
-            for (String m : since(after)) {
-                s.queue.offer(m);
+        synchronized (subscribers) {
+            if (polling == null) { // the first stream: what the log holds now is the past, the poller sends what follows
+                List<E> now = recent.apply(1);
+                last = now.isEmpty() ? -1 : sequence.applyAsLong(now.get(now.size() - 1));
+                polling = executor.scheduleWithFixedDelay(this::poll, PERIOD_MS, PERIOD_MS, TimeUnit.MILLISECONDS);
             }
+            if (after >= 0) {
+                long upTo = last; // newer entries come from the poller, so none comes twice
+                recent.apply(WINDOW).stream().filter(e -> sequence.applyAsLong(e) > after)
+                        .filter(e -> sequence.applyAsLong(e) <= upTo).map(format).forEach(s.queue::offer);
+            }
+            subscribers.add(s);
         }
-        subscribers.add(s);
         return s;
     }
 
     public void unsubscribe(Subscriber s) {
-        subscribers.remove(s);
+        synchronized (subscribers) {
+            subscribers.remove(s);
+            if (subscribers.isEmpty() && polling != null) {
+                polling.cancel(false);
+                polling = null;
+            }
+        }
+    }
+
+    /** @return whether the poller runs (only while a stream is open) */
+    boolean polling() {
+        synchronized (subscribers) {
+            return polling != null;
+        }
     }
 
     /** @return how many streams are open */
@@ -81,20 +101,14 @@ public final class LiveFeed<E> implements AutoCloseable {
         return subscribers.size();
     }
 
-    /** @return the formatted entries the log still holds after sequence {@code after} */
-    List<String> since(long after) {
-        return recent.apply(WINDOW).stream().filter(e -> sequence.applyAsLong(e) > after).map(format).toList();
+    private void poll() {
+        synchronized (subscribers) { // a stream subscribing meanwhile gets each entry once: backlog or poll
+            pollLocked();
+        }
     }
 
-    private void poll() {
+    private void pollLocked() {
         try {
-            if (subscribers.isEmpty()) {
-                List<E> newest = recent.apply(1);
-                if (!newest.isEmpty()) {
-                    last = sequence.applyAsLong(newest.get(newest.size() - 1));
-                }
-                return;
-            }
             List<E> fresh = recent.apply(WINDOW).stream().filter(e -> sequence.applyAsLong(e) > last).toList();
             if (fresh.isEmpty()) {
                 return;
@@ -107,7 +121,7 @@ public final class LiveFeed<E> implements AutoCloseable {
                         s.cut = true;
                         s.queue.clear();
                         s.queue.offer(END);
-                        subscribers.remove(s);
+                        unsubscribe(s);
                         LOG.info("A live {} stream fell {} entries behind and was closed; the browser reconnects", name, QUEUE);
                         break;
                     }
