@@ -9,15 +9,12 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.Test;
 import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
@@ -32,7 +29,6 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.itests.AmicaNode;
-import org.tinysep.itests.TinySepTestSupport;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.MqttTestClient;
 
@@ -42,36 +38,13 @@ import org.tinysep.testsupport.mqtt.MqttTestClient;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerMethod.class)
-public class MqttBridgeTest extends TinySepTestSupport {
+public class MqttBridgeTest extends MqttBridgeSupport {
 
     static final String PID = "org.tinysep.mqtt";
     static final String FLAT = "flat1";
     static final String BASE = "tinysep/" + FLAT + "/";
     static final Duration WAIT = Duration.ofSeconds(30);
     private static final Pattern SEQ = Pattern.compile("\"seq\":(\\d+)");
-
-    @Override
-    protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.add("org.tinysep.alerts");
-        all.add("org.tinysep.sensorhealth");
-        all.add("org.tinysep.mqtt");
-        return all;
-    }
-
-    @Override
-    protected List<Option> options() {
-        List<Option> o = super.options();
-        o.add(reactorBundle("org.tinysep.testsupport.mqtt", 5));
-        return o;
-    }
-
-    @Override
-    protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.alerts", Map.of("summaryTime", "", "timeZone", "UTC"));
-        return configs;
-    }
 
     private Map<String, String> bridge(Mosquitto broker) throws Exception {
         Map<String, String> c = new HashMap<>();
