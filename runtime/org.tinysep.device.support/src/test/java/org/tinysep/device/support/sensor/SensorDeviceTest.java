@@ -34,12 +34,7 @@ class SensorDeviceTest {
 
     private static final class Door extends ContactSensorDevice<DoorListener> implements DoorProvider {
         Door(DriverContext context, Source<OpenState> source) {
-            super(context, source, "door", "Door", "door", DoorProvider.class);
-        }
-
-        @Override
-        protected void tell(DoorListener listener, OpenState state, boolean first, Instant at) {
-            listener.doorChanged(this, state, first, at);
+            super(context, source, "door", "Door", "door", DoorProvider.class, DoorListener::doorChanged);
         }
 
         @Override
