@@ -6,11 +6,10 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.stream.Stream;
+import org.tinysep.testsupport.process.DistributionCopy;
 import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
@@ -41,16 +40,7 @@ final class Platform implements AutoCloseable {
         if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
             throw new IOException("no distribution at " + dist.toAbsolutePath() + " (mvn -B -o package first)");
         }
-        try (Stream<Path> files = Files.walk(dist)) {
-            for (Path f : files.filter(p -> !dist.relativize(p).startsWith("var")).toList()) {
-                Path target = home.resolve(dist.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        }
+        DistributionCopy.copy(dist, home);
         Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
                 "port=" + amicaPort + "\nbindAddress=127.0.0.1\nmaxNodes=20000\n"); // scale: above its default 1,000
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
