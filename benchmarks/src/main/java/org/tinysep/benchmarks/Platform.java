@@ -1,54 +1,38 @@
 package org.tinysep.benchmarks;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.OutputStream;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.ServerSocket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.LinkedBlockingQueue;
-import java.util.concurrent.TimeUnit;
-import java.util.stream.Stream;
+import org.tinysep.testsupport.process.DistributionCopy;
+import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
  * The real distribution run as a user runs it: {@code java <options> -jar tinysep.jar --var <state>} in a copy of
  * {@code runtime/org.tinysep.launcher/target/tinysep}, with its interactive shell on stdin (commands end with an
- * {@code echo} marker), its log in {@code <home>/platform.log}. Its radios listen on free loopback ports.
+ * {@code echo} marker: {@link PlatformProcess}, the same conversation as the launcher's process tests), its log in
+ * {@code <home>/platform.log}. Its radios listen on free loopback ports.
  */
 final class Platform implements AutoCloseable {
 
-    private static final String EOF = "\u0000EOF";
-
     final Path home;
     final int amicaPort;
-    private final Process process;
-    private final OutputStream stdin;
-    private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
+    private final PlatformProcess shell;
     private final long startNanos;
     private volatile long bannerNanos;
     private volatile String banner = "";
-    private int marker;
-    private long stopAsked;
     private long stopNanos;
 
     private Platform(Path home, int amicaPort, Process process, long startNanos) {
         this.home = home;
         this.amicaPort = amicaPort;
-        this.process = process;
-        this.stdin = process.getOutputStream();
         this.startNanos = startNanos;
-        Thread reader = new Thread(this::read, "platform-stdout");
-        reader.setDaemon(true);
-        reader.start();
+        this.shell = PlatformProcess.attach(process, this::saw);
     }
 
     /** Copies the distribution to {@code home} and sets its ports: AmICA, Time Controller as given, the rest free. */
@@ -56,16 +40,7 @@ final class Platform implements AutoCloseable {
         if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
             throw new IOException("no distribution at " + dist.toAbsolutePath() + " (mvn -B -o package first)");
         }
-        try (Stream<Path> files = Files.walk(dist)) {
-            for (Path f : files.filter(p -> !dist.relativize(p).startsWith("var")).toList()) {
-                Path target = home.resolve(dist.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        }
+        DistributionCopy.copy(dist, home);
         Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
                 "port=" + amicaPort + "\nbindAddress=127.0.0.1\nmaxNodes=20000\n"); // scale: above its default 1,000
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
@@ -95,20 +70,11 @@ final class Platform implements AutoCloseable {
         return platform;
     }
 
-    private void read() {
-        try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(),
-                StandardCharsets.UTF_8))) {
-            for (String line; (line = r.readLine()) != null; ) {
-                if (bannerNanos == 0 && line.contains("bundles active")) {
-                    bannerNanos = System.nanoTime();
-                    banner = line.strip();
-                }
-                lines.add(line);
-            }
-        } catch (IOException ignored) {
-            // the process ended
+    private void saw(String line) {
+        if (bannerNanos == 0 && line.contains("bundles active")) {
+            bannerNanos = System.nanoTime();
+            banner = line.strip();
         }
-        lines.add(EOF);
     }
 
     /** @return ms from closing the shell's input to the process's end (0 before {@link #close}) */
@@ -117,7 +83,7 @@ final class Platform implements AutoCloseable {
     }
 
     long pid() {
-        return process.pid();
+        return shell.pid();
     }
 
     /** @return wall time from {@code java -jar} to the banner "…: n/n bundles active", in ms */
@@ -135,37 +101,10 @@ final class Platform implements AutoCloseable {
 
     /** Runs one shell command; @return its output lines (prompts removed) */
     List<String> command(String commandLine, Duration timeout) {
-        String end = "@@END-" + (++marker) + "@@";
         try {
-            stdin.write((commandLine + "\necho " + end + "\n").getBytes(StandardCharsets.UTF_8));
-            stdin.flush();
-        } catch (IOException e) {
-            throw new IllegalStateException("platform stdin closed: " + e.getMessage(), e);
-        }
-        List<String> out = new ArrayList<>();
-        long deadline = System.nanoTime() + timeout.toNanos();
-        try {
-            while (true) {
-                String line = lines.poll(Math.max(1, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
-                if (line == null) {
-                    throw new IllegalStateException("no answer to '" + commandLine + "' within " + timeout);
-                }
-                if (line.equals(EOF)) {
-                    lines.add(line);
-                    throw new IllegalStateException("platform ended during '" + commandLine + "' (log: "
-                            + home.resolve("platform.log") + ")");
-                }
-                String clean = line.replace("g! ", "");
-                if (clean.contains(end)) {
-                    return out;
-                }
-                if (!clean.isBlank()) {
-                    out.add(clean);
-                }
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("interrupted", e);
+            return shell.command(commandLine, timeout);
+        } catch (IllegalStateException e) {
+            throw new IllegalStateException(e.getMessage() + " (log: " + home.resolve("platform.log") + ")", e);
         }
     }
 
@@ -179,19 +118,15 @@ final class Platform implements AutoCloseable {
 
     @Override
     public void close() throws InterruptedException {
-        if (process.isAlive()) {
-            stopAsked = System.nanoTime();
+        if (shell.alive()) {
+            long stopAsked = System.nanoTime();
+            // end of input: the shell stops the framework cleanly, after the platform saved what its backup writer
+            // still holds (bounded by the launcher)
             try {
-                stdin.close(); // end of input: the shell stops the framework cleanly
-            } catch (IOException ignored) {
-                // closed
-            }
-            // an orderly stop: the platform saves what its backup writer still holds first (bounded by the launcher)
-            if (!process.waitFor(5, TimeUnit.MINUTES)) {
-                process.destroyForcibly();
-                process.waitFor();
+                shell.stop(Duration.ofMinutes(5));
+            } catch (IllegalStateException late) {
                 throw new IllegalStateException("the platform did not stop within 5 min of its shell's end; killed"
-                        + " (log: " + home.resolve("platform.log") + ")");
+                        + " (log: " + home.resolve("platform.log") + ")", late);
             }
             stopNanos = System.nanoTime() - stopAsked;
         }

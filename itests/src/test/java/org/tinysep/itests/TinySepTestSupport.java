@@ -174,6 +174,16 @@ public abstract class TinySepTestSupport {
     }
 
     /** FileInstall on {@code target/itest-etc/<test class>/}, filled from {@link #initialConfigurations()}. */
+    /**
+     * For {@link #initialConfigurations()} overrides: {@code configs} with the configuration of {@code pid}
+     * replaced by {@code config}.
+     */
+    protected static Map<String, Map<String, String>> replacing(Map<String, Map<String, String>> configs, String pid,
+            Map<String, String> config) {
+        configs.put(pid, config);
+        return configs;
+    }
+
     private List<Option> fileInstall() {
         Path etc = Path.of("target", "itest-etc", getClass().getSimpleName()).toAbsolutePath();
         try {

@@ -7,10 +7,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.Test;
-import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.junit.PaxExam;
-import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
-import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.device.Device;
@@ -21,17 +17,13 @@ import org.tinysep.itests.AmicaNode;
  * AmICA Dimmable Light in a real framework over real UDP: Light Control status in, brightness out; setBrightness puts
  * 5 2 0 A on the node's socket; the node's next status confirms.
  */
-@RunWith(PaxExam.class)
-@ExamReactorStrategy(PerClass.class)
 public class AmicaDimmableLightTest extends AmicaTestSupport {
 
     @Test
     public void aDimmableLightNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
         try (AmicaNode node = node(1, 20, DIMMABLE_LIGHT)) {
-            node.keepAlive();
+            DimmableLightProvider provider = announce(node, "AmicaDimmableLight", DimmableLightProvider.class, "dimmable-light");
             Device device = device("AmicaDimmableLight", node.id());
-            DimmableLightProvider provider = provider(DimmableLightProvider.class, node.id());
-            assertEquals(List.of("dimmable-light"), providerNodeTypes(DimmableLightProvider.class, node.id()));
             List<Percent> heard = new CopyOnWriteArrayList<>();
             provider.connect((source, value, at) -> heard.add(value));
 

@@ -7,10 +7,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.Test;
-import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.junit.PaxExam;
-import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
-import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.HeaterControl;
 import org.tinysep.api.actuator.HeaterProvider;
 import org.tinysep.api.device.Device;
@@ -21,17 +17,13 @@ import org.tinysep.itests.AmicaNode;
  * AmICA Heater in a real framework over real UDP: Heater Control status in, potency out; setPotency puts
  * 5 8 0 A on the node's socket; the node's next status confirms.
  */
-@RunWith(PaxExam.class)
-@ExamReactorStrategy(PerClass.class)
 public class AmicaHeaterTest extends AmicaTestSupport {
 
     @Test
     public void aHeaterNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
         try (AmicaNode node = node(1, 21, HEATER)) {
-            node.keepAlive();
+            HeaterProvider provider = announce(node, "AmicaHeater", HeaterProvider.class, "heater");
             Device device = device("AmicaHeater", node.id());
-            HeaterProvider provider = provider(HeaterProvider.class, node.id());
-            assertEquals(List.of("heater"), providerNodeTypes(HeaterProvider.class, node.id()));
             List<Percent> heard = new CopyOnWriteArrayList<>();
             provider.connect((source, value, at) -> heard.add(value));
 

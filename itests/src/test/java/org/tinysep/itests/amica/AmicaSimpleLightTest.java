@@ -7,10 +7,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.Test;
-import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.junit.PaxExam;
-import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
-import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.actuator.SimpleLightProvider;
 import org.tinysep.api.device.Device;
@@ -21,17 +17,13 @@ import org.tinysep.itests.AmicaNode;
  * through {@code tinysep:set} puts the exact Light Control bytes on the node's socket; the node's next status
  * confirms.
  */
-@RunWith(PaxExam.class)
-@ExamReactorStrategy(PerClass.class)
 public class AmicaSimpleLightTest extends AmicaTestSupport {
 
     @Test
     public void aLightNodeIsSwitchedAndConfirmsByItsNextStatus() throws Exception {
         try (AmicaNode node = node(1, 30, SIMPLE_LIGHT)) {
-            node.keepAlive();
+            SimpleLightProvider light = announce(node, "AmicaSimpleLight", SimpleLightProvider.class, "simple-light");
             Device device = device("AmicaSimpleLight", node.id());
-            SimpleLightProvider light = provider(SimpleLightProvider.class, node.id());
-            assertEquals(List.of("simple-light"), providerNodeTypes(SimpleLightProvider.class, node.id()));
             List<Boolean> heard = new CopyOnWriteArrayList<>();
             light.connect((source, on, at) -> heard.add(on));
 

@@ -7,10 +7,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.Test;
-import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.junit.PaxExam;
-import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
-import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.actuator.SpeakerProvider;
 import org.tinysep.api.device.Device;
@@ -21,17 +17,13 @@ import org.tinysep.itests.AmicaNode;
  * AmICA Speaker in a real framework over real UDP: Speaker Control status in, volume out; setVolume puts
  * 5 4 0 A on the node's socket; the node's next status confirms.
  */
-@RunWith(PaxExam.class)
-@ExamReactorStrategy(PerClass.class)
 public class AmicaSpeakerTest extends AmicaTestSupport {
 
     @Test
     public void aSpeakerNodeIsSetAndConfirmsByItsNextStatus() throws Exception {
         try (AmicaNode node = node(1, 22, SPEAKER)) {
-            node.keepAlive();
+            SpeakerProvider provider = announce(node, "AmicaSpeaker", SpeakerProvider.class, "speaker");
             Device device = device("AmicaSpeaker", node.id());
-            SpeakerProvider provider = provider(SpeakerProvider.class, node.id());
-            assertEquals(List.of("speaker"), providerNodeTypes(SpeakerProvider.class, node.id()));
             List<Percent> heard = new CopyOnWriteArrayList<>();
             provider.connect((source, value, at) -> heard.add(value));
 

@@ -7,6 +7,10 @@ import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
 import java.util.function.Supplier;
+import org.junit.runner.RunWith;
+import org.ops4j.pax.exam.junit.PaxExam;
+import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
+import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.tinysep.amica.protocol.AmicaNodeType;
@@ -20,6 +24,8 @@ import org.tinysep.itests.TinySepTestSupport;
  * Helpers for the AmICA hardware-abstraction tests: simulated nodes on the UDP bus radio, the devices and
  * providers of one node address, their parameters.
  */
+@RunWith(PaxExam.class)
+@ExamReactorStrategy(PerClass.class) // both inherited by the test classes
 public abstract class AmicaTestSupport extends TinySepTestSupport {
 
     static final String BUS = "BusRadioAmicaUdp";
@@ -27,6 +33,20 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
     /** @return a simulated node that talks to the running UDP bus radio */
     protected AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws Exception {
         return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
+    }
+
+    /**
+     * Sends the node's keep-alive and waits for its abstraction: the Device service of {@code deviceType} and the
+     * provider of {@code type}, which must carry the node's own type {@code nodeType} only.
+     *
+     * @return the provider
+     */
+    protected <P> P announce(AmicaNode node, String deviceType, Class<P> type, String nodeType) throws Exception {
+        node.keepAlive();
+        device(deviceType, node.id());
+        P provider = provider(type, node.id());
+        assertEquals(List.of(nodeType), providerNodeTypes(type, node.id()));
+        return provider;
     }
 
     /** Waits for the provider service of that interface at that node address. */

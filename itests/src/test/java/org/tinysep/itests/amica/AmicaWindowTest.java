@@ -7,10 +7,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.Test;
-import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.junit.PaxExam;
-import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
-import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.sensor.Coordinates;
@@ -20,17 +16,12 @@ import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.itests.AmicaNode;
 
 /** AmICA Window in a real framework over real UDP: keep-alive, reed-switch changes, the position parameter. */
-@RunWith(PaxExam.class)
-@ExamReactorStrategy(PerClass.class)
 public class AmicaWindowTest extends AmicaTestSupport {
 
     @Test
     public void aWindowNodeBecomesAWindowWhoseChangesReachItsListeners() throws Exception {
         try (AmicaNode node = node(1, 21, WINDOW)) {
-            node.keepAlive();
-            Device device = device("AmicaWindow", node.id());
-            WindowProvider window = provider(WindowProvider.class, node.id());
-            assertEquals(List.of("window"), providerNodeTypes(WindowProvider.class, node.id()));
+            WindowProvider window = announce(node, "AmicaWindow", WindowProvider.class, "window");
             assertEquals(OpenState.UNKNOWN, window.state());
 
             List<String> heard = new CopyOnWriteArrayList<>();
@@ -52,6 +43,7 @@ public class AmicaWindowTest extends AmicaTestSupport {
             awaitEquals("window changes", List.of("OPEN", "CLOSED"), () -> List.copyOf(heard));
             assertEquals(OpenState.CLOSED, window.state());
 
+            Device device = device("AmicaWindow", node.id());
             shell("tinysep:set " + device.uid() + " position 2.5,0,1.2");
             awaitEquals("position event", List.of("OPEN", "CLOSED", "position 2.5,0.0,1.2"), () -> List.copyOf(heard));
             assertEquals(Optional.of(new Coordinates(2.5, 0, 1.2)), window.position());

@@ -6,9 +6,8 @@ import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
-import java.util.stream.Stream;
+import org.tinysep.testsupport.process.DistributionCopy;
 import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
@@ -34,17 +33,7 @@ final class Platforms {
 
     /** Copies the distribution (without var/) to {@code home}. */
     static void install(Path home) throws IOException {
-        Path from = distribution();
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : files.filter(p -> !from.relativize(p).startsWith("var")).toList()) {
-                Path target = home.resolve(from.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        }
+        DistributionCopy.copy(distribution(), home);
     }
 
     /** @return a UDP port free right now on 127.0.0.1 */

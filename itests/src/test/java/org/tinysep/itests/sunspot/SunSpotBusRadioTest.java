@@ -16,7 +16,6 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Collectors;
 import org.junit.Test;
 import org.junit.runner.RunWith;
-import org.ops4j.pax.exam.Option;
 import org.ops4j.pax.exam.junit.PaxExam;
 import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
@@ -33,7 +32,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.PacketLog;
-import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.itests.sunspotabs.SunSpotTestSupport;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.PetMovementDetection;
@@ -52,23 +51,14 @@ import org.tinysep.sunspot.protocol.TemperatureStatus;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerClass.class)
-public class SunSpotBusRadioTest extends TinySepTestSupport {
+public class SunSpotBusRadioTest extends SunSpotTestSupport {
 
-    private static final String BUS = "BusRadioSunSpot";
+    private static final String BUS = SUN_SPOT_BUS;
 
+    /** UDP on a free port; the SDK link on, although no SDK is installed: it must say so and harm nothing. */
     @Override
-    protected List<Option> options() {
-        List<Option> o = super.options();
-        o.addAll(sunSpotBundles(5));
-        return o;
-    }
-
-    @Override
-    protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        // UDP on a free port; the SDK link on, although no SDK is installed: it must say so and harm nothing
-        configs.put(SUN_SPOT_PID, Map.of("udpPort", "0", "udpBindAddress", "127.0.0.1", "sdkEnabled", "true"));
-        return configs;
+    protected Map<String, String> sunSpotConfiguration() {
+        return Map.of("udpPort", "0", "udpBindAddress", "127.0.0.1", "sdkEnabled", "true");
     }
 
     private BusRadioSunSpotProvider busDevice(String address) {

@@ -27,6 +27,7 @@ import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.PetMovementDetection;
 import org.tinysep.sunspot.protocol.Position;
+import org.tinysep.sunspot.protocol.SunSpotPayload;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 import org.tinysep.itests.Topology;
 
@@ -42,6 +43,18 @@ import org.tinysep.itests.Topology;
 @ExamReactorStrategy(PerMethod.class)
 public class SunSpotAbstractionsTest extends SunSpotTestSupport {
 
+    /**
+     * Sends the node's {@code first} report and waits for its abstraction: the provider of {@code type}, and the
+     * device of {@code deviceType} connected to the node's bus device. @return the provider
+     */
+    private <P> P announce(SunSpotNode node, SunSpotPayload first, Class<P> type, String deviceType)
+            throws Exception {
+        node.send(first);
+        P provider = awaitService(type, node.filter(), TIMEOUT);
+        expectDeviceOnItsBus(deviceType, node);
+        return provider;
+    }
+
     private void expectDeviceOnItsBus(String type, SunSpotNode node) {
         String prefix = type + "@" + node.address() + " <- BusRadioSunSpotProvider of ";
         await(TIMEOUT, () -> Topology.of(context).stream().anyMatch(l -> l.startsWith(prefix)),
@@ -51,10 +64,8 @@ public class SunSpotAbstractionsTest extends SunSpotTestSupport {
     @Test
     public void movementNodeBecomesMovementWithCoordinates() throws Exception {
         try (SunSpotNode node = new SunSpotNode("0014.4F01.0000.0102", udpPortOf(SUN_SPOT_BUS))) {
-            node.send(new MovementDetection(false));
-            MovementWithCoordinatesProvider movement = awaitService(MovementWithCoordinatesProvider.class,
-                    node.filter(), TIMEOUT);
-            expectDeviceOnItsBus("SunSpotMovement", node);
+            MovementWithCoordinatesProvider movement = announce(node, new MovementDetection(false),
+                    MovementWithCoordinatesProvider.class, "SunSpotMovement");
             ServiceReference<MovementProvider> plain = context.getServiceReferences(MovementProvider.class,
                     node.filter()).iterator().next();
             assertTrue("one service under both names", context.getService(plain) == movement);
@@ -88,15 +99,13 @@ public class SunSpotAbstractionsTest extends SunSpotTestSupport {
     @Test
     public void temperatureNodeReportsTemperaturesBeyondTheDeadBand() throws Exception {
         try (SunSpotNode node = new SunSpotNode("0014.4F01.0000.0103", udpPortOf(SUN_SPOT_BUS))) {
-            node.send(new TemperatureStatus(18.0));
-            TemperatureProvider temperature = awaitService(TemperatureProvider.class, node.filter(), TIMEOUT);
-            expectDeviceOnItsBus("SunSpotTemperature", node);
+            TemperatureProvider temperature = announce(node, new TemperatureStatus(18.0), TemperatureProvider.class,
+                    "SunSpotTemperature");
 
             List<Double> heard = new CopyOnWriteArrayList<>();
             temperature.connect((src, celsius, at) -> heard.add(celsius));
-            node.send(new TemperatureStatus(21.5));
-            node.send(new TemperatureStatus(21.5)); // a repeat: within the 0.1 °C dead band
-            node.send(new TemperatureStatus(22.0));
+            // the second 21.5 is a repeat: within the 0.1 °C dead band
+            node.send(new TemperatureStatus(21.5), new TemperatureStatus(21.5), new TemperatureStatus(22.0));
 
             await(TIMEOUT, () -> heard.contains(22.0), "22.0 °C to reach the listener");
             assertEquals(List.of(21.5, 22.0), heard.stream().filter(c -> c != 18.0).toList());
@@ -107,15 +116,12 @@ public class SunSpotAbstractionsTest extends SunSpotTestSupport {
     @Test
     public void lightNodeReportsBrightnessChanges() throws Exception {
         try (SunSpotNode node = new SunSpotNode("0014.4F01.0000.0104", udpPortOf(SUN_SPOT_BUS))) {
-            node.send(new LightStatus(10));
-            LightBrightnessProvider light = awaitService(LightBrightnessProvider.class, node.filter(), TIMEOUT);
-            expectDeviceOnItsBus("SunSpotLight", node);
+            LightBrightnessProvider light = announce(node, new LightStatus(10), LightBrightnessProvider.class,
+                    "SunSpotLight");
 
             List<Percent> heard = new CopyOnWriteArrayList<>();
             light.connect((src, brightness, at) -> heard.add(brightness));
-            node.send(new LightStatus(55));
-            node.send(new LightStatus(55)); // unchanged: not announced again
-            node.send(new LightStatus(70));
+            node.send(new LightStatus(55), new LightStatus(55), new LightStatus(70)); // the repeat is not announced
 
             await(TIMEOUT, () -> heard.contains(Percent.of(70)), "70 % to reach the listener");
             assertEquals(List.of(Percent.of(55), Percent.of(70)),
@@ -127,9 +133,8 @@ public class SunSpotAbstractionsTest extends SunSpotTestSupport {
     @Test
     public void petCollarReportsPetMovementButNoPersonMovement() throws Exception {
         try (SunSpotNode node = new SunSpotNode("0014.4F01.0000.0105", udpPortOf(SUN_SPOT_BUS))) {
-            node.send(new PetMovementDetection(false));
-            PetMovementProvider pet = awaitService(PetMovementProvider.class, node.filter(), TIMEOUT);
-            expectDeviceOnItsBus("SunSpotPetMovement", node);
+            PetMovementProvider pet = announce(node, new PetMovementDetection(false), PetMovementProvider.class,
+                    "SunSpotPetMovement");
 
             List<MovementEvent> heard = new CopyOnWriteArrayList<>();
             pet.connect((src, m) -> heard.add(m));

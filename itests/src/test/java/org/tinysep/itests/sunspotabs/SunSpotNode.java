@@ -37,11 +37,13 @@ final class SunSpotNode implements AutoCloseable {
         return "(tinysep.node.address=" + address + ")";
     }
 
-    /** Sends one payload in a frame whose header sensor type is the payload's own. */
-    void send(SunSpotPayload payload) throws IOException {
-        byte[] frame = SunSpotCodec.encode(
-                new SunSpotFrame(address, payload.sensorType().code(), SunSpotPayloads.encode(payload)));
-        socket.send(new DatagramPacket(frame, frame.length, radio));
+    /** Sends payloads in order, each in a frame whose header sensor type is the payload's own. */
+    void send(SunSpotPayload... payloads) throws IOException {
+        for (SunSpotPayload payload : payloads) {
+            byte[] frame = SunSpotCodec.encode(
+                    new SunSpotFrame(address, payload.sensorType().code(), SunSpotPayloads.encode(payload)));
+            socket.send(new DatagramPacket(frame, frame.length, radio));
+        }
     }
 
     @Override

@@ -42,12 +42,11 @@ public class WebAlertsTest extends WebTestSupport {
         return all;
     }
 
+    /** A movement node promises a report every 2 s: OFFLINE after 3 missed reports (6 s of silence). */
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        // a movement node promises a report every 2 s: OFFLINE after 3 missed reports (6 s of silence)
-        configs.put(UDP_PID, Map.of("port", "0", "bindAddress", "127.0.0.1", "silentAfterIntervals", "3"));
-        return configs;
+        return replacing(super.initialConfigurations(), UDP_PID,
+                Map.of("port", "0", "bindAddress", "127.0.0.1", "silentAfterIntervals", "3"));
     }
 
     @Before

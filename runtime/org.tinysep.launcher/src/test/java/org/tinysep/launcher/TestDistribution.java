@@ -13,7 +13,6 @@ import java.lang.reflect.Method;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.time.Duration;
 import java.util.Arrays;
 import java.util.function.BooleanSupplier;
@@ -21,6 +20,7 @@ import java.util.stream.Stream;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
+import org.tinysep.testsupport.process.DistributionCopy;
 
 /** A copy of the assembled distribution booted in this JVM, with helpers to drive it (shell, polling). */
 final class TestDistribution {
@@ -138,15 +138,6 @@ final class TestDistribution {
 
     private static void copy(Path from, Path to) throws IOException {
         assertTrue(Files.isDirectory(from.resolve("bundles")), "no distribution at " + from.toAbsolutePath());
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : files.filter(p -> !from.relativize(p).startsWith("var")).toList()) {
-                Path target = to.resolve(from.relativize(f).toString());
-                if (Files.isDirectory(f)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(f, target, StandardCopyOption.REPLACE_EXISTING);
-                }
-            }
-        }
+        DistributionCopy.copy(from, to);
     }
 }

@@ -12,17 +12,13 @@ import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
-import org.osgi.service.component.annotations.Reference;
-import org.osgi.service.component.annotations.ReferenceCardinality;
-import org.osgi.service.component.annotations.ReferencePolicy;
-import org.osgi.service.component.annotations.ReferencePolicyOption;
-import org.tinysep.api.health.SensorHealthProvider;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.ProviderTracker;
+import org.tinysep.device.support.UnmonitoredRooms;
 
 /**
  * Flat Occupancy driver: creates its single device when the first Movement or Door interface appears (thesis Fig
@@ -44,10 +40,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
     private final Map<String, WindowProvider> windowsSeen = new ConcurrentHashMap<>();
     private ProviderTracker<PresenceProvider> presences;
     private PlatformTicker ticker;
-
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    private volatile SensorHealthProvider sensorHealth;
+    private UnmonitoredRooms unmonitored;
 
     public FlatOccupancyDriver() {
         super(NAME);
@@ -58,6 +51,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         leaveTimeout = Duration.ofSeconds(Math.max(10, config.leaveTimeoutSeconds()));
         exitGrace = Duration.ofSeconds(Math.min(Math.max(0, config.exitGraceSeconds()), leaveTimeout.toSeconds() - 1));
         start(bundleContext);
+        unmonitored = new UnmonitoredRooms(bundleContext);
         movements = new ProviderTracker<>(bundleContext, MovementProvider.class, null, ProviderTracker.Callback.of(
                 (movement, uid) -> device().watch(movement), (movement, uid) -> providerGone(uid))).open();
         doors = new ProviderTracker<>(bundleContext, DoorProvider.class, null, ProviderTracker.Callback.of(
@@ -84,6 +78,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         movements.close();
         doors.close();
         stop();
+        unmonitored.close();
     }
 
     private void tick(Instant now) {
@@ -117,12 +112,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
 
     /** @return e.g. "Bathroom (no sensor heard since 2026-11-25T09:12:00Z)", or "" (all heard, or no Sensor Health) */
     private String unmonitoredRooms() {
-        SensorHealthProvider h = sensorHealth;
-        try {
-            return h == null ? "" : h.unmonitoredRooms().stream().map(u -> u.roomName() + " (no sensor heard since "
-                    + u.since() + ")").collect(java.util.stream.Collectors.joining(", "));
-        } catch (RuntimeException e) { // Sensor Health going away
-            return "";
-        }
+        return unmonitored.now().stream().map(u -> u.roomName() + " (no sensor heard since " + u.since() + ")")
+                .collect(java.util.stream.Collectors.joining(", "));
     }
 }

@@ -23,55 +23,65 @@ final class Fakes {
     private Fakes() {
     }
 
-    /** A light: what the service asked of it goes to the journal ("uid on", "uid 40 %"). */
-    static class Light<L> extends FakeProvider<L> {
+    /**
+     * A light: what the service asked of it goes to the journal ("uid on", "uid 40 %"); {@code state} is what the
+     * node last reported (null before a report).
+     *
+     * @param <V> the reported state: on/off or a brightness
+     */
+    static class Light<L, V> extends FakeProvider<L> {
         final List<String> journal;
+        V state;
 
         Light(String uid, List<String> journal) {
             super(uid);
             this.journal = journal;
         }
+
+        final Optional<V> reported() {
+            return Optional.ofNullable(state);
+        }
+
+        final void asked(Object what) {
+            journal.add(uid + " " + what);
+        }
     }
 
     /** A simple light; {@link #confirm} plays the node's status report. */
-    static final class Simple extends Light<SimpleLightListener> implements SimpleLightProvider {
-        Boolean on;
-
+    static final class Simple extends Light<SimpleLightListener, Boolean> implements SimpleLightProvider {
         Simple(String uid, List<String> journal) {
             super(uid, journal);
         }
 
         @Override
-        public Optional<Boolean> isOn() {
-            return Optional.ofNullable(on);
+        public void switchLight(boolean wanted) {
+            asked(wanted ? "on" : "off");
         }
 
         @Override
-        public void switchLight(boolean wanted) {
-            journal.add(uid + (wanted ? " on" : " off"));
+        public Optional<Boolean> isOn() {
+            return reported();
         }
 
-        void confirm(boolean state, Instant at) {
-            on = state;
-            List.copyOf(listeners).forEach(l -> l.lightSwitched(this, state, at));
+        void confirm(boolean on, Instant at) {
+            state = on;
+            List.copyOf(listeners).forEach(l -> l.lightSwitched(this, on, at));
         }
     }
 
-    static final class Dimmable extends Light<DimmableLightListener> implements DimmableLightProvider {
-        Percent level;
-
+    static final class Dimmable extends Light<DimmableLightListener, Percent> implements DimmableLightProvider {
         Dimmable(String uid, List<String> journal) {
             super(uid, journal);
         }
 
         @Override
         public Optional<Percent> brightness() {
-            return Optional.ofNullable(level);
+            return reported();
         }
 
         @Override
         public void setBrightness(Percent b) {
-            journal.add(uid + " " + b);
+            asked(b);
         }
     }
 

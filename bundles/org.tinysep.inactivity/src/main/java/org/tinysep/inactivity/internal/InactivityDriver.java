@@ -5,8 +5,6 @@ import java.time.ZoneId;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import org.osgi.service.component.annotations.Reference;
-import org.tinysep.api.health.SensorHealthProvider;
-import org.tinysep.api.health.UnmonitoredRoom;
 import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
 import org.osgi.service.component.annotations.ReferencePolicyOption;
@@ -16,7 +14,6 @@ import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.LearningSettings;
 import org.tinysep.inactivity.internal.learn.SleepRule;
-import java.util.List;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -35,6 +32,7 @@ import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.SingleDeviceWiring;
 import org.tinysep.device.support.TrackedPlacements;
+import org.tinysep.device.support.UnmonitoredRooms;
 
 /**
  * Inactivity Recognition driver: creates its single device when the first activity source (Movement, Door or
@@ -58,14 +56,11 @@ public final class InactivityDriver extends AbstractDriver {
     private HistoryLearner learner;
     private HistoryFromLog fromLog;
     private ExecutorService loader;
+    private UnmonitoredRooms unmonitored;
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
             policyOption = ReferencePolicyOption.GREEDY)
     private volatile EventLog eventLog;
-
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    private volatile SensorHealthProvider sensorHealth;
 
     public InactivityDriver() {
         super(NAME);
@@ -75,8 +70,9 @@ public final class InactivityDriver extends AbstractDriver {
     void activate(BundleContext bundleContext, InactivityConfig config) {
         limits = LimitTable.parse(config.defaultLimitMinutes(), config.typeLimits(), config.roomLimits());
         ZoneId zone = zone(config.timeZone());
-        words = new AlertMail(zone, this::unmonitoredRooms);
         start(bundleContext);
+        unmonitored = new UnmonitoredRooms(bundleContext);
+        words = new AlertMail(zone, unmonitored::now);
         policy = policy(config, zone);
         directory = new TrackedPlacements(bundleContext);
         wiring = new SingleDeviceWiring<>(this, InactivityDevice.class, this::newDevice, InactivityDevice::forget);
@@ -93,12 +89,6 @@ public final class InactivityDriver extends AbstractDriver {
             loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "inactivity-history"));
             loader.execute(() -> loadHistory(days));
         }
-    }
-
-    /** @return the rooms Sensor Health says cannot be heard now (empty without Sensor Health) */
-    private List<UnmonitoredRoom> unmonitoredRooms() {
-        SensorHealthProvider h = sensorHealth;
-        return h == null ? List.of() : h.unmonitoredRooms();
     }
 
     /** THESIS: fixed limits. LEARNED: a learner fed from the event log's history and live activity. */
@@ -153,6 +143,7 @@ public final class InactivityDriver extends AbstractDriver {
         wiring.close();
         stop();
         directory.close();
+        unmonitored.close();
     }
 
     /** @return the single device (not yet registered), its room types known to the learner */

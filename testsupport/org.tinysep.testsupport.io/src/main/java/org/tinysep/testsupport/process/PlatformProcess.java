@@ -12,13 +12,14 @@ import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 /**
  * A TinySEP distribution run as its own {@code java -jar tinysep.jar} process, as a user runs it (so a test can
  * also kill it with SIGKILL): shell commands go to its stdin, their output is read from stdout up to an
  * {@code echo} marker; its log (stderr) goes to {@code <logDir>/platform-<n>.log}. Written once for the launcher's
- * process tests and the integration tests' backup tests.
+ * process tests, the integration tests' backup tests and the benchmarks ({@link #attach}).
  */
 public final class PlatformProcess implements AutoCloseable {
 
@@ -32,13 +33,14 @@ public final class PlatformProcess implements AutoCloseable {
     private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
     private int marker;
 
-    private PlatformProcess(Process process) {
+    private PlatformProcess(Process process, Consumer<String> eachLine) {
         this.process = process;
         this.stdin = process.getOutputStream();
         Thread reader = new Thread(() -> {
             try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(),
                     StandardCharsets.UTF_8))) {
                 for (String line; (line = r.readLine()) != null; ) {
+                    eachLine.accept(line);
                     lines.add(line);
                 }
             } catch (IOException ignored) {
@@ -75,7 +77,16 @@ public final class PlatformProcess implements AutoCloseable {
         ProcessBuilder builder = new ProcessBuilder(command).directory(home.toFile())
                 .redirectError(ProcessBuilder.Redirect.appendTo(log.toFile()));
         builder.environment().remove("TINYSEP_DAEMON"); // the shell on stdin, whatever the test's environment says
-        return new PlatformProcess(builder.start());
+        return new PlatformProcess(builder.start(), line -> { });
+    }
+
+    /**
+     * Talks to a distribution process started elsewhere (the benchmarks start it with their own JVM options and
+     * environment): its shell through stdin/stdout as above; {@code eachLine} sees every stdout line first, on the
+     * reader thread (e.g. to time the start banner). Returns at once.
+     */
+    public static PlatformProcess attach(Process process, Consumer<String> eachLine) {
+        return new PlatformProcess(process, eachLine);
     }
 
     private static synchronized int nextLaunch() {

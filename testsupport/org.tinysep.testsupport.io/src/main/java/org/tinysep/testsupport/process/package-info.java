@@ -3,7 +3,7 @@
  * through its interactive shell.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.testsupport.process;
 
 import org.osgi.annotation.bundle.Export;

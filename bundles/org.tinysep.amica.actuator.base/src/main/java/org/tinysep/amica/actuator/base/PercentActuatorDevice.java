@@ -44,8 +44,20 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
      */
     public static final Duration PATIENCE = REPORT_INTERVAL.multipliedBy(2);
 
+    /**
+     * The listener call of a provider interface, e.g. {@code HeaterListener::potencyChanged}.
+     *
+     * @param <L> the listener interface
+     * @param <V> the provider interface the listener is told about
+     */
+    @FunctionalInterface
+    public interface ListenerCall<L, V> {
+        void tell(L listener, V source, Percent value, Instant at);
+    }
+
     private final BusRadioAmicaProvider bus;
     private final Listeners<L> listeners;
+    private final Teller<L> teller;
     private final String quantity;
     private final Class<P> payloadType;
     private final ToIntFunction<P> percentOf;
@@ -59,9 +71,12 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
      * @param payloadType status payload class; other payloads of a multi-type node are ignored
      * @param percentOf   the percentage a status payload reports
      * @param command     the payload that requests a percentage
+     * @param provides    the provider interface the device registers under and is told to listeners as
+     * @param call        the listener call, e.g. {@code HeaterListener::potencyChanged}
      */
-    protected PercentActuatorDevice(DriverContext context, BusRadioAmicaProvider bus, String label, String nodeType,
-            String quantity, Class<P> payloadType, ToIntFunction<P> percentOf, IntFunction<P> command) {
+    protected <V> PercentActuatorDevice(DriverContext context, BusRadioAmicaProvider bus, String label,
+            String nodeType, String quantity, Class<P> payloadType, ToIntFunction<P> percentOf, IntFunction<P> command,
+            Class<V> provides, ListenerCall<L, ? super V> call) {
         super(context, Uids.of(context.driverName(), bus.deviceUid()), context.driverName(), label + " " + bus.nodeId());
         this.bus = bus;
         this.listeners = new Listeners<>(uid());
@@ -72,10 +87,14 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::now, this::event);
         serviceProperty(DeviceProperties.NODE_ADDRESS, bus.nodeId());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {nodeType});
+        this.teller = (listener, value, at) -> call.tell(listener, provides.cast(this), value, at);
+        publish(this, provides);
     }
 
-    /** Tells one listener that the confirmed value changed. */
-    protected abstract void fire(L listener, Percent value, Instant at);
+    /** A listener call bound to this device as its provider interface. */
+    private interface Teller<L> {
+        void tell(L listener, Percent value, Instant at);
+    }
 
     @Override
     protected void onRegistered() {
@@ -95,7 +114,7 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
             return; // the bus radio already rejected and counted it
         }
         status(DeviceStatus.State.ONLINE, "");
-        setting.report(reported, at).ifPresent(v -> listeners.fire(l -> fire(l, v, at)));
+        setting.report(reported, at).ifPresent(v -> listeners.fire(l -> teller.tell(l, v, at)));
     }
 
     /** Sends the command for {@code value}; the value changes when the node confirms it. */
@@ -114,8 +133,8 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         return setting.value();
     }
 
-    /** Adds a listener (the provider interface's {@code connect}). */
-    protected final Connection addListener(L listener) {
+    /** The provider interface's {@code connect}. */
+    public final Connection connect(L listener) {
         return listeners.add(listener);
     }
 

@@ -36,12 +36,7 @@ class PercentActuatorDeviceTest {
     static final class Heater extends PercentActuatorDevice<HeaterControl, PotencyListener> {
         Heater(DriverContext context, FakeBus bus) {
             super(context, bus, "Heater", NodeType.HEATER, "potency", HeaterControl.class, HeaterControl::percent,
-                    HeaterControl::new);
-        }
-
-        @Override
-        protected void fire(PotencyListener listener, Percent value, Instant at) {
-            listener.changed(value, at);
+                    HeaterControl::new, Heater.class, (listener, self, value, at) -> listener.changed(value, at));
         }
 
         void setPotency(Percent value) {
@@ -50,10 +45,6 @@ class PercentActuatorDeviceTest {
 
         Optional<Percent> potency() {
             return value();
-        }
-
-        void connect(PotencyListener listener) {
-            addListener(listener);
         }
     }
 

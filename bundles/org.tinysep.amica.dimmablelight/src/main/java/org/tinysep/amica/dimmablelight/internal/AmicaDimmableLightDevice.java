@@ -1,13 +1,11 @@
 package org.tinysep.amica.dimmablelight.internal;
 
-import java.time.Instant;
 import java.util.Optional;
 import org.tinysep.amica.actuator.base.PercentActuatorDevice;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.api.actuator.DimmableLightListener;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.NodeType;
 import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.DriverContext;
@@ -20,27 +18,17 @@ import org.tinysep.device.support.DriverContext;
 final class AmicaDimmableLightDevice extends PercentActuatorDevice<LightControl, DimmableLightListener> implements DimmableLightProvider {
 
     AmicaDimmableLightDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, bus, "Dimmable light", NodeType.DIMMABLE_LIGHT, "brightness", LightControl.class, LightControl::percent, LightControl::new);
-        publish(this, DimmableLightProvider.class);
+        super(context, bus, "Dimmable light", NodeType.DIMMABLE_LIGHT, "brightness", LightControl.class, LightControl::percent, LightControl::new,
+                DimmableLightProvider.class, DimmableLightListener::brightnessChanged);
     }
 
     @Override
-    protected void fire(DimmableLightListener listener, Percent value, Instant at) {
-        listener.brightnessChanged(this, value, at);
-    }
-
-    @Override
-    public void setBrightness(Percent value) {
-        request(value);
+    public void setBrightness(Percent brightness) {
+        request(brightness);
     }
 
     @Override
     public Optional<Percent> brightness() {
         return value();
-    }
-
-    @Override
-    public Connection connect(DimmableLightListener listener) {
-        return addListener(listener);
     }
 }

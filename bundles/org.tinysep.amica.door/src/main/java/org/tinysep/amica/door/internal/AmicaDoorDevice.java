@@ -1,6 +1,5 @@
 package org.tinysep.amica.door.internal;
 
-import java.time.Instant;
 import java.util.List;
 import java.util.Locale;
 import org.tinysep.amica.protocol.AmicaPayloads;
@@ -11,7 +10,6 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
-import org.tinysep.api.sensor.OpenState;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.sensor.ContactSensorDevice;
 import org.tinysep.device.support.sensor.Source;
@@ -27,12 +25,7 @@ final class AmicaDoorDevice extends ContactSensorDevice<DoorListener> implements
 
     AmicaDoorDevice(DriverContext context, BusRadioAmicaProvider bus) {
         super(context, Source.amica(bus, AmicaPayloads::decode, ReedSwitchStatus.class, (r, at) -> open(r.open())),
-                NodeType.DOOR, "Door " + bus.nodeId(), "door", DoorProvider.class);
-    }
-
-    @Override
-    protected void tell(DoorListener listener, OpenState state, boolean first, Instant at) {
-        listener.doorChanged(this, state, first, at);
+                NodeType.DOOR, "Door " + bus.nodeId(), "door", DoorProvider.class, DoorListener::doorChanged);
     }
 
     @Override

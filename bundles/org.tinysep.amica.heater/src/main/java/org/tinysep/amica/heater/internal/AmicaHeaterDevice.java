@@ -1,13 +1,11 @@
 package org.tinysep.amica.heater.internal;
 
-import java.time.Instant;
 import java.util.Optional;
 import org.tinysep.amica.actuator.base.PercentActuatorDevice;
 import org.tinysep.amica.protocol.HeaterControl;
 import org.tinysep.api.actuator.HeaterListener;
 import org.tinysep.api.actuator.HeaterProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.NodeType;
 import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.DriverContext;
@@ -20,27 +18,17 @@ import org.tinysep.device.support.DriverContext;
 final class AmicaHeaterDevice extends PercentActuatorDevice<HeaterControl, HeaterListener> implements HeaterProvider {
 
     AmicaHeaterDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, bus, "Heater", NodeType.HEATER, "potency", HeaterControl.class, HeaterControl::percent, HeaterControl::new);
-        publish(this, HeaterProvider.class);
+        super(context, bus, "Heater", NodeType.HEATER, "potency", HeaterControl.class, HeaterControl::percent, HeaterControl::new,
+                HeaterProvider.class, HeaterListener::potencyChanged);
     }
 
     @Override
-    protected void fire(HeaterListener listener, Percent value, Instant at) {
-        listener.potencyChanged(this, value, at);
-    }
-
-    @Override
-    public void setPotency(Percent value) {
-        request(value);
+    public void setPotency(Percent potency) {
+        request(potency);
     }
 
     @Override
     public Optional<Percent> potency() {
         return value();
-    }
-
-    @Override
-    public Connection connect(HeaterListener listener) {
-        return addListener(listener);
     }
 }

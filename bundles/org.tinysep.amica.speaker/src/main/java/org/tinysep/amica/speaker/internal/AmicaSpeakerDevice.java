@@ -1,13 +1,11 @@
 package org.tinysep.amica.speaker.internal;
 
-import java.time.Instant;
 import java.util.Optional;
 import org.tinysep.amica.actuator.base.PercentActuatorDevice;
 import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.actuator.SpeakerListener;
 import org.tinysep.api.actuator.SpeakerProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.NodeType;
 import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.DriverContext;
@@ -20,27 +18,17 @@ import org.tinysep.device.support.DriverContext;
 final class AmicaSpeakerDevice extends PercentActuatorDevice<SpeakerControl, SpeakerListener> implements SpeakerProvider {
 
     AmicaSpeakerDevice(DriverContext context, BusRadioAmicaProvider bus) {
-        super(context, bus, "Speaker", NodeType.SPEAKER, "volume", SpeakerControl.class, SpeakerControl::percent, SpeakerControl::new);
-        publish(this, SpeakerProvider.class);
+        super(context, bus, "Speaker", NodeType.SPEAKER, "volume", SpeakerControl.class, SpeakerControl::percent, SpeakerControl::new,
+                SpeakerProvider.class, SpeakerListener::volumeChanged);
     }
 
     @Override
-    protected void fire(SpeakerListener listener, Percent value, Instant at) {
-        listener.volumeChanged(this, value, at);
-    }
-
-    @Override
-    public void setVolume(Percent value) {
-        request(value);
+    public void setVolume(Percent volume) {
+        request(volume);
     }
 
     @Override
     public Optional<Percent> volume() {
         return value();
-    }
-
-    @Override
-    public Connection connect(SpeakerListener listener) {
-        return addListener(listener);
     }
 }

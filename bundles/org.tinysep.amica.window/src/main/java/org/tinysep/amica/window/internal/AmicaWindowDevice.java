@@ -9,7 +9,6 @@ import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.Coordinates;
-import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.device.support.DriverContext;
@@ -28,12 +27,8 @@ final class AmicaWindowDevice extends ContactSensorDevice<WindowListener> implem
 
     AmicaWindowDevice(DriverContext context, BusRadioAmicaProvider bus) {
         super(context, Source.amica(bus, AmicaPayloads::decode, ReedSwitchStatus.class, (r, at) -> open(r.open())),
-                NodeType.WINDOW, "Window " + bus.nodeId(), "window", WindowProvider.class);
-    }
-
-    @Override
-    protected void tell(WindowListener listener, OpenState state, boolean first, Instant at) {
-        listener.windowChanged(this, state, first, at);
+                NodeType.WINDOW, "Window " + bus.nodeId(), "window", WindowProvider.class,
+                WindowListener::windowChanged);
     }
 
     @Override

@@ -4,17 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.device.support.testing.SunSpotDeviceTestSupport;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.SunSpotPayloads;
@@ -22,23 +18,11 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 
 /** Light Status payloads in, brightness changes out. */
-class SunSpotLightDeviceTest {
-
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-    private static final int LIGHT = SunSpotSensorType.LIGHT.code();
-
-    private final FakeSunSpotBus bus = new FakeSunSpotBus();
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final SunSpotLightDevice sensor = new SunSpotLightDevice(
-            new DriverContext(null, "d", "SunSpotLight", logs.reporter(), new PlatformClock(() -> T0)), bus);
-    private final List<String> heard = new ArrayList<>();
+class SunSpotLightDeviceTest extends SunSpotDeviceTestSupport<SunSpotLightDevice> {
 
     SunSpotLightDeviceTest() {
-        sensor.connect((src, b, at) -> heard.add(b + "@" + (at.getEpochSecond() - T0.getEpochSecond())));
-    }
-
-    private void feed(int percent, int second) {
-        sensor.payloadReceived(bus, LIGHT, SunSpotPayloads.encode(new LightStatus(percent)), T0.plusSeconds(second));
+        super("SunSpotLight", SunSpotSensorType.LIGHT.code(), SunSpotLightDevice::new);
+        sensor.connect((src, b, at) -> hear(b, at));
     }
 
     @Test
@@ -64,10 +48,10 @@ class SunSpotLightDeviceTest {
                 SunSpotPayloads.encode(new MovementDetection(true)), T0);
         assertEquals(DeviceStatus.State.UNKNOWN, sensor.status().state(), "nothing of ours arrived yet");
 
-        sensor.payloadReceived(bus, LIGHT, new byte[] {4, 1, 0, (byte) 150}, T0); // 150 %
-        sensor.payloadReceived(bus, LIGHT, new byte[] {4, 1, 0, (byte) 0xFF}, T0); // 255 %, or -1 if signed
-        sensor.payloadReceived(bus, LIGHT, new byte[] {4, 1, 0}, T0);
-        sensor.payloadReceived(bus, LIGHT, SunSpotPayloads.encode(new TemperatureStatus(21.0)), T0);
+        deliver(new byte[] {4, 1, 0, (byte) 150}, 0); // 150 %
+        deliver(new byte[] {4, 1, 0, (byte) 0xFF}, 0); // 255 %, or -1 if signed
+        deliver(new byte[] {4, 1, 0}, 0);
+        deliver(SunSpotPayloads.encode(new TemperatureStatus(21.0)), 0);
 
         assertEquals(List.of(), heard);
         assertTrue(sensor.brightness().isEmpty());
@@ -87,8 +71,7 @@ class SunSpotLightDeviceTest {
                 .map(Parameter::key).toList(), "only the common name and room");
     }
 
-    private String parameter(String key) {
-        return sensor.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
-                .orElseThrow();
+    private void feed(int percent, int second) {
+        deliver(SunSpotPayloads.encode(new LightStatus(percent)), second);
     }
 }

@@ -4,16 +4,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalDouble;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.testing.SunSpotDeviceTestSupport;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.SunSpotPayloads;
@@ -21,24 +16,11 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 
 /** Temperature Status payloads in, temperatures out, thinned by the dead band. */
-class SunSpotTemperatureDeviceTest {
-
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-    private static final int TEMPERATURE = SunSpotSensorType.TEMPERATURE.code();
-
-    private final FakeSunSpotBus bus = new FakeSunSpotBus();
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final SunSpotTemperatureDevice sensor = new SunSpotTemperatureDevice(
-            new DriverContext(null, "d", "SunSpotTemperature", logs.reporter(), new PlatformClock(() -> T0)), bus);
-    private final List<String> heard = new ArrayList<>();
+class SunSpotTemperatureDeviceTest extends SunSpotDeviceTestSupport<SunSpotTemperatureDevice> {
 
     SunSpotTemperatureDeviceTest() {
-        sensor.connect((src, celsius, at) -> heard.add(celsius + "@" + (at.getEpochSecond() - T0.getEpochSecond())));
-    }
-
-    private void feed(double celsius, int second) {
-        sensor.payloadReceived(bus, TEMPERATURE, SunSpotPayloads.encode(new TemperatureStatus(celsius)),
-                T0.plusSeconds(second));
+        super("SunSpotTemperature", SunSpotSensorType.TEMPERATURE.code(), SunSpotTemperatureDevice::new);
+        sensor.connect((src, celsius, at) -> hear(celsius, at));
     }
 
     @Test
@@ -85,10 +67,10 @@ class SunSpotTemperatureDeviceTest {
                 SunSpotPayloads.encode(new MovementDetection(true, null)), T0);
         assertEquals(DeviceStatus.State.UNKNOWN, sensor.status().state(), "nothing of ours arrived yet");
 
-        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {3, 1}, T0);
-        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {(byte) 0xFF, 0, 0, 0}, T0);
-        sensor.payloadReceived(bus, TEMPERATURE, new byte[] {3, 1, 0x7F, 0}, T0); // 3251.2 °C
-        sensor.payloadReceived(bus, TEMPERATURE, SunSpotPayloads.encode(new LightStatus(30)), T0);
+        deliver(new byte[] {3, 1}, 0);
+        deliver(new byte[] {(byte) 0xFF, 0, 0, 0}, 0);
+        deliver(new byte[] {3, 1, 0x7F, 0}, 0); // 3251.2 °C
+        deliver(SunSpotPayloads.encode(new LightStatus(30)), 0);
 
         assertEquals(List.of(), heard);
         assertTrue(sensor.celsius().isEmpty());
@@ -115,8 +97,7 @@ class SunSpotTemperatureDeviceTest {
         assertThrows(IllegalArgumentException.class, () -> sensor.setParameter("celsius", "20"));
     }
 
-    private String parameter(String key) {
-        return sensor.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
-                .orElseThrow();
+    private void feed(double celsius, int second) {
+        deliver(SunSpotPayloads.encode(new TemperatureStatus(celsius)), second);
     }
 }

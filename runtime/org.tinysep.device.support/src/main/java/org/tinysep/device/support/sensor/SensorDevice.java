@@ -37,8 +37,29 @@ import org.tinysep.device.support.Uids;
 public abstract class SensorDevice<L, V> extends AbstractDevice
         implements BusRadioAmicaListener, BusRadioSunSpotListener {
 
+    /**
+     * The listener call of a provider interface, passed to the constructor instead of overriding {@link #tell}, e.g.
+     * {@code DoorListener::doorChanged}.
+     *
+     * @param <L> the listener interface
+     * @param <P> the provider interface the listener is told about
+     * @param <V> the reading
+     */
+    @FunctionalInterface
+    public interface ListenerCall<L, P, V> {
+        void tell(L listener, P source, V reading, boolean first, Instant at);
+    }
+
+    /** A listener call bound to the provider interface the device is told as. */
+    private record BoundCall<L, P, V>(Class<P> provider, ListenerCall<L, ? super P, V> call) {
+        void tell(L listener, Object device, V reading, boolean first, Instant at) {
+            call.tell(listener, provider.cast(device), reading, first, at);
+        }
+    }
+
     private final Source<V> source;
     private final Listeners<L> listeners;
+    private final BoundCall<L, ?, V> call; // null: the subclass overrides tell
     private V latest; // guarded by this; null until the first report
     private V announced; // guarded by this; the reading of the last change
     private volatile Instant since;
@@ -50,16 +71,41 @@ public abstract class SensorDevice<L, V> extends AbstractDevice
      */
     protected SensorDevice(DriverContext context, Source<V> source, String nodeType, String name,
             Class<?>... provides) {
+        this(context, source, nodeType, name, null, provides);
+    }
+
+    /**
+     * A sensor that declares its listener call instead of overriding {@link #tell}.
+     *
+     * @param provides the provider interface this device registers under and is told to listeners as
+     * @param call     the listener call, e.g. {@code DoorListener::doorChanged}
+     */
+    protected <P> SensorDevice(DriverContext context, Source<V> source, String nodeType, String name,
+            Class<P> provides, ListenerCall<L, ? super P, V> call) {
+        this(context, source, nodeType, name, new BoundCall<>(provides, call), provides);
+    }
+
+    private SensorDevice(DriverContext context, Source<V> source, String nodeType, String name,
+            BoundCall<L, ?, V> call, Class<?>... provides) {
         super(context, Uids.of(context.driverName(), source.busDeviceUid()), context.driverName(), name);
         this.source = source;
         this.listeners = new Listeners<>(uid());
+        this.call = call;
         serviceProperty(DeviceProperties.NODE_ADDRESS, source.nodeAddress());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {nodeType});
         publish(this, provides);
     }
 
-    /** Calls one listener: the reading is a change, or the first report ({@code first}), or any report. */
-    protected abstract void tell(L listener, V reading, boolean first, Instant at);
+    /**
+     * Calls one listener: the reading is a change, or the first report ({@code first}), or any report. By default
+     * the listener call given to the constructor; a sensor built without one overrides this.
+     */
+    protected void tell(L listener, V reading, boolean first, Instant at) {
+        if (call == null) {
+            throw new IllegalStateException(getClass().getName() + " gives no listener call and does not override tell");
+        }
+        call.tell(listener, this, reading, first, at);
+    }
 
     /** @return whether {@code now} differs from the reading of the last change; default: not equal */
     protected boolean isChange(V before, V now) {

@@ -1,45 +1,24 @@
 package org.tinysep.device.support.sensor;
 
 import java.util.function.BiFunction;
-import org.osgi.framework.BundleContext;
-import org.osgi.service.component.annotations.Activate;
-import org.osgi.service.component.annotations.Deactivate;
-import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.ProviderDeviceDriver;
+import org.tinysep.device.support.NodeTypeDriver;
 
 /**
  * A sensor bundle's driver: one device per bus device (of type {@code P}) whose {@code tinysep.node.type} contains
  * the sensor's node type; nodes of other types are ignored (thesis Fig 3.3). The subclass is the DS component:
  * {@code @Component(service = {}, immediate = true)} and a constructor; its bundle's {@code bnd.bnd} says
- * {@code -dsannotations-options: inherit} so that the activate and deactivate methods here count.
+ * {@code -dsannotations-options: inherit} so that the activate and deactivate methods of {@link NodeTypeDriver}
+ * count.
  *
  * @param <P> the bus device interface, {@code BusRadioAmicaProvider} or {@code BusRadioSunSpotProvider}
  */
-public abstract class SensorDriver<P> extends ProviderDeviceDriver<P> {
-
-    private final BiFunction<DriverContext, P, AbstractDevice> devices;
+public abstract class SensorDriver<P> extends NodeTypeDriver<P> {
 
     /** @param devices makes the device of one bus device, e.g. {@code AmicaDoorDevice::new} */
     protected SensorDriver(String name, Class<P> bus, String nodeType,
             BiFunction<DriverContext, P, AbstractDevice> devices) {
-        super(name, bus, "(" + DeviceProperties.NODE_TYPE + "=" + nodeType + ")");
-        this.devices = devices;
-    }
-
-    @Activate
-    protected void activate(BundleContext bundleContext) {
-        open(bundleContext);
-    }
-
-    @Deactivate
-    protected void deactivate() {
-        close();
-    }
-
-    @Override
-    protected final AbstractDevice createDevice(P bus) {
-        return devices.apply(context(), bus);
+        super(name, bus, nodeType, devices);
     }
 }

@@ -3,9 +3,11 @@
  * filtering through its {@link Source} (one per node family), change detection, the first-report rule, the
  * {@code state}/{@code since} parameters and the listeners; {@link ContactSensorDevice}, {@link MotionSensorDevice}
  * and {@link MovementSensorDevice} add the rules of their kind once for both node families; {@link SensorDriver}
- * is the driver. Compiled into each sensor bundle like the rest of device support ({@code -conditionalpackage}).
+ * is the driver. A sensor declares its listener call to the constructor ({@link SensorDevice.ListenerCall}, e.g.
+ * {@code DoorListener::doorChanged}) or overrides {@code tell}; 2.0: {@link ContactSensorDevice} takes the call
+ * only. Compiled into each sensor bundle like the rest of device support ({@code -conditionalpackage}).
  */
-@Version("1.0.0")
+@Version("2.0.0")
 package org.tinysep.device.support.sensor;
 
 import org.osgi.annotation.versioning.Version;

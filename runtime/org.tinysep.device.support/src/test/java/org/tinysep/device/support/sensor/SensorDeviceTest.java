@@ -1,6 +1,8 @@
 package org.tinysep.device.support.sensor;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.time.Instant;
 import java.util.ArrayList;
@@ -34,12 +36,7 @@ class SensorDeviceTest {
 
     private static final class Door extends ContactSensorDevice<DoorListener> implements DoorProvider {
         Door(DriverContext context, Source<OpenState> source) {
-            super(context, source, "door", "Door", "door", DoorProvider.class);
-        }
-
-        @Override
-        protected void tell(DoorListener listener, OpenState state, boolean first, Instant at) {
-            listener.doorChanged(this, state, first, at);
+            super(context, source, "door", "Door", "door", DoorProvider.class, DoorListener::doorChanged);
         }
 
         @Override
@@ -119,6 +116,24 @@ class SensorDeviceTest {
         assertEquals(OpenState.OPEN, d.state());
         d.payloadReceived(bus, new byte[] {0}, T0.plusSeconds(2)); // not its family
         assertEquals(OpenState.OPEN, d.state());
+    }
+
+    @Test
+    void theListenerCallIsToldTheDeviceAsItsProviderInterface() {
+        List<DoorProvider> sources = new ArrayList<>();
+        door.connect((source, state, at) -> sources.add(source));
+        door.payloadReceived(bus, new byte[] {1}, T0);
+        assertEquals(List.of(door), sources);
+    }
+
+    @Test
+    void aSensorWithoutListenerCallMustOverrideTell() {
+        SensorDevice<DoorListener, OpenState> bare = new SensorDevice<>(context, Source.amica(bus,
+                SensorDeviceTest::decode, Boolean.class, (open, at) -> ContactSensorDevice.open(open)), "door", "Bare") {
+        };
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> bare.tell((source, state, at) -> { }, OpenState.OPEN, true, T0));
+        assertTrue(e.getMessage().contains("gives no listener call and does not override tell"), e.getMessage());
     }
 
     private String parameter(String key) {
