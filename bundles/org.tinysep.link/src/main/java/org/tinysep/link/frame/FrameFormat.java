@@ -74,6 +74,12 @@ public abstract class FrameFormat<F, R> {
     /** Builds the frame at {@code off}; the caller has checked it. */
     protected abstract F frameAt(byte[] buf, int off);
 
+    /** @return the frame's payload, not copied: {@link #encode(Object)} only reads it */
+    protected abstract byte[] payloadOf(F frame);
+
+    /** Writes the family's header fields of {@code frame} into {@code out}; S, L and CK are written by the caller. */
+    protected abstract void writeHeader(F frame, byte[] out);
+
     /** @return the reason used when bytes of an incomplete frame are discarded */
     public final R truncated() {
         return truncated;
@@ -116,6 +122,19 @@ public abstract class FrameFormat<F, R> {
         out[checksum + 1] = (byte) payloadLength;
         out[checksum] = (byte) checksum(out, 0, payloadLength);
         return out;
+    }
+
+    /**
+     * Encodes one frame: the family's header fields, the payload after the header, then S, L and CK ({@link #seal}).
+     *
+     * @return the frame's bytes, {@link #headerLength()} + payload length long
+     */
+    public final byte[] encode(F frame) {
+        byte[] payload = payloadOf(frame);
+        byte[] out = new byte[headerLength + payload.length];
+        writeHeader(frame, out);
+        System.arraycopy(payload, 0, out, headerLength, payload.length);
+        return seal(out, payload.length);
     }
 
     /** @return why the range is not exactly one valid frame, or null if it is */

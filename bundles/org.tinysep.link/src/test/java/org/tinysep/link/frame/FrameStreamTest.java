@@ -1,5 +1,6 @@
 package org.tinysep.link.frame;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -29,6 +30,17 @@ class FrameStreamTest {
         protected String frameAt(byte[] buf, int off) {
             return "frame " + Arrays.toString(Arrays.copyOfRange(buf, off + 3, off + 3 + size(buf, off)));
         }
+
+        /** The toy encodes its payload given as hex text; it has no header fields of its own. */
+        @Override
+        protected byte[] payloadOf(String frame) {
+            return hex(frame);
+        }
+
+        @Override
+        protected void writeHeader(String frame, byte[] out) {
+            out[1] = 0x55; // CK: overwritten by seal, so the toy's encoding shows that seal comes last
+        }
     }
 
     private static final Toy TOY = new Toy();
@@ -55,6 +67,15 @@ class FrameStreamTest {
         byte[] withoutCk = {f[0], f[2], f[3], f[4]};
         assertEquals(Crc8.of(withoutCk, 0, withoutCk.length), f[1] & 0xFF);
         assertNull(TOY.check(f, 0, f.length));
+    }
+
+    @Test
+    void encodeWritesTheHeaderThePayloadAndSealsLast() {
+        byte[] f = TOY.encode("01 02");
+        assertArrayEquals(frame("01 02"), f);
+        assertEquals("frame [1, 2]", TOY.decode(f, 0, f.length, (r, d) -> new IllegalStateException(r + d)));
+        assertArrayEquals(hex("00 00 00"), TOY.encode(""));
+        assertEquals(3 + 255, TOY.encode("00 ".repeat(255).trim()).length);
     }
 
     @Test
