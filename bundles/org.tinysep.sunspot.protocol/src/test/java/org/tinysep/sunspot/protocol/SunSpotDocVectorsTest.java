@@ -1,25 +1,28 @@
 package org.tinysep.sunspot.protocol;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.Codecs;
 import org.tinysep.link.frame.testing.DocVectors;
 
 /**
  * Keeps {@code docs/protocols/sunspot.md} honest: every vector in its fenced {@code vector} blocks must decode and
  * encode exactly as the document states (the runner, {@link DocVectors}, is shared with the AmICA protocol).
  */
-class SunSpotDocVectorsTest implements DocVectors.Family {
+class SunSpotDocVectorsTest implements DocVectors.Family<SunSpotFrame, SunSpotPayload> {
+
+    /** The Sun SPOT codecs as the shared runners see them. */
+    static final Codecs<SunSpotFrame, SunSpotPayload> CODECS = new Codecs<>(SunSpotCodec::decode,
+            SunSpotCodec::encode, SunSpotPayloads::decode, SunSpotPayloads::encode, SunSpotCodec.HEADER_LENGTH,
+            e -> ((SunSpotProtocolException) e).reason());
 
     private static final Pattern FRAME = Pattern.compile("source=([0-9A-Fa-f.]+) type=(\\d+)");
 
@@ -44,43 +47,23 @@ class SunSpotDocVectorsTest implements DocVectors.Family {
 
     @Test
     void everyVectorDecodesAndEncodesAsDocumented() throws Exception {
-        DocVectors.check(vectors(), this);
+        DocVectors.check(vectors(), CODECS, this);
     }
 
     @Override
-    public String rejection(String name, byte[] bytes) {
-        return assertThrows(SunSpotProtocolException.class, () -> SunSpotCodec.decode(bytes, 0, bytes.length), name)
-                .reason().name();
+    public SunSpotFrame frame(String name, Map<String, String> v, byte[] payload) {
+        Matcher m = DocVectors.frameLine(FRAME, name, v, "source=.... type=..");
+        return new SunSpotFrame(SunSpotAddress.parse(m.group(1)), Integer.parseInt(m.group(2)), payload);
     }
 
     @Override
-    public void valid(String name, Map<String, String> v, byte[] bytes) throws Exception {
-        Matcher m = FRAME.matcher(v.getOrDefault("frame", ""));
-        DocVectors.requireFrame(m.matches(), name, "source=.... type=..");
-        byte[] payload = Arrays.copyOfRange(bytes, Math.min(SunSpotCodec.HEADER_LENGTH, bytes.length), bytes.length);
-        SunSpotFrame expected =
-                new SunSpotFrame(SunSpotAddress.parse(m.group(1)), Integer.parseInt(m.group(2)), payload);
-        assertEquals(expected, SunSpotCodec.decode(bytes, 0, bytes.length), name + ": decode");
-        assertArrayEquals(bytes, SunSpotCodec.encode(expected), name + ": encode");
-
-        if (v.containsKey("payload-reject")) {
-            SunSpotProtocolException e =
-                    assertThrows(SunSpotProtocolException.class, () -> SunSpotPayloads.decode(payload), name);
-            assertEquals(RejectReason.valueOf(v.get("payload-reject")), e.reason(), name);
-            return;
-        }
-        SunSpotPayload decoded = SunSpotPayloads.decode(payload);
-        assertEquals(v.get("payload"), decoded.toString(), name + ": payload");
-        assertArrayEquals(payload, SunSpotPayloads.encode(decoded), name + ": payload encode");
-        assertEquals(decoded.sensorType().code(), expected.sensorType(), name + ": sensor type");
+    public void payload(String name, Map<String, String> v, SunSpotFrame frame, SunSpotPayload decoded) {
+        assertEquals(decoded.sensorType().code(), frame.sensorType(), name + ": sensor type");
     }
 
     @Test
     void streamDecoderFindsEveryValidFrameOfKnownTypeInOneStream() throws Exception {
-        DocVectors.assertStreamFindsEvery(vectors(), bytes -> SunSpotSensorType.isKnown(bytes[9]), 15, stream -> {
-            RecordingSink sink = new RecordingSink();
-            new SunSpotStreamDecoder(sink).accept(stream, 0, stream.length);
-            return new long[] {sink.frames, sink.skipped};
-        });
+        DocVectors.assertStreamFindsEvery(vectors(), bytes -> SunSpotSensorType.isKnown(bytes[9]), 15,
+                RecordingSink::new, SunSpotStreamDecoder::new);
     }
 }

@@ -10,6 +10,8 @@ import static org.tinysep.link.frame.testing.TestBytes.hex;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.function.Function;
+import java.util.function.IntFunction;
 import java.util.function.IntSupplier;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -18,9 +20,34 @@ import org.tinysep.link.frame.FrameStream;
 
 /**
  * What every protocol family's stream decoder must do, written once: a family's decoder test extends this class,
- * names its sample frames and the few places where the families differ, and keeps only the tests of its own rules.
+ * describes its decoder and sample frames in one {@link Family} and keeps only the tests of its own rules, which
+ * use the decoder and sink made for each test ({@link #decoder}, {@link #sink}, {@link #feed}, {@link #text}).
+ *
+ * @param <F> the frame
+ * @param <R> the reject reason
+ * @param <S> the family's recording sink
  */
-public abstract class StreamDecoderContract {
+public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
+
+    /**
+     * What the contract needs of a family.
+     *
+     * @param sinks             makes the family's recording sink
+     * @param decoders          makes the family's stream decoder with a sink (null must throw NullPointerException)
+     * @param codec             the family's frame codec's {@code decode}
+     * @param samples           four valid frames; the first without its last byte, then the second, resynchronise
+     *                          at the second
+     * @param numbered          the i-th of 2,000 valid frames for the buffer tests
+     * @param maxFrame          the longest frame of the family
+     * @param checksumIndex     the index of the checksum byte in the third sample
+     * @param zeroRunReason     the reason of a run of zero bytes
+     * @param zerosLeftBuffered how many bytes of a long run of zeros wait in the buffer, undecided
+     * @param trickyGarbage     garbage at the start of the split test, chosen by the family to look like a header
+     */
+    public record Family<F, R, S extends Recording<F, R>>(Supplier<S> sinks, Function<S, FrameStream<F, R>> decoders,
+            Codecs.FrameDecoder<F> codec, List<byte[]> samples, IntFunction<byte[]> numbered, int maxFrame,
+            int checksumIndex, String zeroRunReason, int zerosLeftBuffered, byte[] trickyGarbage) {
+    }
 
     /**
      * A fresh decoder of the family under test, fed and read through its own recording sink.
@@ -31,36 +58,65 @@ public abstract class StreamDecoderContract {
             Supplier<List<String>> events, IntSupplier frames, LongSupplier skipped) {
     }
 
-    /** @return a fresh decoder and sink */
-    protected abstract Probe fresh();
+    private final Family<F, R, S> family;
+    /** This test's sink. */
+    protected final S sink;
+    /** This test's decoder, reporting to {@link #sink}. */
+    protected final FrameStream<F, R> decoder;
 
-    /** @return four valid frames; the first without its last byte, then the second, resynchronise at the second */
-    protected abstract List<byte[]> samples();
+    protected StreamDecoderContract(Family<F, R, S> family) {
+        this.family = family;
+        this.sink = family.sinks().get();
+        this.decoder = family.decoders().apply(sink);
+    }
+
+    /** Feeds {@code bytes} to this test's decoder in one call. */
+    protected final void feed(byte[] bytes) {
+        decoder.accept(bytes, 0, bytes.length);
+    }
 
     /** @return what the sink records for a valid frame */
-    protected abstract String text(byte[] frame) throws Exception;
+    protected final String text(byte[] frame) throws Exception {
+        return family.codec().decode(frame, 0, frame.length).toString();
+    }
 
-    /** @return the i-th of 2,000 valid frames for the buffer tests */
-    protected abstract byte[] numbered(int i);
+    /** @return a fresh decoder and sink */
+    private Probe fresh() {
+        S r = family.sinks().get();
+        FrameStream<F, R> d = family.decoders().apply(r);
+        return new Probe(d::accept, d::buffered, d::reset, () -> r.events, () -> r.frames, () -> r.skipped);
+    }
 
-    /** @return the longest frame of the family */
-    protected abstract int maxFrame();
+    private List<byte[]> samples() {
+        return family.samples();
+    }
 
-    /** @return the index of the checksum byte in the third sample */
-    protected abstract int checksumIndex();
+    private byte[] trickyGarbage() {
+        return family.trickyGarbage();
+    }
 
-    /** @return the reason of a run of zero bytes */
-    protected abstract String zeroRunReason();
+    private byte[] numbered(int i) {
+        return family.numbered().apply(i);
+    }
 
-    /** @return how many bytes of a long run of zeros wait in the buffer, undecided */
-    protected abstract int zerosLeftBuffered();
+    private int maxFrame() {
+        return family.maxFrame();
+    }
 
-    /** Creates a decoder without a sink (must throw NullPointerException). */
-    protected abstract void newWithNullSink();
+    private int checksumIndex() {
+        return family.checksumIndex();
+    }
 
-    /** @return garbage at the start of the split test, chosen by the family to look like a header */
-    protected byte[] trickyGarbage() {
-        return hex("01 02 03");
+    private String zeroRunReason() {
+        return family.zeroRunReason();
+    }
+
+    private int zerosLeftBuffered() {
+        return family.zerosLeftBuffered();
+    }
+
+    private void newWithNullSink() {
+        family.decoders().apply(null);
     }
 
     private static void feed(Probe p, byte[] bytes) {
