@@ -71,6 +71,18 @@ public final class DocVectors {
         return out;
     }
 
+    /**
+     * The document has at least 20 vectors, and for each of {@code required} a vector whose {@code key} value
+     * contains it (e.g. a vector's name, or the payload text of a valid vector).
+     */
+    public static void assertRequired(List<Map<String, String>> vectors, String key, List<String> required) {
+        assertTrue(vectors.size() >= 20, "vectors found: " + vectors.size());
+        for (String r : required) {
+            assertTrue(vectors.stream().anyMatch(v -> v.getOrDefault(key, "").contains(r)),
+                    "no vector whose " + key + " contains " + r);
+        }
+    }
+
     /** Every reason but the exceptions must be the {@code reject} or {@code payload-reject} of some vector. */
     public static void assertEveryReasonUsed(List<Map<String, String>> vectors, Enum<?>[] reasons,
             List<? extends Enum<?>> except) {

@@ -43,10 +43,11 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
      * @param zeroRunReason     the reason of a run of zero bytes
      * @param zerosLeftBuffered how many bytes of a long run of zeros wait in the buffer, undecided
      * @param trickyGarbage     garbage at the start of the split test, chosen by the family to look like a header
+     * @param garbageReason     the reason of the garbage {@code FF 00 13} before the first sample
      */
     public record Family<F, R, S extends Recording<F, R>>(Supplier<S> sinks, Function<S, FrameStream<F, R>> decoders,
             Codecs.FrameDecoder<F> codec, List<byte[]> samples, IntFunction<byte[]> numbered, int maxFrame,
-            int checksumIndex, String zeroRunReason, int zerosLeftBuffered, byte[] trickyGarbage) {
+            int checksumIndex, String zeroRunReason, int zerosLeftBuffered, byte[] trickyGarbage, String garbageReason) {
     }
 
     /**
@@ -87,38 +88,6 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
         return new Probe(d::accept, d::buffered, d::reset, () -> r.events, () -> r.frames, () -> r.skipped);
     }
 
-    private List<byte[]> samples() {
-        return family.samples();
-    }
-
-    private byte[] trickyGarbage() {
-        return family.trickyGarbage();
-    }
-
-    private byte[] numbered(int i) {
-        return family.numbered().apply(i);
-    }
-
-    private int maxFrame() {
-        return family.maxFrame();
-    }
-
-    private int checksumIndex() {
-        return family.checksumIndex();
-    }
-
-    private String zeroRunReason() {
-        return family.zeroRunReason();
-    }
-
-    private int zerosLeftBuffered() {
-        return family.zerosLeftBuffered();
-    }
-
-    private void newWithNullSink() {
-        family.decoders().apply(null);
-    }
-
     private static void feed(Probe p, byte[] bytes) {
         p.decoder().accept(bytes, 0, bytes.length);
     }
@@ -132,20 +101,27 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
     }
 
     private byte[] sample(int i) {
-        return samples().get(i);
+        return family.samples().get(i);
     }
 
     private byte[] badChecksum() {
         byte[] bad = sample(2).clone();
-        bad[checksumIndex()] ^= 0x40;
+        bad[family.checksumIndex()] ^= 0x40;
         return bad;
+    }
+
+    @Test
+    void skipsGarbageBeforeAFrameAndReportsItOnce() throws Exception {
+        Probe p = fresh();
+        feed(p, concat(hex("FF 00 13"), sample(0)));
+        assertEquals(List.of(family.garbageReason() + " 3", text(sample(0))), p.events().get());
     }
 
     @Test
     void decodesBackToBackFrames() throws Exception {
         Probe p = fresh();
-        feed(p, concat(samples().toArray(byte[][]::new)));
-        assertEquals(texts(samples().toArray(byte[][]::new)), p.events().get());
+        feed(p, concat(family.samples().toArray(byte[][]::new)));
+        assertEquals(texts(family.samples().toArray(byte[][]::new)), p.events().get());
         assertEquals(0, p.buffered().getAsInt());
     }
 
@@ -166,7 +142,7 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
 
     @Test
     void sameResultWhenSplitAtEveryPairOfByteBoundaries() throws Exception {
-        byte[] stream = concat(trickyGarbage(), sample(0), hex("FF"), sample(1), badChecksum(), sample(2), sample(3));
+        byte[] stream = concat(family.trickyGarbage(), sample(0), hex("FF"), sample(1), badChecksum(), sample(2), sample(3));
         Probe p = fresh();
         feed(p, stream);
         List<String> expected = List.copyOf(p.events().get());
@@ -184,7 +160,7 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
         int count = 2000;
         byte[][] frames = new byte[count][];
         for (int i = 0; i < count; i++) {
-            frames[i] = numbered(i);
+            frames[i] = family.numbered().apply(i);
         }
         Probe p = fresh();
         feed(p, concat(frames));
@@ -197,8 +173,8 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
     void bufferStaysBoundedUnderEndlessGarbageAndEveryByteIsAccountedFor() throws Exception {
         Probe p = fresh();
         FrameChecks.assertEndlessGarbageStaysBounded(new FrameChecks.Counted(p.decoder(), p.buffered(), p.frames(),
-                p.skipped(), () -> p.events().get().size()), maxFrame(), FrameStream.BUFFER_SIZE);
-        feed(p, concat(sample(0), new byte[maxFrame()], sample(1)));
+                p.skipped(), () -> p.events().get().size()), family.maxFrame(), FrameStream.BUFFER_SIZE);
+        feed(p, concat(sample(0), new byte[family.maxFrame()], sample(1)));
         assertTrue(p.frames().getAsInt() >= 1 && p.frames().getAsInt() <= 2, "frames after garbage: " + p.frames().getAsInt());
         List<String> events = p.events().get();
         assertEquals(text(sample(1)), events.get(events.size() - 1), "a frame after garbage is decoded");
@@ -208,10 +184,10 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
     void longRunsAreReportedInChunksOfTheBufferSize() throws Exception {
         Probe p = fresh();
         int size = FrameStream.BUFFER_SIZE;
-        String reason = zeroRunReason();
+        String reason = family.zeroRunReason();
         feed(p, new byte[10_000]);
         assertEquals(List.of(reason + " " + size, reason + " " + size), p.events().get());
-        assertEquals(zerosLeftBuffered(), p.buffered().getAsInt());
+        assertEquals(family.zerosLeftBuffered(), p.buffered().getAsInt());
         feed(p, sample(0));
         assertEquals(List.of(reason + " " + size, reason + " " + size, reason + " " + (10_000 - 2 * size),
                 text(sample(0))), p.events().get());
@@ -234,6 +210,6 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
     void rejectsRangesOutsideTheInput() {
         Probe p = fresh();
         assertThrows(IndexOutOfBoundsException.class, () -> p.decoder().accept(new byte[4], 2, 3));
-        assertThrows(NullPointerException.class, this::newWithNullSink);
+        assertThrows(NullPointerException.class, () -> family.decoders().apply(null));
     }
 }
