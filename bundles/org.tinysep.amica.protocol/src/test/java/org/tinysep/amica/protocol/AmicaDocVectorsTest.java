@@ -12,12 +12,13 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.tinysep.link.frame.testing.Codecs;
 import org.tinysep.link.frame.testing.DocVectors;
+import org.tinysep.link.frame.testing.DocVectorsContract;
 
 /**
  * Keeps {@code docs/protocols/amica.md} honest: every vector in its fenced {@code vector} blocks must decode and
  * encode exactly as the document states (the runner, {@link DocVectors}, is shared with the Sun SPOT protocol).
  */
-class AmicaDocVectorsTest implements DocVectors.Family<AmicaFrame, AmicaPayload> {
+class AmicaDocVectorsTest extends DocVectorsContract<AmicaFrame, AmicaPayload> {
 
     /** The AmICA codecs as the shared runners see them. */
     static final Codecs<AmicaFrame, AmicaPayload> CODECS = new Codecs<>(AmicaCodec::decode, AmicaCodec::encode,
@@ -27,9 +28,8 @@ class AmicaDocVectorsTest implements DocVectors.Family<AmicaFrame, AmicaPayload>
     private static final Pattern FRAME =
             Pattern.compile("ng=(\\d+) src=(\\d+) dst=(\\d+) seq=(\\d+)");
 
-    /** Reads every vector: a map of key to value per vector, in document order. */
-    static List<Map<String, String>> vectors() throws IOException {
-        return DocVectors.read("amica.md");
+    AmicaDocVectorsTest() {
+        super("amica.md", CODECS);
     }
 
     @Test
@@ -39,11 +39,6 @@ class AmicaDocVectorsTest implements DocVectors.Family<AmicaFrame, AmicaPayload>
                 "movement detected by 1.17", "reed switch of 1.18 open",
                 "light command 5 2 0 40 from the platform to 1.20"));
         DocVectors.assertEveryReasonUsed(vectors, RejectReason.values(), List.of(RejectReason.UNKNOWN_NODE));
-    }
-
-    @Test
-    void everyVectorDecodesAndEncodesAsDocumented() throws Exception {
-        DocVectors.check(vectors(), CODECS, this);
     }
 
     @Override

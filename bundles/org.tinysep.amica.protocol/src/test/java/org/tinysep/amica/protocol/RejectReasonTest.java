@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.DocVectors;
 import org.tinysep.link.frame.testing.ReasonChecks;
 
 /**
@@ -17,7 +18,7 @@ class RejectReasonTest {
     void everyReasonIsProvoked() throws IOException {
         // UNKNOWN_NODE is raised by the bus radios, which construct the exception themselves
         AmicaProtocolException unknown = new AmicaProtocolException(RejectReason.UNKNOWN_NODE, "node 1.99");
-        ReasonChecks.assertEveryReasonProvoked(AmicaDocVectorsTest.vectors(), AmicaDocVectorsTest.CODECS,
+        ReasonChecks.assertEveryReasonProvoked(DocVectors.read("amica.md"), AmicaDocVectorsTest.CODECS,
                 RejectReason.values(), unknown.reason());
         assertEquals("UNKNOWN_NODE (packet from an unknown node that is not a keep-alive): node 1.99",
                 unknown.getMessage());

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.DocVectors;
 import org.tinysep.link.frame.testing.ReasonChecks;
 
 /**
@@ -15,7 +16,7 @@ class RejectReasonTest {
 
     @Test
     void everyReasonIsProvoked() throws IOException {
-        ReasonChecks.assertEveryReasonProvoked(SunSpotDocVectorsTest.vectors(), SunSpotDocVectorsTest.CODECS,
+        ReasonChecks.assertEveryReasonProvoked(DocVectors.read("sunspot.md"), SunSpotDocVectorsTest.CODECS,
                 RejectReason.values());
     }
 

@@ -28,6 +28,28 @@ class SunSpotDecoderFuzzTest {
         return SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(Fuzz.anyLong(r)), payload));
     }
 
+    /** @return the frame {@code bytes} decode to, which re-encodes to them, or null if they are rejected */
+    private static SunSpotFrame decodedOrRejected(byte[] bytes) {
+        try {
+            SunSpotFrame f = SunSpotCodec.decode(bytes, 0, bytes.length);
+            assertArrayEquals(bytes, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
+            return f;
+        } catch (SunSpotProtocolException e) {
+            assertReasonAndMessage(e);
+            return null;
+        }
+    }
+
+    /** A payload decodes and re-encodes to its bytes, or is rejected with a reason and a message. */
+    private static void payloadDecodedOrRejected(byte[] payload) {
+        try {
+            SunSpotPayload p = SunSpotPayloads.decode(payload);
+            assertArrayEquals(payload, SunSpotPayloads.encode(p), "a decoded payload re-encodes");
+        } catch (SunSpotProtocolException e) {
+            assertReasonAndMessage(e);
+        }
+    }
+
     private static byte[] garbage(Random r) {
         return Fuzz.bytes(r, 3000);
     }
@@ -35,13 +57,7 @@ class SunSpotDecoderFuzzTest {
     @Test
     void decodeOfRandomBytesThrowsOnlyProtocolExceptions() {
         Fuzz.forAll(401, 2000, r -> {
-            byte[] bytes = Fuzz.bytes(r, 300);
-            try {
-                SunSpotFrame f = SunSpotCodec.decode(bytes, 0, bytes.length);
-                assertArrayEquals(bytes, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
-            }
+            decodedOrRejected(Fuzz.bytes(r, 300));
         });
     }
 
@@ -50,17 +66,9 @@ class SunSpotDecoderFuzzTest {
         Fuzz.forAll(402, 2000, r -> {
             byte[] frame = validFrame(r);
             byte[] mutated = mutate(frame, r.nextInt(4), Fuzz.between(r, 0, frame.length), Fuzz.anyByte(r));
-            try {
-                SunSpotFrame f = SunSpotCodec.decode(mutated, 0, mutated.length);
-                assertArrayEquals(mutated, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
-                try {
-                    SunSpotPayload p = SunSpotPayloads.decode(f.payload());
-                    assertArrayEquals(f.payload(), SunSpotPayloads.encode(p), "a decoded payload re-encodes");
-                } catch (SunSpotProtocolException e) {
-                    assertReasonAndMessage(e);
-                }
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
+            SunSpotFrame f = decodedOrRejected(mutated);
+            if (f != null) {
+                payloadDecodedOrRejected(f.payload());
             }
         });
     }
@@ -81,13 +89,7 @@ class SunSpotDecoderFuzzTest {
     @Test
     void payloadDecodeOfRandomBytesIsCanonicalOrAProtocolException() {
         Fuzz.forAll(404, 2000, r -> {
-            byte[] payload = Fuzz.bytes(r, 20);
-            try {
-                SunSpotPayload p = SunSpotPayloads.decode(payload);
-                assertArrayEquals(payload, SunSpotPayloads.encode(p));
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
-            }
+            payloadDecodedOrRejected(Fuzz.bytes(r, 20));
         });
     }
 
