@@ -24,7 +24,8 @@ class AmicaStreamDecoderTest extends StreamDecoderContract<AmicaFrame, RejectRea
                 i -> AmicaCodec.encode(new AmicaFrame(1, 17, 0, i % 256, new byte[] {5, 2, 0, (byte) (i % 101)})),
                 AmicaCodec.MAX_FRAME, 6, "BAD_HEADER", 1,
                 hex("01 A1 02"), // garbage that looks like a header with S = L = 1: the CRC rejects it
-                "BAD_HEADER"));
+                "BAD_HEADER", new Resets(hex("00 00 00"), "BAD_HEADER", 5,
+                        new byte[AmicaStreamDecoder.BUFFER_SIZE - 1], "BAD_HEADER", Arrays.copyOf(KEEP_ALIVE_1_17, 10))));
     }
 
     @Test
@@ -47,28 +48,4 @@ class AmicaStreamDecoderTest extends StreamDecoderContract<AmicaFrame, RejectRea
         feed(concat(empty, empty));
         assertEquals(List.of(text(empty), text(empty)), sink.events);
     }
-
-    @Test
-    void resetReportsPendingGarbageAndIncompleteFrameAsOneRun() {
-        feed(concat(hex("00 00 00"), Arrays.copyOf(MOVEMENT_1_17, 5)));
-        decoder.reset();
-        assertEquals(List.of("BAD_HEADER 8"), sink.events);
-        decoder.reset();
-        assertEquals(1, sink.events.size(), "nothing left to report");
-    }
-
-    @Test
-    void resetReportsARunLongerThanTheBufferInChunksOfTheBufferSize() {
-        // 4095 dropped bytes (one short of a reported chunk), then 10 bytes of an incomplete candidate frame
-        feed(concat(new byte[AmicaStreamDecoder.BUFFER_SIZE - 1], Arrays.copyOf(KEEP_ALIVE_1_17, 10)));
-        assertEquals(List.of(), sink.events);
-        assertEquals(10, decoder.buffered());
-        decoder.reset();
-        // the run with its reason up to the bound, then the rest of the candidate as a truncated frame
-        assertEquals(List.of("BAD_HEADER 4096", "TRUNCATED 9"), sink.events);
-        assertEquals(0, decoder.buffered());
-        decoder.reset();
-        assertEquals(2, sink.events.size(), "nothing left to report");
-    }
-
 }

@@ -50,23 +50,25 @@ class SunSpotDecoderFuzzTest {
         }
     }
 
+    /** A valid frame with one random mutation (see {@code mutate}). */
+    private static byte[] mutatedFrame(Random r) {
+        byte[] frame = validFrame(r);
+        return mutate(frame, r.nextInt(4), Fuzz.between(r, 0, frame.length), Fuzz.anyByte(r));
+    }
+
     private static byte[] garbage(Random r) {
         return Fuzz.bytes(r, 3000);
     }
 
     @Test
     void decodeOfRandomBytesThrowsOnlyProtocolExceptions() {
-        Fuzz.forAll(401, 2000, r -> {
-            decodedOrRejected(Fuzz.bytes(r, 300));
-        });
+        Fuzz.forAll(401, 2000, r -> decodedOrRejected(Fuzz.bytes(r, 300)));
     }
 
     @Test
     void decodeOfMutatedFramesThrowsOnlyProtocolExceptions() {
         Fuzz.forAll(402, 2000, r -> {
-            byte[] frame = validFrame(r);
-            byte[] mutated = mutate(frame, r.nextInt(4), Fuzz.between(r, 0, frame.length), Fuzz.anyByte(r));
-            SunSpotFrame f = decodedOrRejected(mutated);
+            SunSpotFrame f = decodedOrRejected(mutatedFrame(r));
             if (f != null) {
                 payloadDecodedOrRejected(f.payload());
             }
@@ -88,9 +90,7 @@ class SunSpotDecoderFuzzTest {
 
     @Test
     void payloadDecodeOfRandomBytesIsCanonicalOrAProtocolException() {
-        Fuzz.forAll(404, 2000, r -> {
-            payloadDecodedOrRejected(Fuzz.bytes(r, 20));
-        });
+        Fuzz.forAll(404, 2000, r -> payloadDecodedOrRejected(Fuzz.bytes(r, 20)));
     }
 
     @Test

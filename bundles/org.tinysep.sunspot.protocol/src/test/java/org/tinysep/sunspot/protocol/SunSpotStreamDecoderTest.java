@@ -28,7 +28,9 @@ class SunSpotStreamDecoderTest extends StreamDecoderContract<SunSpotFrame, Rejec
                 // zeros: S = L = 0 and sensor type 0, unknown; a whole header but one byte waits
                 SunSpotCodec.MAX_FRAME, 10, "UNKNOWN_PAYLOAD", SunSpotCodec.HEADER_LENGTH - 1, hex("01 02 03"),
                 // "FF" as S differs from L; the next starts see L = 0x12, 0x34, 0x02 ... none equals its S
-                "LENGTH_MISMATCH"));
+                "LENGTH_MISMATCH", new Resets(hex("07 00 00 00 00 00 00 00 00 00 00 00"), "LENGTH_MISMATCH",
+                        SunSpotCodec.HEADER_LENGTH - 1, longRun(), "LENGTH_MISMATCH",
+                        Arrays.copyOf(LIGHT_9ABC, LIGHT_9ABC.length - 1))));
     }
 
     @Test
@@ -45,28 +47,10 @@ class SunSpotStreamDecoderTest extends StreamDecoderContract<SunSpotFrame, Rejec
         assertEquals(List.of("TYPE_MISMATCH 16", text(MOVEMENT_1234)), sink.events);
     }
 
-    @Test
-    void resetReportsPendingGarbageAndIncompleteFrameAsOneRun() {
-        feed(concat(hex("07 00 00 00 00 00 00 00 00 00 00 00"), Arrays.copyOf(MOVEMENT_1234, 5)));
-        assertEquals(SunSpotCodec.HEADER_LENGTH - 1, decoder.buffered(), "6 bytes dropped, 11 wait");
-        assertEquals(List.of(), sink.events, "a run is reported when it ends");
-        decoder.reset();
-        assertEquals(List.of("LENGTH_MISMATCH 17"), sink.events);
-        decoder.reset();
-        assertEquals(1, sink.events.size(), "nothing left to report");
-    }
-
-    @Test
-    void resetNeverReportsARunLongerThanTheBuffer() {
-        // 4095 bytes dropped (one short of a reported chunk), then 15 bytes of a 16-byte candidate frame
+    /** 4095 bytes: S = 1 but L = 0, so every zero-led candidate after it is dropped too. */
+    private static byte[] longRun() {
         byte[] zeros = new byte[SunSpotStreamDecoder.BUFFER_SIZE - 1];
-        zeros[0] = 1; // S=1 but L=0: every zero-led candidate after it is dropped too
-        feed(concat(zeros, java.util.Arrays.copyOf(LIGHT_9ABC, LIGHT_9ABC.length - 1)));
-        assertEquals(List.of(), sink.events);
-        decoder.reset();
-        assertEquals(2, sink.events.size(), sink.events.toString());
-        assertEquals("LENGTH_MISMATCH " + SunSpotStreamDecoder.BUFFER_SIZE, sink.events.get(0));
-        assertEquals("TRUNCATED " + (LIGHT_9ABC.length - 2), sink.events.get(1));
-        assertEquals(0, decoder.buffered());
+        zeros[0] = 1;
+        return zeros;
     }
 }

@@ -44,10 +44,26 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
      * @param zerosLeftBuffered how many bytes of a long run of zeros wait in the buffer, undecided
      * @param trickyGarbage     garbage at the start of the split test, chosen by the family to look like a header
      * @param garbageReason     the reason of the garbage {@code FF 00 13} before the first sample
+     * @param resets            the family's garbage for the reset tests
      */
     public record Family<F, R, S extends Recording<F, R>>(Supplier<S> sinks, Function<S, FrameStream<F, R>> decoders,
             Codecs.FrameDecoder<F> codec, List<byte[]> samples, IntFunction<byte[]> numbered, int maxFrame,
-            int checksumIndex, String zeroRunReason, int zerosLeftBuffered, byte[] trickyGarbage, String garbageReason) {
+            int checksumIndex, String zeroRunReason, int zerosLeftBuffered, byte[] trickyGarbage, String garbageReason,
+            Resets resets) {
+    }
+
+    /**
+     * The family's garbage for the reset tests.
+     *
+     * @param pending       garbage the decoder drops, then keeps dropping with the first 5 bytes of the first sample
+     * @param pendingReason the reason of that run
+     * @param pendingWaits  how many of those bytes wait in the buffer before the reset
+     * @param longRun       {@link FrameStream#BUFFER_SIZE} - 1 bytes the decoder drops
+     * @param longReason    the reason of that run
+     * @param tail          an incomplete valid frame after the long run
+     */
+    public record Resets(byte[] pending, String pendingReason, int pendingWaits, byte[] longRun, String longReason,
+            byte[] tail) {
     }
 
     /**
@@ -204,6 +220,36 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
         assertEquals(0, p.buffered().getAsInt());
         feed(p, sample(0));
         assertEquals(List.of("TRUNCATED " + part, text(sample(0))), p.events().get());
+    }
+
+    @Test
+    void resetReportsPendingGarbageAndIncompleteFrameAsOneRun() {
+        Resets x = family.resets();
+        Probe p = fresh();
+        feed(p, concat(x.pending(), Arrays.copyOf(sample(0), 5)));
+        assertEquals(x.pendingWaits(), p.buffered().getAsInt());
+        assertEquals(List.of(), p.events().get(), "a run is reported when it ends");
+        p.reset().run();
+        assertEquals(List.of(x.pendingReason() + " " + (x.pending().length + 5)), p.events().get());
+        p.reset().run();
+        assertEquals(1, p.events().get().size(), "nothing left to report");
+    }
+
+    @Test
+    void resetReportsARunLongerThanTheBufferInChunksOfTheBufferSize() {
+        Resets x = family.resets();
+        assertEquals(FrameStream.BUFFER_SIZE - 1, x.longRun().length, "one short of a reported chunk");
+        Probe p = fresh();
+        feed(p, concat(x.longRun(), x.tail()));
+        assertEquals(List.of(), p.events().get());
+        assertEquals(x.tail().length, p.buffered().getAsInt());
+        p.reset().run();
+        // the run with its reason up to the bound, then the rest of the candidate as a truncated frame
+        assertEquals(List.of(x.longReason() + " " + FrameStream.BUFFER_SIZE, "TRUNCATED " + (x.tail().length - 1)),
+                p.events().get());
+        assertEquals(0, p.buffered().getAsInt());
+        p.reset().run();
+        assertEquals(2, p.events().get().size(), "nothing left to report");
     }
 
     @Test
