@@ -20,8 +20,7 @@ final class AmicaFormat extends FrameFormat<AmicaFrame, RejectReason> {
     static final AmicaFormat INSTANCE = new AmicaFormat();
 
     private AmicaFormat() {
-        super(AmicaCodec.HEADER_LENGTH, CHECKSUM, RejectReason.TRUNCATED, RejectReason.OVERSIZE,
-                RejectReason.LENGTH_MISMATCH, RejectReason.BAD_CHECKSUM);
+        super(AmicaCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values());
     }
 
     @Override

@@ -47,6 +47,30 @@ public abstract class FrameFormat<F, R> {
     }
 
     /**
+     * The usual constructor: the four shared reasons are taken by name from the family's reason enum, which names
+     * them alike in every family.
+     *
+     * @param headerLength  bytes before the payload, S included
+     * @param checksumIndex index of CK; L follows it
+     * @param reasons       the values of the family's reason enum, with TRUNCATED, OVERSIZE, LENGTH_MISMATCH and
+     *                      BAD_CHECKSUM among them
+     * @throws IllegalArgumentException if one of the four is missing
+     */
+    protected FrameFormat(int headerLength, int checksumIndex, R[] reasons) {
+        this(headerLength, checksumIndex, named(reasons, "TRUNCATED"), named(reasons, "OVERSIZE"),
+                named(reasons, "LENGTH_MISMATCH"), named(reasons, "BAD_CHECKSUM"));
+    }
+
+    private static <R> R named(R[] reasons, String name) {
+        for (R r : reasons) {
+            if (r instanceof Enum<?> e && e.name().equals(name)) {
+                return r;
+            }
+        }
+        throw new IllegalArgumentException("the family's reasons have no " + name);
+    }
+
+    /**
      * A family rule on the header's fixed bytes, judged as soon as they are buffered (AmICA: the header value).
      *
      * @param available how many bytes of the candidate are buffered, at least 1

@@ -26,6 +26,10 @@ class FrameStreamTest {
             super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM);
         }
 
+        Toy(Reason[] reasons) {
+            super(3, 1, reasons);
+        }
+
         @Override
         protected String frameAt(byte[] buf, int off) {
             return "frame " + Arrays.toString(Arrays.copyOfRange(buf, off + 3, off + 3 + size(buf, off)));
@@ -76,6 +80,22 @@ class FrameStreamTest {
         assertEquals("frame [1, 2]", TOY.decode(f, 0, f.length, (r, d) -> new IllegalStateException(r + d)));
         assertArrayEquals(hex("00 00 00"), TOY.encode(""));
         assertEquals(3 + 255, TOY.encode("00 ".repeat(255).trim()).length);
+    }
+
+    @Test
+    void theSharedReasonsAreTakenByNameFromTheFamilysEnum() {
+        Toy byName = new Toy(Reason.values());
+        byte[] f = frame("01 02");
+        assertEquals(Reason.TRUNCATED, byName.check(f, 0, 2));
+        assertEquals(Reason.OVERSIZE, byName.check(concat(f, hex("00")), 0, 6));
+        f[2] = 3;
+        assertEquals(Reason.LENGTH_MISMATCH, byName.check(f, 0, f.length));
+        f[2] = 2;
+        f[4] ^= 1;
+        assertEquals(Reason.BAD_CHECKSUM, byName.check(f, 0, f.length));
+        IllegalArgumentException e =
+                assertThrows(IllegalArgumentException.class, () -> new Toy(new Reason[] {Reason.TRUNCATED}));
+        assertEquals("the family's reasons have no OVERSIZE", e.getMessage());
     }
 
     @Test

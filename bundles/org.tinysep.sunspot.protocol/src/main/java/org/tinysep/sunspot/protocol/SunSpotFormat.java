@@ -11,14 +11,13 @@ final class SunSpotFormat extends FrameFormat<SunSpotFrame, RejectReason> {
 
     static final int SOURCE = 1;
     static final int ADDRESS_LENGTH = 8;
-    static final int SENSOR_TYPE = 9;
-    static final int CHECKSUM = 10;
+    static final int SENSOR_TYPE = SOURCE + ADDRESS_LENGTH;
+    static final int CHECKSUM = SENSOR_TYPE + 1;
 
     static final SunSpotFormat INSTANCE = new SunSpotFormat();
 
     private SunSpotFormat() {
-        super(SunSpotCodec.HEADER_LENGTH, CHECKSUM, RejectReason.TRUNCATED, RejectReason.OVERSIZE,
-                RejectReason.LENGTH_MISMATCH, RejectReason.BAD_CHECKSUM);
+        super(SunSpotCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values());
     }
 
     @Override
