@@ -1,6 +1,5 @@
 package org.tinysep.amica.protocol;
 
-import java.util.Arrays;
 import org.tinysep.link.frame.FrameFormat;
 import org.tinysep.link.frame.Hex;
 
@@ -20,7 +19,7 @@ final class AmicaFormat extends FrameFormat<AmicaFrame, RejectReason> {
     static final AmicaFormat INSTANCE = new AmicaFormat();
 
     private AmicaFormat() {
-        super(AmicaCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values());
+        super(AmicaCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values(), AmicaFrame::payloadUnsafe);
     }
 
     @Override
@@ -39,16 +38,9 @@ final class AmicaFormat extends FrameFormat<AmicaFrame, RejectReason> {
     }
 
     @Override
-    protected byte[] payloadOf(AmicaFrame frame) {
-        return frame.payloadUnsafe();
-    }
-
-    @Override
     protected AmicaFrame frameAt(byte[] buf, int off) {
-        int size = size(buf, off);
-        byte[] payload = Arrays.copyOfRange(buf, off + AmicaCodec.HEADER_LENGTH, off + AmicaCodec.HEADER_LENGTH + size);
         return new AmicaFrame(buf[off + NETGROUP] & 0xFF, buf[off + SOURCE] & 0xFF, buf[off + DESTINATION] & 0xFF,
-                buf[off + SEQUENCE] & 0xFF, payload);
+                buf[off + SEQUENCE] & 0xFF, payload(buf, off));
     }
 
     @Override

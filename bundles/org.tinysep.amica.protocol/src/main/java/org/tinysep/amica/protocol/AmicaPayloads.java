@@ -13,6 +13,9 @@ import org.tinysep.link.frame.PayloadRules;
  */
 public final class AmicaPayloads {
 
+    private static final PayloadRules<RejectReason, AmicaProtocolException> RULES =
+            new PayloadRules<>(RejectReason.UNKNOWN_PAYLOAD, RejectReason.BAD_VALUE, AmicaProtocolException::new);
+
     /** Length of a Keep Alive payload. */
     public static final int KEEP_ALIVE_LENGTH = 16;
     /** Length of every other payload. */
@@ -24,9 +27,6 @@ public final class AmicaPayloads {
     private static final int LIGHT = PayloadRules.type(5, 2);
     private static final int SPEAKER = PayloadRules.type(5, 4);
     private static final int HEATER = PayloadRules.type(5, 8);
-
-    private static final PayloadRules<RejectReason, AmicaProtocolException> RULES =
-            new PayloadRules<>(RejectReason.UNKNOWN_PAYLOAD, RejectReason.BAD_VALUE, AmicaProtocolException::new);
 
     private AmicaPayloads() {
     }

@@ -1,6 +1,8 @@
 package org.tinysep.link.frame;
 
+import java.util.Arrays;
 import java.util.Objects;
+import java.util.function.Function;
 
 /**
  * The layout and the checks of one protocol family's frames: size identifier S at byte 0, the checksum byte CK
@@ -27,6 +29,7 @@ public abstract class FrameFormat<F, R> {
     private final R oversize;
     private final R lengthMismatch;
     private final R badChecksum;
+    private final Function<? super F, byte[]> payloadOf;
 
     /**
      * @param headerLength   bytes before the payload, S included
@@ -35,15 +38,17 @@ public abstract class FrameFormat<F, R> {
      * @param oversize       ... for too many bytes
      * @param lengthMismatch ... for S differing from L
      * @param badChecksum    ... for a wrong CK
+     * @param payloadOf      the frame's payload, not copied: {@link #encode(Object)} only reads it
      */
     protected FrameFormat(int headerLength, int checksumIndex, R truncated, R oversize, R lengthMismatch,
-            R badChecksum) {
+            R badChecksum, Function<? super F, byte[]> payloadOf) {
         this.headerLength = headerLength;
         this.checksum = checksumIndex;
         this.truncated = Objects.requireNonNull(truncated);
         this.oversize = Objects.requireNonNull(oversize);
         this.lengthMismatch = Objects.requireNonNull(lengthMismatch);
         this.badChecksum = Objects.requireNonNull(badChecksum);
+        this.payloadOf = Objects.requireNonNull(payloadOf);
     }
 
     /**
@@ -54,11 +59,12 @@ public abstract class FrameFormat<F, R> {
      * @param checksumIndex index of CK; L follows it
      * @param reasons       the values of the family's reason enum, with TRUNCATED, OVERSIZE, LENGTH_MISMATCH and
      *                      BAD_CHECKSUM among them
+     * @param payloadOf     the frame's payload, not copied: {@link #encode(Object)} only reads it
      * @throws IllegalArgumentException if one of the four is missing
      */
-    protected FrameFormat(int headerLength, int checksumIndex, R[] reasons) {
+    protected FrameFormat(int headerLength, int checksumIndex, R[] reasons, Function<? super F, byte[]> payloadOf) {
         this(headerLength, checksumIndex, named(reasons, "TRUNCATED"), named(reasons, "OVERSIZE"),
-                named(reasons, "LENGTH_MISMATCH"), named(reasons, "BAD_CHECKSUM"));
+                named(reasons, "LENGTH_MISMATCH"), named(reasons, "BAD_CHECKSUM"), payloadOf);
     }
 
     private static <R> R named(R[] reasons, String name) {
@@ -98,8 +104,10 @@ public abstract class FrameFormat<F, R> {
     /** Builds the frame at {@code off}; the caller has checked it. */
     protected abstract F frameAt(byte[] buf, int off);
 
-    /** @return the frame's payload, not copied: {@link #encode(Object)} only reads it */
-    protected abstract byte[] payloadOf(F frame);
+    /** @return a copy of the payload of the checked frame at {@code off}, for {@link #frameAt} */
+    protected final byte[] payload(byte[] buf, int off) {
+        return Arrays.copyOfRange(buf, off + headerLength, off + headerLength + size(buf, off));
+    }
 
     /** Writes the family's header fields of {@code frame} into {@code out}; S, L and CK are written by the caller. */
     protected abstract void writeHeader(F frame, byte[] out);
@@ -154,7 +162,7 @@ public abstract class FrameFormat<F, R> {
      * @return the frame's bytes, {@link #headerLength()} + payload length long
      */
     public final byte[] encode(F frame) {
-        byte[] payload = payloadOf(frame);
+        byte[] payload = payloadOf.apply(frame);
         byte[] out = new byte[headerLength + payload.length];
         writeHeader(frame, out);
         System.arraycopy(payload, 0, out, headerLength, payload.length);

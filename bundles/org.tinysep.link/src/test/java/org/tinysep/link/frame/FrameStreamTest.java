@@ -12,6 +12,7 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tinysep.link.frame.testing.FrameChecks;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /**
  * The shared skeleton on its own, with the smallest format there is: S, CK, L, then S payload bytes (the two
@@ -23,22 +24,17 @@ class FrameStreamTest {
 
     static final class Toy extends FrameFormat<String, Reason> {
         Toy() {
-            super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM);
+            // the toy encodes its payload given as hex text
+            super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM, TestBytes::hex);
         }
 
         Toy(Reason[] reasons) {
-            super(3, 1, reasons);
+            super(3, 1, reasons, TestBytes::hex);
         }
 
         @Override
         protected String frameAt(byte[] buf, int off) {
-            return "frame " + Arrays.toString(Arrays.copyOfRange(buf, off + 3, off + 3 + size(buf, off)));
-        }
-
-        /** The toy encodes its payload given as hex text; it has no header fields of its own. */
-        @Override
-        protected byte[] payloadOf(String frame) {
-            return hex(frame);
+            return "frame " + Arrays.toString(payload(buf, off));
         }
 
         @Override

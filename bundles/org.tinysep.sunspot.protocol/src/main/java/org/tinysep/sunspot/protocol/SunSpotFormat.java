@@ -1,6 +1,5 @@
 package org.tinysep.sunspot.protocol;
 
-import java.util.Arrays;
 import org.tinysep.link.frame.FrameFormat;
 
 /**
@@ -17,7 +16,7 @@ final class SunSpotFormat extends FrameFormat<SunSpotFrame, RejectReason> {
     static final SunSpotFormat INSTANCE = new SunSpotFormat();
 
     private SunSpotFormat() {
-        super(SunSpotCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values());
+        super(SunSpotCodec.HEADER_LENGTH, CHECKSUM, RejectReason.values(), SunSpotFrame::payloadUnsafe);
     }
 
     @Override
@@ -41,20 +40,12 @@ final class SunSpotFormat extends FrameFormat<SunSpotFrame, RejectReason> {
     }
 
     @Override
-    protected byte[] payloadOf(SunSpotFrame frame) {
-        return frame.payloadUnsafe();
-    }
-
-    @Override
     protected SunSpotFrame frameAt(byte[] buf, int off) {
-        int size = size(buf, off);
         long address = 0;
         for (int i = 0; i < ADDRESS_LENGTH; i++) {
             address = address << 8 | buf[off + SOURCE + i] & 0xFF;
         }
-        byte[] payload = Arrays.copyOfRange(buf, off + SunSpotCodec.HEADER_LENGTH,
-                off + SunSpotCodec.HEADER_LENGTH + size);
-        return new SunSpotFrame(new SunSpotAddress(address), buf[off + SENSOR_TYPE] & 0xFF, payload);
+        return new SunSpotFrame(new SunSpotAddress(address), buf[off + SENSOR_TYPE] & 0xFF, payload(buf, off));
     }
 
     @Override

@@ -14,6 +14,9 @@ import org.tinysep.link.frame.PayloadRules;
  */
 public final class SunSpotPayloads {
 
+    private static final PayloadRules<RejectReason, SunSpotProtocolException> RULES =
+            new PayloadRules<>(RejectReason.UNKNOWN_PAYLOAD, RejectReason.BAD_VALUE, SunSpotProtocolException::new);
+
     /** Length of every version 1 payload. */
     public static final int STATUS_LENGTH = PayloadRules.STATUS_LENGTH;
     /** Length of a Movement Detection version 2 payload (with coordinates). */
@@ -26,9 +29,6 @@ public final class SunSpotPayloads {
     private static final int PET_MOVEMENT = PayloadRules.type(5, 1);
     private static final int MIN_TENTHS = -400;
     private static final int MAX_TENTHS = 1250;
-
-    private static final PayloadRules<RejectReason, SunSpotProtocolException> RULES =
-            new PayloadRules<>(RejectReason.UNKNOWN_PAYLOAD, RejectReason.BAD_VALUE, SunSpotProtocolException::new);
 
     private SunSpotPayloads() {
     }
