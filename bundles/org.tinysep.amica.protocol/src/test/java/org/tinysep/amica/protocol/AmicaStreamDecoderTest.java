@@ -24,8 +24,8 @@ class AmicaStreamDecoderTest extends StreamDecoderContract<AmicaFrame, RejectRea
                 i -> AmicaCodec.encode(new AmicaFrame(1, 17, 0, i % 256, new byte[] {5, 2, 0, (byte) (i % 101)})),
                 AmicaCodec.MAX_FRAME, 6, "BAD_HEADER", 1,
                 hex("01 A1 02"), // garbage that looks like a header with S = L = 1: the CRC rejects it
-                "BAD_HEADER", new Resets(hex("00 00 00"), "BAD_HEADER", 5,
-                        new byte[AmicaStreamDecoder.BUFFER_SIZE - 1], "BAD_HEADER", Arrays.copyOf(KEEP_ALIVE_1_17, 10))));
+                "BAD_HEADER", new Resets(hex("00 00 00"), "BAD_HEADER", 5, new byte[AmicaStreamDecoder.BUFFER_SIZE - 1],
+                        "BAD_HEADER", Arrays.copyOf(KEEP_ALIVE_1_17, 10))));
     }
 
     @Test

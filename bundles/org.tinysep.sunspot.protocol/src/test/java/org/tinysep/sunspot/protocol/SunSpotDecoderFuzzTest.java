@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import java.util.Optional;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.Fuzz;
@@ -28,15 +29,15 @@ class SunSpotDecoderFuzzTest {
         return SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(Fuzz.anyLong(r)), payload));
     }
 
-    /** @return the frame {@code bytes} decode to, which re-encodes to them, or null if they are rejected */
-    private static SunSpotFrame decodedOrRejected(byte[] bytes) {
+    /** @return the frame {@code bytes} decode to, which re-encodes to them, or empty if they are rejected */
+    private static Optional<SunSpotFrame> decodedOrRejected(byte[] bytes) {
         try {
             SunSpotFrame f = SunSpotCodec.decode(bytes, 0, bytes.length);
             assertArrayEquals(bytes, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
-            return f;
+            return Optional.of(f);
         } catch (SunSpotProtocolException e) {
             assertReasonAndMessage(e);
-            return null;
+            return Optional.empty();
         }
     }
 
@@ -67,12 +68,8 @@ class SunSpotDecoderFuzzTest {
 
     @Test
     void decodeOfMutatedFramesThrowsOnlyProtocolExceptions() {
-        Fuzz.forAll(402, 2000, r -> {
-            SunSpotFrame f = decodedOrRejected(mutatedFrame(r));
-            if (f != null) {
-                payloadDecodedOrRejected(f.payload());
-            }
-        });
+        Fuzz.forAll(402, 2000,
+                r -> decodedOrRejected(mutatedFrame(r)).ifPresent(f -> payloadDecodedOrRejected(f.payload())));
     }
 
     @Test

@@ -15,7 +15,8 @@ class SunSpotSensorTypeTest {
     @Test
     void typeNamesEqualTheApiNodeTypeConstants() {
         NodeTypeChecks.assertNamedAsTheApi(SunSpotSensorType.values(), SunSpotSensorType::typeName,
-                SunSpotSensorType::fromTypeName, NodeType.class, Map.of(SunSpotSensorType.LIGHT, NodeType.LIGHT_SENSOR));
+                SunSpotSensorType::fromTypeName, NodeType.class,
+                Map.of(SunSpotSensorType.LIGHT, NodeType.LIGHT_SENSOR)); // the API names the light sensor apart
         assertEquals(Optional.empty(), SunSpotSensorType.fromTypeName(NodeType.DOOR));
     }
 

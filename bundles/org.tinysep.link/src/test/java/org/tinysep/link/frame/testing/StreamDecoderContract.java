@@ -158,7 +158,8 @@ public abstract class StreamDecoderContract<F, R, S extends Recording<F, R>> {
 
     @Test
     void sameResultWhenSplitAtEveryPairOfByteBoundaries() throws Exception {
-        byte[] stream = concat(family.trickyGarbage(), sample(0), hex("FF"), sample(1), badChecksum(), sample(2), sample(3));
+        byte[] stream =
+                concat(family.trickyGarbage(), sample(0), hex("FF"), sample(1), badChecksum(), sample(2), sample(3));
         Probe p = fresh();
         feed(p, stream);
         List<String> expected = List.copyOf(p.events().get());
