@@ -21,9 +21,9 @@ import org.tinysep.link.frame.testing.DocVectorsContract;
 class AmicaDocVectorsTest extends DocVectorsContract<AmicaFrame, AmicaPayload> {
 
     /** The AmICA codecs as the shared runners see them. */
-    static final Codecs<AmicaFrame, AmicaPayload> CODECS = new Codecs<>(AmicaCodec::decode, AmicaCodec::encode,
-            AmicaPayloads::decode, AmicaPayloads::encode, AmicaCodec.HEADER_LENGTH,
-            e -> ((AmicaProtocolException) e).reason());
+    static final Codecs<AmicaFrame, AmicaPayload, AmicaProtocolException> CODECS = new Codecs<>(AmicaCodec::decode,
+            AmicaCodec::encode, AmicaPayloads::decode, AmicaPayloads::encode, AmicaCodec.HEADER_LENGTH,
+            AmicaProtocolException.class, AmicaProtocolException::reason);
 
     private static final Pattern FRAME =
             Pattern.compile("ng=(\\d+) src=(\\d+) dst=(\\d+) seq=(\\d+)");

@@ -37,8 +37,12 @@ class FrameStreamTest {
             return "frame " + Arrays.toString(payload(buf, off));
         }
 
+        /** How often {@link #writeHeader} was asked for; the toy has no header fields of its own. */
+        int headersWritten;
+
         @Override
         protected void writeHeader(String frame, byte[] out) {
+            headersWritten++;
             out[1] = 0x55; // CK: overwritten by seal, so the toy's encoding shows that seal comes last
         }
     }
@@ -71,7 +75,9 @@ class FrameStreamTest {
 
     @Test
     void encodeWritesTheHeaderThePayloadAndSealsLast() {
+        int before = TOY.headersWritten;
         byte[] f = TOY.encode("01 02");
+        assertEquals(before + 1, TOY.headersWritten, "the family writes its header fields");
         assertArrayEquals(frame("01 02"), f);
         assertEquals("frame [1, 2]", TOY.decode(f, 0, f.length, (r, d) -> new IllegalStateException(r + d)));
         assertArrayEquals(hex("00 00 00"), TOY.encode(""));

@@ -21,9 +21,9 @@ import org.tinysep.link.frame.testing.DocVectorsContract;
 class SunSpotDocVectorsTest extends DocVectorsContract<SunSpotFrame, SunSpotPayload> {
 
     /** The Sun SPOT codecs as the shared runners see them. */
-    static final Codecs<SunSpotFrame, SunSpotPayload> CODECS = new Codecs<>(SunSpotCodec::decode,
-            SunSpotCodec::encode, SunSpotPayloads::decode, SunSpotPayloads::encode, SunSpotCodec.HEADER_LENGTH,
-            e -> ((SunSpotProtocolException) e).reason());
+    static final Codecs<SunSpotFrame, SunSpotPayload, SunSpotProtocolException> CODECS =
+            new Codecs<>(SunSpotCodec::decode, SunSpotCodec::encode, SunSpotPayloads::decode, SunSpotPayloads::encode,
+                    SunSpotCodec.HEADER_LENGTH, SunSpotProtocolException.class, SunSpotProtocolException::reason);
 
     private static final Pattern FRAME = Pattern.compile("source=([0-9A-Fa-f.]+) type=(\\d+)");
 

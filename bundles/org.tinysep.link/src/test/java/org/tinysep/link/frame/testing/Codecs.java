@@ -14,12 +14,15 @@ import java.util.function.Function;
  * @param decodePayload the payload codec's {@code decode(payload)}
  * @param encodePayload the payload codec's {@code encode(payload)}
  * @param headerLength  bytes before the payload
- * @param reasonOf      the reason of the family's protocol exception (a cast: any other exception fails the test)
+ * @param exception     the family's protocol exception; any other exception fails the test
+ * @param reasonOf      the exception's {@code reason()}
  * @param <F>           the frame
  * @param <P>           the payload
+ * @param <X>           the family's protocol exception
  */
-public record Codecs<F, P>(FrameDecoder<F> decode, Function<F, byte[]> encode, PayloadDecoder<P> decodePayload,
-        Function<P, byte[]> encodePayload, int headerLength, Function<Exception, Enum<?>> reasonOf) {
+public record Codecs<F, P, X extends Exception>(FrameDecoder<F> decode, Function<F, byte[]> encode,
+        PayloadDecoder<P> decodePayload, Function<P, byte[]> encodePayload, int headerLength, Class<X> exception,
+        Function<X, Enum<?>> reasonOf) {
 
     /** A family's {@code decode(bytes, offset, length)}. */
     @FunctionalInterface
@@ -45,11 +48,11 @@ public record Codecs<F, P>(FrameDecoder<F> decode, Function<F, byte[]> encode, P
 
     /** @return the reason the codec rejects {@code bytes} with; fails if it decodes them */
     public Enum<?> frameRejection(String name, byte[] bytes) {
-        return reasonOf.apply(assertThrows(Exception.class, () -> frame(bytes), name));
+        return reasonOf.apply(assertThrows(exception, () -> frame(bytes), name));
     }
 
     /** @return the reason the payload codec rejects {@code payload} with; fails if it decodes it */
     public Enum<?> payloadRejection(String name, byte[] payload) {
-        return reasonOf.apply(assertThrows(Exception.class, () -> decodePayload.decode(payload), name));
+        return reasonOf.apply(assertThrows(exception, () -> decodePayload.decode(payload), name));
     }
 }

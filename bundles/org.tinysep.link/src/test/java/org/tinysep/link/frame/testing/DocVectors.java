@@ -100,7 +100,7 @@ public final class DocVectors {
      * then its payload is rejected with its {@code payload-reject} reason, or decodes to the {@code payload} text,
      * encodes back and passes the family's own checks.
      */
-    public static <F, P> void check(List<Map<String, String>> vectors, Codecs<F, P> codecs, Family<F, P> family)
+    public static <F, P> void check(List<Map<String, String>> vectors, Codecs<F, P, ?> codecs, Family<F, P> family)
             throws Exception {
         for (Map<String, String> v : vectors) {
             String name = v.get("name");

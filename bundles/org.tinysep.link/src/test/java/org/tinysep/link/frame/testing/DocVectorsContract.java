@@ -16,10 +16,10 @@ import org.junit.jupiter.api.Test;
 public abstract class DocVectorsContract<F, P> implements DocVectors.Family<F, P> {
 
     private final String doc;
-    private final Codecs<F, P> codecs;
+    private final Codecs<F, P, ?> codecs;
 
     /** @param doc the document's file name under {@code docs/protocols/}, e.g. {@code "amica.md"} */
-    protected DocVectorsContract(String doc, Codecs<F, P> codecs) {
+    protected DocVectorsContract(String doc, Codecs<F, P, ?> codecs) {
         this.doc = doc;
         this.codecs = codecs;
     }

@@ -24,7 +24,7 @@ public final class ReasonChecks {
      *
      * @param raisedElsewhere reasons other code raises with the family's exception (e.g. the bus radios)
      */
-    public static void assertEveryReasonProvoked(List<Map<String, String>> vectors, Codecs<?, ?> codecs,
+    public static void assertEveryReasonProvoked(List<Map<String, String>> vectors, Codecs<?, ?, ?> codecs,
             Enum<?>[] all, Enum<?>... raisedElsewhere) {
         Set<String> seen = new TreeSet<>();
         for (Map<String, String> v : vectors) {
