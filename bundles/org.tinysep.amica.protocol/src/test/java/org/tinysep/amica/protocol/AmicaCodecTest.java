@@ -10,7 +10,6 @@ import static org.tinysep.link.frame.testing.TestBytes.hex;
 import java.util.Arrays;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.FrameChecks;
 
 class AmicaCodecTest {
 
@@ -19,16 +18,6 @@ class AmicaCodecTest {
     static final byte[] MOVEMENT_1_17 = hex("04 A1 11 00 01 06 2B 04 64 05 00 01");
     static final byte[] REED_OPEN_1_18 = hex("04 A1 12 00 01 2A 0D 04 64 03 00 01");
     static final byte[] LIGHT_40_TO_1_20 = hex("04 A1 00 14 01 00 D0 04 05 02 00 28");
-
-    @Test
-    void crc8CheckValueIsF4() {
-        FrameChecks.assertCheckValue(AmicaCodec::crc8);
-    }
-
-    @Test
-    void crc8TableMatchesBitwiseDefinition() {
-        FrameChecks.assertMatchesBitwiseDefinition(AmicaCodec::crc8);
-    }
 
     @Test
     void encodesKeepAliveFrom1_17ByteExact() {

@@ -1,76 +1,55 @@
 package org.tinysep.amica.protocol;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
+import org.tinysep.link.frame.testing.Codecs;
 import org.tinysep.link.frame.testing.DocVectors;
+import org.tinysep.link.frame.testing.DocVectorsContract;
 
 /**
  * Keeps {@code docs/protocols/amica.md} honest: every vector in its fenced {@code vector} blocks must decode and
  * encode exactly as the document states (the runner, {@link DocVectors}, is shared with the Sun SPOT protocol).
  */
-class AmicaDocVectorsTest implements DocVectors.Family {
+class AmicaDocVectorsTest extends DocVectorsContract<AmicaFrame, AmicaPayload> {
+
+    /** The AmICA codecs as the shared runners see them. */
+    static final Codecs<AmicaFrame, AmicaPayload, AmicaProtocolException> CODECS = new Codecs<>(AmicaCodec::decode,
+            AmicaCodec::encode, AmicaPayloads::decode, AmicaPayloads::encode, AmicaCodec.HEADER_LENGTH,
+            AmicaProtocolException.class, AmicaProtocolException::reason);
 
     private static final Pattern FRAME =
             Pattern.compile("ng=(\\d+) src=(\\d+) dst=(\\d+) seq=(\\d+)");
 
-    /** Reads every vector: a map of key to value per vector, in document order. */
-    static List<Map<String, String>> vectors() throws IOException {
-        return DocVectors.read("amica.md");
+    AmicaDocVectorsTest() {
+        super("amica.md", CODECS);
     }
 
     @Test
     void documentHasTheRequiredVectors() throws IOException {
         List<Map<String, String>> vectors = vectors();
-        assertTrue(vectors.size() >= 20, "vectors found: " + vectors.size());
-        String names = vectors.stream().map(v -> v.get("name")).collect(Collectors.joining("\n"));
-        for (String required : List.of("keep-alive from 1.17, product id MOVEMENT|DOOR", "movement detected by 1.17",
-                "reed switch of 1.18 open", "light command 5 2 0 40 from the platform to 1.20")) {
-            assertTrue(names.contains(required), "missing vector: " + required);
-        }
+        DocVectors.assertRequired(vectors, "name", List.of("keep-alive from 1.17, product id MOVEMENT|DOOR",
+                "movement detected by 1.17", "reed switch of 1.18 open",
+                "light command 5 2 0 40 from the platform to 1.20"));
         DocVectors.assertEveryReasonUsed(vectors, RejectReason.values(), List.of(RejectReason.UNKNOWN_NODE));
     }
 
-    @Test
-    void everyVectorDecodesAndEncodesAsDocumented() throws Exception {
-        DocVectors.check(vectors(), this);
-    }
-
     @Override
-    public String rejection(String name, byte[] bytes) {
-        return assertThrows(AmicaProtocolException.class, () -> AmicaCodec.decode(bytes, 0, bytes.length), name)
-                .reason().name();
-    }
-
-    @Override
-    public void valid(String name, Map<String, String> v, byte[] bytes) throws Exception {
-        Matcher m = FRAME.matcher(v.getOrDefault("frame", ""));
-        DocVectors.requireFrame(m.matches(), name, "ng=.. src=.. dst=.. seq=..");
-        byte[] payload = Arrays.copyOfRange(bytes, Math.min(AmicaCodec.HEADER_LENGTH, bytes.length), bytes.length);
-        AmicaFrame expected = new AmicaFrame(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)),
+    public AmicaFrame frame(String name, Map<String, String> v, byte[] payload) {
+        Matcher m = DocVectors.frameLine(FRAME, name, v, "ng=.. src=.. dst=.. seq=..");
+        return new AmicaFrame(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)),
                 Integer.parseInt(m.group(3)), Integer.parseInt(m.group(4)), payload);
-        assertEquals(expected, AmicaCodec.decode(bytes, 0, bytes.length), name + ": decode");
-        assertArrayEquals(bytes, AmicaCodec.encode(expected), name + ": encode");
+    }
 
-        if (v.containsKey("payload-reject")) {
-            AmicaProtocolException e =
-                    assertThrows(AmicaProtocolException.class, () -> AmicaPayloads.decode(payload), name);
-            assertEquals(RejectReason.valueOf(v.get("payload-reject")), e.reason(), name);
-            return;
-        }
-        AmicaPayload decoded = AmicaPayloads.decode(payload);
-        assertEquals(v.get("payload"), decoded.toString(), name + ": payload");
-        assertArrayEquals(payload, AmicaPayloads.encode(decoded), name + ": payload encode");
+    @Override
+    public void payload(String name, Map<String, String> v, AmicaFrame frame, AmicaPayload decoded) {
         if (decoded instanceof KeepAlive k) {
             String types = k.nodeTypes().isEmpty() ? "none"
                     : k.nodeTypes().stream().map(Enum::name).collect(Collectors.joining(", "));
@@ -80,10 +59,6 @@ class AmicaDocVectorsTest implements DocVectors.Family {
 
     @Test
     void streamDecoderFindsEveryValidFrameOfTheDocumentInOneStream() throws Exception {
-        DocVectors.assertStreamFindsEvery(vectors(), bytes -> true, 0, stream -> {
-            RecordingSink sink = new RecordingSink();
-            new AmicaStreamDecoder(sink).accept(stream, 0, stream.length);
-            return new long[] {sink.frames, sink.skipped};
-        });
+        DocVectors.assertStreamFindsEvery(vectors(), bytes -> true, 0, RecordingSink::new, AmicaStreamDecoder::new);
     }
 }

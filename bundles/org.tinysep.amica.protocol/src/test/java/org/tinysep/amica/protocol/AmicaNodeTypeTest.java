@@ -11,25 +11,14 @@ import java.util.Optional;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.NodeType;
+import org.tinysep.link.frame.testing.NodeTypeChecks;
 
 class AmicaNodeTypeTest {
 
     @Test
     void typeNamesEqualTheApiNodeTypeConstants() {
-        Map<AmicaNodeType, String> api = Map.of(
-                AmicaNodeType.MOVEMENT, NodeType.MOVEMENT,
-                AmicaNodeType.DOOR, NodeType.DOOR,
-                AmicaNodeType.WINDOW, NodeType.WINDOW,
-                AmicaNodeType.DIMMABLE_LIGHT, NodeType.DIMMABLE_LIGHT,
-                AmicaNodeType.SIMPLE_LIGHT, NodeType.SIMPLE_LIGHT,
-                AmicaNodeType.HEATER, NodeType.HEATER,
-                AmicaNodeType.SPEAKER, NodeType.SPEAKER,
-                AmicaNodeType.PET_COLLAR, NodeType.PET_COLLAR);
-        assertEquals(EnumSet.allOf(AmicaNodeType.class), api.keySet(), "every AmICA node type has an API name");
-        for (AmicaNodeType t : AmicaNodeType.values()) {
-            assertEquals(api.get(t), t.typeName(), t.name());
-            assertEquals(Optional.of(t), AmicaNodeType.fromTypeName(api.get(t)));
-        }
+        NodeTypeChecks.assertNamedAsTheApi(AmicaNodeType.values(), AmicaNodeType::typeName,
+                AmicaNodeType::fromTypeName, NodeType.class, Map.of());
         assertEquals(Optional.empty(), AmicaNodeType.fromTypeName(NodeType.TEMPERATURE));
     }
 

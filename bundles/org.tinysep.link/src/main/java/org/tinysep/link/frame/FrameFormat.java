@@ -1,6 +1,8 @@
 package org.tinysep.link.frame;
 
+import java.util.Arrays;
 import java.util.Objects;
+import java.util.function.Function;
 
 /**
  * The layout and the checks of one protocol family's frames: size identifier S at byte 0, the checksum byte CK
@@ -27,6 +29,7 @@ public abstract class FrameFormat<F, R> {
     private final R oversize;
     private final R lengthMismatch;
     private final R badChecksum;
+    private final Function<? super F, byte[]> payloadOf;
 
     /**
      * @param headerLength   bytes before the payload, S included
@@ -35,15 +38,42 @@ public abstract class FrameFormat<F, R> {
      * @param oversize       ... for too many bytes
      * @param lengthMismatch ... for S differing from L
      * @param badChecksum    ... for a wrong CK
+     * @param payloadOf      the frame's payload, not copied: {@link #encode(Object)} only reads it
      */
     protected FrameFormat(int headerLength, int checksumIndex, R truncated, R oversize, R lengthMismatch,
-            R badChecksum) {
+            R badChecksum, Function<? super F, byte[]> payloadOf) {
         this.headerLength = headerLength;
         this.checksum = checksumIndex;
         this.truncated = Objects.requireNonNull(truncated);
         this.oversize = Objects.requireNonNull(oversize);
         this.lengthMismatch = Objects.requireNonNull(lengthMismatch);
         this.badChecksum = Objects.requireNonNull(badChecksum);
+        this.payloadOf = Objects.requireNonNull(payloadOf);
+    }
+
+    /**
+     * The usual constructor: the four shared reasons are taken by name from the family's reason enum, which names
+     * them alike in every family.
+     *
+     * @param headerLength  bytes before the payload, S included
+     * @param checksumIndex index of CK; L follows it
+     * @param reasons       the values of the family's reason enum, with TRUNCATED, OVERSIZE, LENGTH_MISMATCH and
+     *                      BAD_CHECKSUM among them
+     * @param payloadOf     the frame's payload, not copied: {@link #encode(Object)} only reads it
+     * @throws IllegalArgumentException if one of the four is missing
+     */
+    protected FrameFormat(int headerLength, int checksumIndex, R[] reasons, Function<? super F, byte[]> payloadOf) {
+        this(headerLength, checksumIndex, named(reasons, "TRUNCATED"), named(reasons, "OVERSIZE"),
+                named(reasons, "LENGTH_MISMATCH"), named(reasons, "BAD_CHECKSUM"), payloadOf);
+    }
+
+    private static <R> R named(R[] reasons, String name) {
+        for (R r : reasons) {
+            if (r instanceof Enum<?> e && e.name().equals(name)) {
+                return r;
+            }
+        }
+        throw new IllegalArgumentException("the family's reasons have no " + name);
     }
 
     /**
@@ -73,6 +103,14 @@ public abstract class FrameFormat<F, R> {
 
     /** Builds the frame at {@code off}; the caller has checked it. */
     protected abstract F frameAt(byte[] buf, int off);
+
+    /** @return a copy of the payload of the checked frame at {@code off}, for {@link #frameAt} */
+    protected final byte[] payload(byte[] buf, int off) {
+        return Arrays.copyOfRange(buf, off + headerLength, off + headerLength + size(buf, off));
+    }
+
+    /** Writes the family's header fields of {@code frame} into {@code out}; S, L and CK are written by the caller. */
+    protected abstract void writeHeader(F frame, byte[] out);
 
     /** @return the reason used when bytes of an incomplete frame are discarded */
     public final R truncated() {
@@ -116,6 +154,19 @@ public abstract class FrameFormat<F, R> {
         out[checksum + 1] = (byte) payloadLength;
         out[checksum] = (byte) checksum(out, 0, payloadLength);
         return out;
+    }
+
+    /**
+     * Encodes one frame: the family's header fields, the payload after the header, then S, L and CK ({@link #seal}).
+     *
+     * @return the frame's bytes, {@link #headerLength()} + payload length long
+     */
+    public final byte[] encode(F frame) {
+        byte[] payload = payloadOf.apply(frame);
+        byte[] out = new byte[headerLength + payload.length];
+        writeHeader(frame, out);
+        System.arraycopy(payload, 0, out, headerLength, payload.length);
+        return seal(out, payload.length);
     }
 
     /** @return why the range is not exactly one valid frame, or null if it is */

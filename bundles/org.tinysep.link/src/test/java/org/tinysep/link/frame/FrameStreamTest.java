@@ -1,5 +1,6 @@
 package org.tinysep.link.frame;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -11,6 +12,7 @@ import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.tinysep.link.frame.testing.FrameChecks;
+import org.tinysep.link.frame.testing.TestBytes;
 
 /**
  * The shared skeleton on its own, with the smallest format there is: S, CK, L, then S payload bytes (the two
@@ -22,12 +24,26 @@ class FrameStreamTest {
 
     static final class Toy extends FrameFormat<String, Reason> {
         Toy() {
-            super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM);
+            // the toy encodes its payload given as hex text
+            super(3, 1, Reason.TRUNCATED, Reason.OVERSIZE, Reason.LENGTH_MISMATCH, Reason.BAD_CHECKSUM, TestBytes::hex);
+        }
+
+        Toy(Reason[] reasons) {
+            super(3, 1, reasons, TestBytes::hex);
         }
 
         @Override
         protected String frameAt(byte[] buf, int off) {
-            return "frame " + Arrays.toString(Arrays.copyOfRange(buf, off + 3, off + 3 + size(buf, off)));
+            return "frame " + Arrays.toString(payload(buf, off));
+        }
+
+        /** How often {@link #writeHeader} was asked for; the toy has no header fields of its own. */
+        int headersWritten;
+
+        @Override
+        protected void writeHeader(String frame, byte[] out) {
+            headersWritten++;
+            out[1] = 0x55; // CK: overwritten by seal, so the toy's encoding shows that seal comes last
         }
     }
 
@@ -55,6 +71,33 @@ class FrameStreamTest {
         byte[] withoutCk = {f[0], f[2], f[3], f[4]};
         assertEquals(Crc8.of(withoutCk, 0, withoutCk.length), f[1] & 0xFF);
         assertNull(TOY.check(f, 0, f.length));
+    }
+
+    @Test
+    void encodeWritesTheHeaderThePayloadAndSealsLast() {
+        int before = TOY.headersWritten;
+        byte[] f = TOY.encode("01 02");
+        assertEquals(before + 1, TOY.headersWritten, "the family writes its header fields");
+        assertArrayEquals(frame("01 02"), f);
+        assertEquals("frame [1, 2]", TOY.decode(f, 0, f.length, (r, d) -> new IllegalStateException(r + d)));
+        assertArrayEquals(hex("00 00 00"), TOY.encode(""));
+        assertEquals(3 + 255, TOY.encode("00 ".repeat(255).trim()).length);
+    }
+
+    @Test
+    void theSharedReasonsAreTakenByNameFromTheFamilysEnum() {
+        Toy byName = new Toy(Reason.values());
+        byte[] f = frame("01 02");
+        assertEquals(Reason.TRUNCATED, byName.check(f, 0, 2));
+        assertEquals(Reason.OVERSIZE, byName.check(concat(f, hex("00")), 0, 6));
+        f[2] = 3;
+        assertEquals(Reason.LENGTH_MISMATCH, byName.check(f, 0, f.length));
+        f[2] = 2;
+        f[4] ^= 1;
+        assertEquals(Reason.BAD_CHECKSUM, byName.check(f, 0, f.length));
+        IllegalArgumentException e =
+                assertThrows(IllegalArgumentException.class, () -> new Toy(new Reason[] {Reason.TRUNCATED}));
+        assertEquals("the family's reasons have no OVERSIZE", e.getMessage());
     }
 
     @Test

@@ -1,33 +1,24 @@
 package org.tinysep.sunspot.protocol;
 
-import org.tinysep.link.frame.Crc8;
-import org.tinysep.link.frame.FrameFormat;
+import org.tinysep.link.frame.FrameCodec;
 
 /**
  * Encodes and decodes one Sun SPOT frame (thesis Figure 3.15): size identifier S, the eleven header bytes (source
  * address, sensor type, checksum, payload length L) and S payload bytes. See {@code docs/protocols/sunspot.md} for
  * the byte layout and the checksum.
  * <p>
- * The layout and the checks are shared with the AmICA protocol ({@code org.tinysep.link.frame.FrameFormat});
- * this family adds its address, its sensor type and the type rule ({@code SunSpotFormat}).
+ * The layout, the checks, {@link #MAX_PAYLOAD} and {@link #crc8(byte[], int, int)} are shared with the AmICA
+ * protocol ({@code org.tinysep.link.frame.FrameCodec} and {@code FrameFormat}); this family adds its address, its
+ * sensor type and the type rule ({@code SunSpotFormat}).
  * <p>
  * Stateless and thread-safe. For byte streams (serial links) use {@link SunSpotStreamDecoder}.
  */
-public final class SunSpotCodec {
+public final class SunSpotCodec extends FrameCodec {
 
     /** Bytes before the payload: size identifier plus the eleven header bytes. */
     public static final int HEADER_LENGTH = 12;
-    /** Largest payload, in bytes. */
-    public static final int MAX_PAYLOAD = FrameFormat.MAX_PAYLOAD;
     /** Largest frame, in bytes: {@link #HEADER_LENGTH} + {@link #MAX_PAYLOAD}. */
     public static final int MAX_FRAME = HEADER_LENGTH + MAX_PAYLOAD;
-
-    static final int SIZE = 0;
-    static final int SOURCE = 1;
-    static final int ADDRESS_LENGTH = 8;
-    static final int SENSOR_TYPE = 9;
-    static final int CHECKSUM = 10;
-    static final int LENGTH = 11;
 
     private SunSpotCodec() {
     }
@@ -37,15 +28,7 @@ public final class SunSpotCodec {
      * @return the frame's bytes, {@link #HEADER_LENGTH} + payload length long, checksum filled in
      */
     public static byte[] encode(SunSpotFrame frame) {
-        byte[] payload = frame.payloadUnsafe();
-        byte[] out = new byte[HEADER_LENGTH + payload.length];
-        long address = frame.source().value();
-        for (int i = 0; i < ADDRESS_LENGTH; i++) {
-            out[SOURCE + i] = (byte) (address >>> (8 * (ADDRESS_LENGTH - 1 - i)));
-        }
-        out[SENSOR_TYPE] = (byte) frame.sensorType();
-        System.arraycopy(payload, 0, out, HEADER_LENGTH, payload.length);
-        return SunSpotFormat.INSTANCE.seal(out, payload.length);
+        return SunSpotFormat.INSTANCE.encode(frame);
     }
 
     /**
@@ -62,19 +45,5 @@ public final class SunSpotCodec {
      */
     public static SunSpotFrame decode(byte[] buf, int offset, int length) throws SunSpotProtocolException {
         return SunSpotFormat.INSTANCE.decode(buf, offset, length, SunSpotProtocolException::new);
-    }
-
-    /**
-     * CRC-8/SMBUS: polynomial 0x07, initial value 0x00, no reflection, no final XOR. The check value of ASCII
-     * {@code "123456789"} is 0xF4.
-     *
-     * @param b   the bytes
-     * @param off the first byte
-     * @param len the number of bytes
-     * @return the CRC, 0..255
-     * @throws IndexOutOfBoundsException if the range lies outside {@code b}
-     */
-    public static int crc8(byte[] b, int off, int len) {
-        return Crc8.of(b, off, len);
     }
 }

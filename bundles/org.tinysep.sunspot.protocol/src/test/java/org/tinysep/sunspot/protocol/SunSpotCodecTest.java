@@ -10,7 +10,6 @@ import static org.tinysep.link.frame.testing.TestBytes.hex;
 
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.FrameChecks;
 
 class SunSpotCodecTest {
 
@@ -20,16 +19,6 @@ class SunSpotCodecTest {
     static final byte[] LIGHT_9ABC = hex("04 00 14 4F 01 00 00 9A BC 04 2C 04 04 01 00 2A");
     static final byte[] MOVEMENT_V2_1234 =
             hex("0A 00 14 4F 01 00 00 12 34 02 A1 0A 02 02 00 01 00 FA FF 88 00 5A");
-
-    @Test
-    void crc8CheckValueIsF4() {
-        FrameChecks.assertCheckValue(SunSpotCodec::crc8);
-    }
-
-    @Test
-    void crc8TableMatchesBitwiseDefinition() {
-        FrameChecks.assertMatchesBitwiseDefinition(SunSpotCodec::crc8);
-    }
 
     @Test
     void checksumCoversEveryByteButItself() {

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import java.util.Optional;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.Fuzz;
@@ -28,41 +29,47 @@ class SunSpotDecoderFuzzTest {
         return SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(Fuzz.anyLong(r)), payload));
     }
 
+    /** @return the frame {@code bytes} decode to, which re-encodes to them, or empty if they are rejected */
+    private static Optional<SunSpotFrame> decodedOrRejected(byte[] bytes) {
+        try {
+            SunSpotFrame f = SunSpotCodec.decode(bytes, 0, bytes.length);
+            assertArrayEquals(bytes, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
+            return Optional.of(f);
+        } catch (SunSpotProtocolException e) {
+            assertReasonAndMessage(e);
+            return Optional.empty();
+        }
+    }
+
+    /** A payload decodes and re-encodes to its bytes, or is rejected with a reason and a message. */
+    private static void payloadDecodedOrRejected(byte[] payload) {
+        try {
+            SunSpotPayload p = SunSpotPayloads.decode(payload);
+            assertArrayEquals(payload, SunSpotPayloads.encode(p), "a decoded payload re-encodes");
+        } catch (SunSpotProtocolException e) {
+            assertReasonAndMessage(e);
+        }
+    }
+
+    /** A valid frame with one random mutation (see {@code mutate}). */
+    private static byte[] mutatedFrame(Random r) {
+        byte[] frame = validFrame(r);
+        return mutate(frame, r.nextInt(4), Fuzz.between(r, 0, frame.length), Fuzz.anyByte(r));
+    }
+
     private static byte[] garbage(Random r) {
         return Fuzz.bytes(r, 3000);
     }
 
     @Test
     void decodeOfRandomBytesThrowsOnlyProtocolExceptions() {
-        Fuzz.forAll(401, 2000, r -> {
-            byte[] bytes = Fuzz.bytes(r, 300);
-            try {
-                SunSpotFrame f = SunSpotCodec.decode(bytes, 0, bytes.length);
-                assertArrayEquals(bytes, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
-            }
-        });
+        Fuzz.forAll(401, 2000, r -> decodedOrRejected(Fuzz.bytes(r, 300)));
     }
 
     @Test
     void decodeOfMutatedFramesThrowsOnlyProtocolExceptions() {
-        Fuzz.forAll(402, 2000, r -> {
-            byte[] frame = validFrame(r);
-            byte[] mutated = mutate(frame, r.nextInt(4), Fuzz.between(r, 0, frame.length), Fuzz.anyByte(r));
-            try {
-                SunSpotFrame f = SunSpotCodec.decode(mutated, 0, mutated.length);
-                assertArrayEquals(mutated, SunSpotCodec.encode(f), "a decoded frame re-encodes to its bytes");
-                try {
-                    SunSpotPayload p = SunSpotPayloads.decode(f.payload());
-                    assertArrayEquals(f.payload(), SunSpotPayloads.encode(p), "a decoded payload re-encodes");
-                } catch (SunSpotProtocolException e) {
-                    assertReasonAndMessage(e);
-                }
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
-            }
-        });
+        Fuzz.forAll(402, 2000,
+                r -> decodedOrRejected(mutatedFrame(r)).ifPresent(f -> payloadDecodedOrRejected(f.payload())));
     }
 
     @Test
@@ -80,15 +87,7 @@ class SunSpotDecoderFuzzTest {
 
     @Test
     void payloadDecodeOfRandomBytesIsCanonicalOrAProtocolException() {
-        Fuzz.forAll(404, 2000, r -> {
-            byte[] payload = Fuzz.bytes(r, 20);
-            try {
-                SunSpotPayload p = SunSpotPayloads.decode(payload);
-                assertArrayEquals(payload, SunSpotPayloads.encode(p));
-            } catch (SunSpotProtocolException e) {
-                assertReasonAndMessage(e);
-            }
-        });
+        Fuzz.forAll(404, 2000, r -> payloadDecodedOrRejected(Fuzz.bytes(r, 20)));
     }
 
     @Test

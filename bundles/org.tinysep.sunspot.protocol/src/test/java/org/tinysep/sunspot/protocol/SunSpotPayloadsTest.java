@@ -16,9 +16,12 @@ class SunSpotPayloadsTest {
         return SunSpotPayloads.decode(dec(decimal));
     }
 
-    private static void assertReject(RejectReason reason, String decimal) {
-        SunSpotProtocolException e = assertThrows(SunSpotProtocolException.class, () -> decode(decimal), decimal);
-        assertEquals(reason, e.reason(), decimal);
+    /** @param payloads decimal payloads, each rejected with {@code reason} */
+    private static void assertReject(RejectReason reason, String... payloads) {
+        for (String decimal : payloads) {
+            SunSpotProtocolException e = assertThrows(SunSpotProtocolException.class, () -> decode(decimal), decimal);
+            assertEquals(reason, e.reason(), decimal);
+        }
     }
 
     @Test
@@ -80,31 +83,14 @@ class SunSpotPayloadsTest {
 
     @Test
     void rejectsWrongLengthsReservedBytesAndRanges() {
-        assertReject(RejectReason.BAD_VALUE, "2 1 0 2");
-        assertReject(RejectReason.BAD_VALUE, "2 1 1 1");
-        assertReject(RejectReason.BAD_VALUE, "2 1 0");
-        assertReject(RejectReason.BAD_VALUE, "2 1 0 1 0");
-        assertReject(RejectReason.BAD_VALUE, "2 2 0 1 0 0 0 0 0");
-        assertReject(RejectReason.BAD_VALUE, "2 2 0 1 0 0 0 0 0 0 0");
-        assertReject(RejectReason.BAD_VALUE, "2 2 7 1 0 0 0 0 0 0");
-        assertReject(RejectReason.BAD_VALUE, "2 2 0 3 0 0 0 0 0 0");
-        assertReject(RejectReason.BAD_VALUE, "3 1 0");
-        assertReject(RejectReason.BAD_VALUE, "4 1 0 101");
-        assertReject(RejectReason.BAD_VALUE, "4 1 0 255");
-        assertReject(RejectReason.BAD_VALUE, "4 1 1 50");
-        assertReject(RejectReason.BAD_VALUE, "5 1 0 2");
-        assertReject(RejectReason.BAD_VALUE, "5 1 9 0");
+        assertReject(RejectReason.BAD_VALUE, "2 1 0 2", "2 1 1 1", "2 1 0", "2 1 0 1 0", "2 2 0 1 0 0 0 0 0",
+                "2 2 0 1 0 0 0 0 0 0 0", "2 2 7 1 0 0 0 0 0 0", "2 2 0 3 0 0 0 0 0 0", "3 1 0", "4 1 0 101",
+                "4 1 0 255", "4 1 1 50", "5 1 0 2", "5 1 9 0");
     }
 
     @Test
     void rejectsUnknownPayloads() {
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "2");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "2 3 0 1");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "3 2 0 1");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "1 1 0 1");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "6 1 0 1");
-        assertReject(RejectReason.UNKNOWN_PAYLOAD, "100 5 0 1");
+        assertReject(RejectReason.UNKNOWN_PAYLOAD, "", "2", "2 3 0 1", "3 2 0 1", "1 1 0 1", "6 1 0 1", "100 5 0 1");
         assertThrows(NullPointerException.class, () -> SunSpotPayloads.decode(null));
     }
 

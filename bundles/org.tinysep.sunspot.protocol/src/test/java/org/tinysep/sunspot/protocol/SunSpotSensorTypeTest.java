@@ -4,26 +4,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.EnumSet;
 import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.NodeType;
+import org.tinysep.link.frame.testing.NodeTypeChecks;
 
 class SunSpotSensorTypeTest {
 
     @Test
     void typeNamesEqualTheApiNodeTypeConstants() {
-        Map<SunSpotSensorType, String> api = Map.of(
-                SunSpotSensorType.MOVEMENT, NodeType.MOVEMENT,
-                SunSpotSensorType.TEMPERATURE, NodeType.TEMPERATURE,
-                SunSpotSensorType.LIGHT, NodeType.LIGHT_SENSOR,
-                SunSpotSensorType.PET_COLLAR, NodeType.PET_COLLAR);
-        assertEquals(EnumSet.allOf(SunSpotSensorType.class), api.keySet(), "every sensor type has an API name");
-        for (SunSpotSensorType t : SunSpotSensorType.values()) {
-            assertEquals(api.get(t), t.typeName(), t.name());
-            assertEquals(Optional.of(t), SunSpotSensorType.fromTypeName(api.get(t)));
-        }
+        NodeTypeChecks.assertNamedAsTheApi(SunSpotSensorType.values(), SunSpotSensorType::typeName,
+                SunSpotSensorType::fromTypeName, NodeType.class,
+                Map.of(SunSpotSensorType.LIGHT, NodeType.LIGHT_SENSOR)); // the API names the light sensor apart
         assertEquals(Optional.empty(), SunSpotSensorType.fromTypeName(NodeType.DOOR));
     }
 

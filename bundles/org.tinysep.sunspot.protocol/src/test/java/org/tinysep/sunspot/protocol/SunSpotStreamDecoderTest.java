@@ -15,114 +15,42 @@ import static org.tinysep.link.frame.testing.TestBytes.hex;
 import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.tinysep.link.frame.testing.FrameChecks;
 import org.tinysep.link.frame.testing.StreamDecoderContract;
 
 /** The Sun SPOT rules of the stream decoder; what every family's decoder does is {@link StreamDecoderContract}'s. */
-class SunSpotStreamDecoderTest extends StreamDecoderContract {
+class SunSpotStreamDecoderTest extends StreamDecoderContract<SunSpotFrame, RejectReason, RecordingSink> {
 
-    private final RecordingSink sink = new RecordingSink();
-    private final SunSpotStreamDecoder decoder = new SunSpotStreamDecoder(sink);
-
-    private static String frameOf(byte[] bytes) throws SunSpotProtocolException {
-        return SunSpotCodec.decode(bytes, 0, bytes.length).toString();
-    }
-
-    private void feed(byte[] bytes) {
-        decoder.accept(bytes, 0, bytes.length);
-    }
-
-    @Override
-    protected Probe fresh() {
-        RecordingSink r = new RecordingSink();
-        SunSpotStreamDecoder d = new SunSpotStreamDecoder(r);
-        return new Probe(d::accept, d::buffered, d::reset, () -> r.events, () -> r.frames, () -> r.skipped);
-    }
-
-    @Override
-    protected List<byte[]> samples() {
-        return List.of(MOVEMENT_1234, LIGHT_9ABC, TEMPERATURE_5678, MOVEMENT_V2_1234);
-    }
-
-    @Override
-    protected String text(byte[] frame) throws Exception {
-        return frameOf(frame);
-    }
-
-    @Override
-    protected byte[] numbered(int i) {
-        return SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(i),
-                SunSpotPayloads.encode(new LightStatus(i % 101))));
-    }
-
-    @Override
-    protected int maxFrame() {
-        return SunSpotCodec.MAX_FRAME;
-    }
-
-    @Override
-    protected int checksumIndex() {
-        return 10;
-    }
-
-    @Override
-    protected String zeroRunReason() {
-        return "UNKNOWN_PAYLOAD"; // zeros: S = L = 0, sensor type 0 is unknown
-    }
-
-    @Override
-    protected int zerosLeftBuffered() {
-        return SunSpotCodec.HEADER_LENGTH - 1;
-    }
-
-    @Override
-    protected void newWithNullSink() {
-        new SunSpotStreamDecoder(null);
-    }
-
-    @Test
-    void skipsGarbageBeforeAFrameAndReportsItOnce() throws Exception {
-        // "FF" as S differs from L; the next starts see L = 0x12, 0x34, 0x02 ... none equals its S
-        feed(concat(hex("FF 00 13"), MOVEMENT_1234));
-        assertEquals(List.of("LENGTH_MISMATCH 3", frameOf(MOVEMENT_1234)), sink.events);
+    SunSpotStreamDecoderTest() {
+        super(new Family<>(RecordingSink::new, SunSpotStreamDecoder::new, SunSpotCodec::decode,
+                List.of(MOVEMENT_1234, LIGHT_9ABC, TEMPERATURE_5678, MOVEMENT_V2_1234),
+                i -> SunSpotCodec.encode(SunSpotFrame.of(new SunSpotAddress(i),
+                        SunSpotPayloads.encode(new LightStatus(i % 101)))),
+                // zeros: S = L = 0 and sensor type 0, unknown; a whole header but one byte waits
+                SunSpotCodec.MAX_FRAME, 10, "UNKNOWN_PAYLOAD", SunSpotCodec.HEADER_LENGTH - 1, hex("01 02 03"),
+                // "FF" as S differs from L; the next starts see L = 0x12, 0x34, 0x02 ... none equals its S
+                "LENGTH_MISMATCH", new Resets(hex("07 00 00 00 00 00 00 00 00 00 00 00"), "LENGTH_MISMATCH",
+                        SunSpotCodec.HEADER_LENGTH - 1, longRun(), "LENGTH_MISMATCH",
+                        Arrays.copyOf(LIGHT_9ABC, LIGHT_9ABC.length - 1))));
     }
 
     @Test
     void candidateWithAnUnknownSensorTypeIsDropped() throws Exception {
         byte[] type9 = SunSpotCodec.encode(SunSpotFrame.of(SPOT_1234, hex("09 01 00 01")));
         feed(concat(type9, LIGHT_9ABC));
-        assertEquals(List.of("UNKNOWN_PAYLOAD 16", frameOf(LIGHT_9ABC)), sink.events);
+        assertEquals(List.of("UNKNOWN_PAYLOAD 16", text(LIGHT_9ABC)), sink.events);
     }
 
     @Test
     void frameWhoseTypeDiffersFromItsPayloadIsSkipped() throws Exception {
         byte[] wrongType = SunSpotCodec.encode(new SunSpotFrame(SPOT_1234, 3, hex("02 01 00 01")));
         feed(concat(wrongType, MOVEMENT_1234));
-        assertEquals(List.of("TYPE_MISMATCH 16", frameOf(MOVEMENT_1234)), sink.events);
+        assertEquals(List.of("TYPE_MISMATCH 16", text(MOVEMENT_1234)), sink.events);
     }
 
-    @Test
-    void resetReportsPendingGarbageAndIncompleteFrameAsOneRun() {
-        feed(concat(hex("07 00 00 00 00 00 00 00 00 00 00 00"), Arrays.copyOf(MOVEMENT_1234, 5)));
-        assertEquals(SunSpotCodec.HEADER_LENGTH - 1, decoder.buffered(), "6 bytes dropped, 11 wait");
-        assertEquals(List.of(), sink.events, "a run is reported when it ends");
-        decoder.reset();
-        assertEquals(List.of("LENGTH_MISMATCH 17"), sink.events);
-        decoder.reset();
-        assertEquals(1, sink.events.size(), "nothing left to report");
-    }
-
-    @Test
-    void resetNeverReportsARunLongerThanTheBuffer() {
-        // 4095 bytes dropped (one short of a reported chunk), then 15 bytes of a 16-byte candidate frame
+    /** 4095 bytes: S = 1 but L = 0, so every zero-led candidate after it is dropped too. */
+    private static byte[] longRun() {
         byte[] zeros = new byte[SunSpotStreamDecoder.BUFFER_SIZE - 1];
-        zeros[0] = 1; // S=1 but L=0: every zero-led candidate after it is dropped too
-        feed(concat(zeros, java.util.Arrays.copyOf(LIGHT_9ABC, LIGHT_9ABC.length - 1)));
-        assertEquals(List.of(), sink.events);
-        decoder.reset();
-        assertEquals(2, sink.events.size(), sink.events.toString());
-        assertEquals("LENGTH_MISMATCH " + SunSpotStreamDecoder.BUFFER_SIZE, sink.events.get(0));
-        assertEquals("TRUNCATED " + (LIGHT_9ABC.length - 2), sink.events.get(1));
-        assertEquals(0, decoder.buffered());
+        zeros[0] = 1;
+        return zeros;
     }
 }

@@ -109,12 +109,10 @@ class FrameHandlerTest {
         badHeader[1] = 0x42;
         feed(badHeader);
 
-        assertEquals(1, radio.rejects.count(RejectReason.BAD_CHECKSUM));
-        assertEquals(1, radio.rejects.count(RejectReason.TRUNCATED));
-        assertEquals(1, radio.rejects.count(RejectReason.OVERSIZE));
-        assertEquals(1, radio.rejects.count(RejectReason.UNKNOWN_PAYLOAD));
-        assertEquals(1, radio.rejects.count(RejectReason.BAD_VALUE));
-        assertEquals(1, radio.rejects.count(RejectReason.BAD_HEADER));
+        for (RejectReason r : List.of(RejectReason.BAD_CHECKSUM, RejectReason.TRUNCATED, RejectReason.OVERSIZE,
+                RejectReason.UNKNOWN_PAYLOAD, RejectReason.BAD_VALUE, RejectReason.BAD_HEADER)) {
+            assertEquals(1, radio.rejects.count(r), r.name());
+        }
         assertEquals(6, radio.rejects.total());
 
         List<Boolean> motions = new ArrayList<>();
