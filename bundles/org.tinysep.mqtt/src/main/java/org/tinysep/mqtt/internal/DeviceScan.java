@@ -20,6 +20,7 @@ import org.tinysep.api.health.SensorHealth;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.service.Room;
 import org.tinysep.device.support.RoomDirectory;
+import org.tinysep.json.JsonWriter;
 
 /**
  * Reads every sensor's and actuator's state from its provider (every {@code pollSeconds}, on the bridge's thread)
@@ -108,7 +109,7 @@ final class DeviceScan implements AutoCloseable {
         Object roomUid = (d == null ? p.ref() : d.ref()).getProperty(DeviceProperties.ROOM);
         String room = roomUid == null ? "" : rooms.room(roomUid.toString()).map(Room::name).orElse(roomUid.toString());
         String where = name + (room.isEmpty() ? "" : " (" + room + ")");
-        out.accept(Message.state(topics.deviceState(uid), Json.write(Json.object("uid", uid, "name", name,
+        out.accept(Message.state(topics.deviceState(uid), JsonWriter.writePlain(JsonWriter.object("uid", uid, "name", name,
                 "room", room, "type", kind.type, "value", value, "since", before.since,
                 "explanation", where + ": " + kind.describe(value)))));
         DeviceStatus status = d == null ? null : Safely.get(() -> d.service().status(), null);
@@ -120,7 +121,7 @@ final class DeviceScan implements AutoCloseable {
             offline++;
         }
         out.accept(Message.state(topics.deviceAvailability(uid), online ? "online" : "offline"));
-        out.accept(Message.state(topics.deviceHealth(uid), Json.write(Json.object(
+        out.accept(Message.state(topics.deviceHealth(uid), JsonWriter.writePlain(JsonWriter.object(
                 "status", status == null ? "UNKNOWN" : status.state().name(),
                 "battery", null,
                 "batteryMillivolts", node == null ? null : node.batteryMillivolts(),
