@@ -85,7 +85,9 @@ public final class JsonReader {
         }
     }
 
-    private void more() {
+    /** Skips whitespace; the text must go on. */
+    private void ahead() {
+        space();
         if (i >= s.length()) {
             throw bad("the text ends too early");
         }
@@ -95,8 +97,7 @@ public final class JsonReader {
         if (depth > MAX_DEPTH) {
             throw bad("nested too deeply (more than " + MAX_DEPTH + " levels)");
         }
-        space();
-        more();
+        ahead();
         char c = s.charAt(i);
         if (flat && depth > 0 && (c == '{' || c == '[')) {
             throw bad("only text, number, true, false or null values are accepted");
@@ -119,55 +120,49 @@ public final class JsonReader {
 
     private Map<String, Object> object(int depth) {
         Map<String, Object> m = new LinkedHashMap<>();
-        i++;
-        space();
-        more();
-        if (peek('}')) {
-            i++;
-            return m;
-        }
-        while (true) {
-            space();
-            more();
+        boolean closed = opens('}');
+        while (!closed) {
+            ahead();
             if (!peek('"')) {
                 throw bad("a quoted key expected");
             }
             String k = string();
-            space();
-            more();
+            ahead();
             expect(':');
             m.put(k, value(depth + 1));
-            space();
-            more();
-            if (!peek(',') && !peek('}')) {
-                throw bad("',' or '}' expected");
-            }
-            if (s.charAt(i++) == '}') {
-                return m;
-            }
+            closed = closes('}');
         }
+        return m;
     }
 
     private List<Object> array(int depth) {
         List<Object> l = new ArrayList<>();
-        i++;
-        space();
-        more();
-        if (peek(']')) {
-            i++;
-            return l;
-        }
-        while (true) {
+        boolean closed = opens(']');
+        while (!closed) {
             l.add(value(depth + 1));
-            space();
-            more();
-            if (!peek(',') && !peek(']')) {
-                throw bad("',' or ']' expected");
-            }
-            if (s.charAt(i++) == ']') {
-                return l;
-            }
+            closed = closes(']');
         }
+        return l;
+    }
+
+    /** Steps over an opening bracket. @return whether its container closes at once (is empty) */
+    private boolean opens(char close) {
+        i++;
+        ahead();
+        if (peek(close)) {
+            i++;
+            return true;
+        }
+        return false;
+    }
+
+    /** Steps over what follows a member. @return true at the closing bracket, false after a comma */
+    private boolean closes(char close) {
+        ahead();
+        if (!peek(',') && !peek(close)) {
+            throw bad("',' or '" + close + "' expected");
+        }
+        return s.charAt(i++) == close;
     }
 
     private String string() {

@@ -67,22 +67,26 @@ class JsonReaderTest {
 
     @Test
     void namesTheCharacterWhereTheTextGoesWrong() {
-        assertEquals("not a flat JSON object: only text, number, true, false or null values are accepted at character 6",
-                message(() -> JsonReader.flatObject("{\"a\":[1]}", MAX)));
-        assertEquals("not a flat JSON object: ',' or '}' expected at character 8",
-                message(() -> JsonReader.flatObject("{\"a\":1 \"b\":2}", MAX)));
-        assertEquals("not a flat JSON object: a quoted key expected at character 8",
-                message(() -> JsonReader.flatObject("{\"a\":1,}", MAX)));
-        assertEquals("not a flat JSON object: the text ends too early at character 7",
-                message(() -> JsonReader.flatObject("{\"a\":1", MAX)));
-        assertEquals("not a flat JSON object: nothing may follow the object at character 11",
-                message(() -> JsonReader.flatObject("{\"a\":\"x\"} x", MAX)));
-        assertEquals("not valid JSON: a string is not closed at character 11",
-                message(() -> JsonReader.object("{\"a\":\"open", MAX)));
-        assertEquals("not valid JSON: a value expected at character 6",
-                message(() -> JsonReader.object("{\"a\":tru}", MAX)));
-        assertEquals("not valid JSON: the number 99999999999999999999 is out of range at character 6",
-                message(() -> JsonReader.object("{\"a\":99999999999999999999}", MAX)));
+        String flat = "not a flat JSON object: ";
+        String[][] cases = {
+            {"{\"a\":[1]}", flat + "only text, number, true, false or null values are accepted at character 6"},
+            {"{\"a\":1 \"b\":2}", flat + "',' or '}' expected at character 8"},
+            {"{\"a\":1,}", flat + "a quoted key expected at character 8"},
+            {"{\"a\":1", flat + "the text ends too early at character 7"},
+            {"{\"a\":\"x\"} x", flat + "nothing may follow the object at character 11"},
+            {"{\"a\":\"open", "not valid JSON: a string is not closed at character 11"},
+            {"{\"a\":tru}", "not valid JSON: a value expected at character 6"},
+            {"{\"a\":99999999999999999999}", "not valid JSON: the number 99999999999999999999 is out of range at character 6"},
+            {"[1 2]", "not valid JSON: ',' or ']' expected at character 4"}};
+        for (String[] c : cases) {
+            assertEquals(c[1], message(() -> {
+                if (c[1].startsWith(flat)) {
+                    JsonReader.flatObject(c[0], MAX);
+                } else {
+                    JsonReader.value(c[0], MAX);
+                }
+            }), c[0]);
+        }
     }
 
     /** What the bridge's old reader let through (lenient escapes, raw control characters, sloppy numbers). */

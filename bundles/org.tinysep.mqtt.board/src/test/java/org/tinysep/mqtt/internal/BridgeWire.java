@@ -4,8 +4,8 @@ import org.tinysep.json.JsonWriter;
 
 /**
  * Test-only window on the bridge's own topic names (package-private in org.tinysep.mqtt) and its JSON writing, so
- * that the board's load test publishes exactly what the bridge publishes instead of a second copy of the topic format. Lives
- * in the board's test sources under the bridge's package name (plain class path in tests, no OSGi).
+ * that the board's load test publishes exactly what the bridge publishes instead of a second copy of the topic
+ * format. Lives in the board's test sources under the bridge's package name (plain class path in tests, no OSGi).
  */
 public final class BridgeWire {
 

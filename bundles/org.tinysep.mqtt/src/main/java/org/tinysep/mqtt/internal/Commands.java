@@ -38,8 +38,8 @@ final class Commands {
     }
 
     Message result(String topic, Result r, Instant at) {
-        return Message.transientMessage(topics.commandResult(), JsonWriter.writePlain(JsonWriter.object("topic", topic,
-                "accepted", r.accepted(), "reason", r.reason(), "at", at)));
+        return Message.transientMessage(topics.commandResult(), JsonWriter.writePlain(JsonWriter.object(
+                "topic", topic, "accepted", r.accepted(), "reason", r.reason(), "at", at)));
     }
 
     Result handle(String topic, byte[] payload) {

@@ -1,5 +1,8 @@
 package org.tinysep.mqtt.internal;
 
+import static org.tinysep.json.JsonWriter.object;
+import static org.tinysep.json.JsonWriter.writePlain;
+
 import java.time.Instant;
 import java.util.EnumMap;
 import java.util.HashMap;
@@ -20,7 +23,6 @@ import org.tinysep.api.health.SensorHealth;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.service.Room;
 import org.tinysep.device.support.RoomDirectory;
-import org.tinysep.json.JsonWriter;
 
 /**
  * Reads every sensor's and actuator's state from its provider (every {@code pollSeconds}, on the bridge's thread)
@@ -109,7 +111,7 @@ final class DeviceScan implements AutoCloseable {
         Object roomUid = (d == null ? p.ref() : d.ref()).getProperty(DeviceProperties.ROOM);
         String room = roomUid == null ? "" : rooms.room(roomUid.toString()).map(Room::name).orElse(roomUid.toString());
         String where = name + (room.isEmpty() ? "" : " (" + room + ")");
-        out.accept(Message.state(topics.deviceState(uid), JsonWriter.writePlain(JsonWriter.object("uid", uid, "name", name,
+        out.accept(Message.state(topics.deviceState(uid), writePlain(object("uid", uid, "name", name,
                 "room", room, "type", kind.type, "value", value, "since", before.since,
                 "explanation", where + ": " + kind.describe(value)))));
         DeviceStatus status = d == null ? null : Safely.get(() -> d.service().status(), null);
@@ -121,7 +123,7 @@ final class DeviceScan implements AutoCloseable {
             offline++;
         }
         out.accept(Message.state(topics.deviceAvailability(uid), online ? "online" : "offline"));
-        out.accept(Message.state(topics.deviceHealth(uid), JsonWriter.writePlain(JsonWriter.object(
+        out.accept(Message.state(topics.deviceHealth(uid), writePlain(object(
                 "status", status == null ? "UNKNOWN" : status.state().name(),
                 "battery", null,
                 "batteryMillivolts", node == null ? null : node.batteryMillivolts(),

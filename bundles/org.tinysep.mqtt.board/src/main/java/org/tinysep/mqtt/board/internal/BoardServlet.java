@@ -97,7 +97,8 @@ public final class BoardServlet extends HttpServlet {
                 by = Payloads.fields(new String(body, StandardCharsets.UTF_8)).get("by");
             }
             String words = central.acknowledge(m.group(1), m.group(2), by);
-            send(resp, 200, new JsonWriter().open('{').field("ok", true).field("explanation", words).close('}').toString());
+            send(resp, 200, new JsonWriter().open('{').field("ok", true).field("explanation", words).close('}')
+                    .toString());
         } catch (IllegalArgumentException e) {
             send(resp, 404, error(e.getMessage()));
         } catch (IllegalStateException e) {

@@ -34,7 +34,8 @@ final class BoardView {
         rows.sort(Comparator.comparing((Row r) -> r.open() == 0).thenComparing(r -> r.v().status())
                 .thenComparing(r -> r.s().id()));
         Board.Totals t = board.totals();
-        JsonWriter j = new JsonWriter().open('{').field("connected", connected).field("link", link).field("at", now.toString());
+        JsonWriter j = new JsonWriter().open('{').field("connected", connected).field("link", link)
+                .field("at", now.toString());
         j.key("totals").open('{').field("flats", t.flats()).field("messages", t.messages()).field("badPayloads", t.bad())
                 .field("duplicates", t.duplicates()).field("refusedFlats", t.refusedFlats()).close('}');
         j.key("flats").open('[');
