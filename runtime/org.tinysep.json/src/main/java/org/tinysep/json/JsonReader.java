@@ -70,9 +70,7 @@ public final class JsonReader {
         if (s.length() > maxLength) {
             throw new JsonException("longer than " + maxLength + " characters", 0);
         }
-        JsonText t = new JsonText(s, refusal);
-        t.space();
-        return new JsonReader(t, flat);
+        return new JsonReader(new JsonText(s, refusal), flat);
     }
 
     private Object value(int depth) {

@@ -6,13 +6,17 @@ package org.tinysep.json;
  */
 final class JsonText {
 
-    private final String s;
-    private final String refusal;
+    /** The cursor: the index of the next character to read. */
     private int i;
+    private final String s;
+    /** What a bad text is called in errors, e.g. "not valid JSON". */
+    private final String refusal;
 
+    /** A cursor at the first character of {@code s} that is not whitespace. */
     JsonText(String s, String refusal) {
         this.s = s;
         this.refusal = refusal;
+        space();
     }
 
     /** @return the character at the cursor (call {@link #ahead()} first) */
