@@ -1,9 +1,11 @@
 package org.tinysep.mqtt.internal;
 
+import org.tinysep.json.JsonWriter;
+
 /**
- * Test-only window on the bridge's own topic names and JSON writer (package-private in org.tinysep.mqtt), so that the
- * board's load test publishes exactly what the bridge publishes instead of a second copy of the topic format. Lives
- * in the board's test sources under the bridge's package name (plain class path in tests, no OSGi).
+ * Test-only window on the bridge's own topic names (package-private in org.tinysep.mqtt) and its JSON writing, so
+ * that the board's load test publishes exactly what the bridge publishes instead of a second copy of the topic
+ * format. Lives in the board's test sources under the bridge's package name (plain class path in tests, no OSGi).
  */
 public final class BridgeWire {
 
@@ -47,6 +49,6 @@ public final class BridgeWire {
 
     /** @return the bridge's JSON of key/value pairs (values: strings, numbers, booleans, Instants, null) */
     public static String json(Object... keyValues) {
-        return Json.write(Json.object(keyValues));
+        return JsonWriter.writePlain(JsonWriter.object(keyValues));
     }
 }

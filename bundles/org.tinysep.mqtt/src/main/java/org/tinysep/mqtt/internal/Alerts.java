@@ -1,5 +1,8 @@
 package org.tinysep.mqtt.internal;
 
+import static org.tinysep.json.JsonWriter.object;
+import static org.tinysep.json.JsonWriter.writePlain;
+
 import java.io.IOException;
 import java.util.List;
 import java.util.Map;
@@ -47,7 +50,7 @@ final class Alerts {
             return false; // a notification or delivery outcome changed, not the state
         }
         long seq = spool.nextSeq();
-        outbox.alert(new Message(topics.alert(a.id()), Json.write(payload(a, seq)).getBytes(
+        outbox.alert(new Message(topics.alert(a.id()), writePlain(payload(a, seq)).getBytes(
                 java.nio.charset.StandardCharsets.UTF_8), true, seq, a.id()));
         if (a.state() == AlertState.CLEARED) {
             outbox.alert(new Message(topics.alert(a.id()), new byte[0], true, spool.nextSeq(), a.id()));
@@ -65,7 +68,7 @@ final class Alerts {
     Map<String, Object> payload(Alert a, long seq) {
         boolean acked = a.state() == AlertState.ACKNOWLEDGED;
         boolean cleared = a.state() == AlertState.CLEARED;
-        return Json.object("id", a.id(), "flat", topics.flatId(), "kind", a.kind().name(), "state", a.state().name(),
+        return object("id", a.id(), "flat", topics.flatId(), "kind", a.kind().name(), "state", a.state().name(),
                 "raisedAt", a.raisedAt(), "room", a.roomName(), "title", a.subject(), "text", a.text(),
                 "acknowledgedBy", acked ? a.closedBy() : null, "acknowledgedAt", acked ? a.closedAt() : null,
                 "clearedAt", cleared ? a.closedAt() : null, "clearedWhy", cleared ? a.closedBy() : null,
@@ -83,14 +86,14 @@ final class Alerts {
     /** The retained ON/OFF of one alert kind (Home Assistant's problem sensor). */
     Message kindState(AlertKind kind, List<Alert> open) {
         long n = open.stream().filter(a -> a.kind() == kind).count();
-        return Message.state(topics.alertKind(kind.name()), Json.write(Json.object("kind", kind.name(),
+        return Message.state(topics.alertKind(kind.name()), writePlain(object("kind", kind.name(),
                 "state", n > 0 ? "ON" : "OFF", "open", n, "explanation", n == 0 ? "no open " + kindWords(kind)
                         + " alert" : n + " open " + kindWords(kind) + " alert(s), not yet acknowledged")));
     }
 
     private static String stateOf(Message m) {
         try {
-            Object s = JsonReader.object(m.text()).get("state");
+            Object s = Commands.object(m.text()).get("state");
             return s == null ? "" : s.toString();
         } catch (IllegalArgumentException e) {
             return "";

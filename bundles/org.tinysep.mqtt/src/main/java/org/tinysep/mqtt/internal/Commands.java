@@ -9,6 +9,9 @@ import java.util.Map;
 import java.util.function.Supplier;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.device.Device;
+import org.tinysep.json.JsonException;
+import org.tinysep.json.JsonReader;
+import org.tinysep.json.JsonWriter;
 
 /**
  * Checks and carries out one incoming command, validated like the shell's {@code tinysep:set} and
@@ -21,6 +24,9 @@ final class Commands {
     record Result(boolean accepted, String reason) {
     }
 
+    /** The longest command payload read, in characters. */
+    static final int MAX_PAYLOAD = 16 * 1024;
+
     private final Topics topics;
     private final DeviceScan scan;
     private final Supplier<AlertService> alerts;
@@ -32,8 +38,8 @@ final class Commands {
     }
 
     Message result(String topic, Result r, Instant at) {
-        return Message.transientMessage(topics.commandResult(), Json.write(Json.object("topic", topic,
-                "accepted", r.accepted(), "reason", r.reason(), "at", at)));
+        return Message.transientMessage(topics.commandResult(), JsonWriter.writePlain(JsonWriter.object(
+                "topic", topic, "accepted", r.accepted(), "reason", r.reason(), "at", at)));
     }
 
     Result handle(String topic, byte[] payload) {
@@ -74,7 +80,7 @@ final class Commands {
             parameter = kind.command;
             value = kind.onOff(plain.equalsIgnoreCase("ON"));
         } else {
-            Map<String, Object> o = JsonReader.object(text);
+            Map<String, Object> o = object(text);
             Object p = o.get("parameter");
             if (!(p instanceof String ps) || ps.isBlank()) {
                 return no("give the parameter to set, e.g. {\"parameter\":\"" + kind.command + "\",\"value\":"
@@ -99,8 +105,21 @@ final class Commands {
                 + " requested; the state changes when the node confirms it");
     }
 
+    /**
+     * @return the JSON object a payload holds
+     * @throws IllegalArgumentException what is wrong and where, e.g. "the payload is not valid JSON: ',' or '}'
+     *         expected at character 14" (strict JSON, at most {@link #MAX_PAYLOAD} characters and 16 levels)
+     */
+    static Map<String, Object> object(String text) {
+        try {
+            return JsonReader.object(text, MAX_PAYLOAD);
+        } catch (JsonException e) {
+            throw new IllegalArgumentException("the payload is " + e.getMessage(), e);
+        }
+    }
+
     private Result ack(String id, String text) {
-        Map<String, Object> o = JsonReader.object(text);
+        Map<String, Object> o = object(text);
         Object by = o.get("by");
         if (!(by instanceof String who) || who.isBlank()) {
             return no("say who takes care of alert " + id + ", e.g. {\"by\":\"Anna (care centre)\"}");

@@ -1,5 +1,8 @@
 package org.tinysep.mqtt.internal;
 
+import static org.tinysep.json.JsonWriter.object;
+import static org.tinysep.json.JsonWriter.writePlain;
+
 import java.time.Instant;
 import java.util.EnumMap;
 import java.util.HashMap;
@@ -108,7 +111,7 @@ final class DeviceScan implements AutoCloseable {
         Object roomUid = (d == null ? p.ref() : d.ref()).getProperty(DeviceProperties.ROOM);
         String room = roomUid == null ? "" : rooms.room(roomUid.toString()).map(Room::name).orElse(roomUid.toString());
         String where = name + (room.isEmpty() ? "" : " (" + room + ")");
-        out.accept(Message.state(topics.deviceState(uid), Json.write(Json.object("uid", uid, "name", name,
+        out.accept(Message.state(topics.deviceState(uid), writePlain(object("uid", uid, "name", name,
                 "room", room, "type", kind.type, "value", value, "since", before.since,
                 "explanation", where + ": " + kind.describe(value)))));
         DeviceStatus status = d == null ? null : Safely.get(() -> d.service().status(), null);
@@ -120,7 +123,7 @@ final class DeviceScan implements AutoCloseable {
             offline++;
         }
         out.accept(Message.state(topics.deviceAvailability(uid), online ? "online" : "offline"));
-        out.accept(Message.state(topics.deviceHealth(uid), Json.write(Json.object(
+        out.accept(Message.state(topics.deviceHealth(uid), writePlain(object(
                 "status", status == null ? "UNKNOWN" : status.state().name(),
                 "battery", null,
                 "batteryMillivolts", node == null ? null : node.batteryMillivolts(),

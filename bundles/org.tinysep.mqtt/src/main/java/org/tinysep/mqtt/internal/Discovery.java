@@ -1,5 +1,8 @@
 package org.tinysep.mqtt.internal;
 
+import static org.tinysep.json.JsonWriter.object;
+import static org.tinysep.json.JsonWriter.writePlain;
+
 import java.util.List;
 import java.util.Map;
 import org.tinysep.api.alert.AlertKind;
@@ -20,12 +23,12 @@ final class Discovery {
 
     /** The HA device of the whole flat: occupancy and alert sensors. */
     private Map<String, Object> flatDevice() {
-        return Json.object("identifiers", List.of(topics.uniqueId("flat")), "name", "TinySEP " + topics.flatId(),
+        return object("identifiers", List.of(topics.uniqueId("flat")), "name", "TinySEP " + topics.flatId(),
                 "manufacturer", "TinySEP", "model", "TinySEP platform");
     }
 
     Message device(String uid, DeviceKind kind, String name, String room) {
-        Map<String, Object> c = Json.object("name", null, "unique_id", topics.uniqueId(uid),
+        Map<String, Object> c = object("name", null, "unique_id", topics.uniqueId(uid),
                 "object_id", topics.uniqueId(uid), "state_topic", topics.deviceState(uid));
         switch (kind.component) {
             case "binary_sensor" -> {
@@ -56,46 +59,46 @@ final class Discovery {
                 c.put("state_off", "OFF");
             }
         }
-        c.put("availability", List.of(Json.object("topic", topics.status()),
-                Json.object("topic", topics.deviceAvailability(uid))));
+        c.put("availability", List.of(object("topic", topics.status()),
+                object("topic", topics.deviceAvailability(uid))));
         c.put("availability_mode", "all");
         c.put("qos", 1);
-        Map<String, Object> device = Json.object("identifiers", List.of(topics.uniqueId(uid)), "name", name,
+        Map<String, Object> device = object("identifiers", List.of(topics.uniqueId(uid)), "name", name,
                 "manufacturer", "TinySEP", "model", kind.type, "via_device", topics.uniqueId("flat"));
         if (!room.isEmpty()) { // Home Assistant refuses the whole config when suggested_area is null
             device.put("suggested_area", room);
         }
         c.put("device", device);
-        return Message.state(topics.discoveryConfig(kind.component, uid), Json.write(c));
+        return Message.state(topics.discoveryConfig(kind.component, uid), writePlain(c));
     }
 
     /** A low-battery problem sensor for a node whose protocol reports its battery. */
     Message battery(String uid) {
-        Map<String, Object> c = Json.object("name", "Battery", "unique_id", topics.uniqueId(uid + "_battery"),
+        Map<String, Object> c = object("name", "Battery", "unique_id", topics.uniqueId(uid + "_battery"),
                 "object_id", topics.uniqueId(uid + "_battery"), "state_topic", topics.deviceHealth(uid),
                 "value_template", "{{ 'ON' if value_json.batteryLow else 'OFF' }}", "device_class", "battery",
                 "availability_topic", topics.status(), "qos", 1,
-                "device", Json.object("identifiers", List.of(topics.uniqueId(uid))));
-        return Message.state(topics.discoveryConfig("binary_sensor", uid + "_battery"), Json.write(c));
+                "device", object("identifiers", List.of(topics.uniqueId(uid))));
+        return Message.state(topics.discoveryConfig("binary_sensor", uid + "_battery"), writePlain(c));
     }
 
     Message occupancy() {
-        Map<String, Object> c = Json.object("name", "Occupancy", "unique_id", topics.uniqueId("occupancy"),
+        Map<String, Object> c = object("name", "Occupancy", "unique_id", topics.uniqueId("occupancy"),
                 "object_id", topics.uniqueId("occupancy"), "state_topic", topics.occupancy(),
                 "value_template", "{{ 'ON' if value_json.state == 'OCCUPIED' else 'OFF' }}",
                 "device_class", "occupancy", "availability_topic", topics.status(), "qos", 1,
                 "device", flatDevice());
-        return Message.state(topics.discoveryConfig("binary_sensor", "occupancy"), Json.write(c));
+        return Message.state(topics.discoveryConfig("binary_sensor", "occupancy"), writePlain(c));
     }
 
     Message alertKind(AlertKind kind) {
         String object = "alert_" + kind.name().toLowerCase();
-        Map<String, Object> c = Json.object("name", "Alert " + Alerts.kindWords(kind),
+        Map<String, Object> c = object("name", "Alert " + Alerts.kindWords(kind),
                 "unique_id", topics.uniqueId(object), "object_id", topics.uniqueId(object),
                 "state_topic", topics.alertKind(kind.name()), "value_template", "{{ value_json.state }}",
                 "json_attributes_topic", topics.alertKind(kind.name()),
                 "device_class", "problem", "availability_topic", topics.status(), "qos", 1,
                 "device", flatDevice());
-        return Message.state(topics.discoveryConfig("binary_sensor", object), Json.write(c));
+        return Message.state(topics.discoveryConfig("binary_sensor", object), writePlain(c));
     }
 }

@@ -1,5 +1,8 @@
 package org.tinysep.mqtt.internal;
 
+import static org.tinysep.json.JsonWriter.object;
+import static org.tinysep.json.JsonWriter.writePlain;
+
 import java.time.Instant;
 import java.util.List;
 import java.util.function.Consumer;
@@ -35,7 +38,7 @@ final class FlatState implements AutoCloseable {
             FlatOccupancyProvider p = e.service();
             Occupancy o = Safely.get(p::occupancy, Occupancy.UNKNOWN);
             Instant since = Safely.get(p::since, null);
-            out.accept(Message.state(topics.occupancy(), Json.write(Json.object("state", o.name(), "since", since,
+            out.accept(Message.state(topics.occupancy(), writePlain(object("state", o.name(), "since", since,
                     "explanation", switch (o) {
                         case OCCUPIED -> "someone is at home" + (since == null ? "" : " (since " + since + ")");
                         case UNOCCUPIED -> "nobody is at home" + (since == null ? "" : " (since " + since + ")");
@@ -50,7 +53,7 @@ final class FlatState implements AutoCloseable {
     }
 
     Message platform() {
-        return Message.state(topics.platform(), Json.write(Json.object("flat", topics.flatId(), "version", version,
+        return Message.state(topics.platform(), writePlain(object("flat", topics.flatId(), "version", version,
                 "startedAt", startedAt, "heartbeatAt", clock.get(), "heartbeatSeconds", heartbeatSeconds,
                 "explanation", "TinySEP of flat " + topics.flatId() + " is running; it says so every "
                         + heartbeatSeconds + " s")));
@@ -64,7 +67,7 @@ final class FlatState implements AutoCloseable {
                         : open.size() + " open alert(s)")
                 + ", " + (devicesOffline == 0 ? "all " + devices + " devices online"
                         : devicesOffline + " of " + devices + " devices offline");
-        return Message.state(topics.summary(), Json.write(Json.object("at", now, "text", text,
+        return Message.state(topics.summary(), writePlain(object("at", now, "text", text,
                 "openAlerts", open.size())));
     }
 

@@ -63,24 +63,24 @@ final class Board {
             case STATUS -> flat.status(empty ? null : Payloads.status(text), at);
             case PLATFORM -> {
                 if (!empty) {
-                    flat.platform(Payloads.platform(FlatJson.parse(text)), at);
+                    flat.platform(Payloads.platform(Payloads.fields(text)), at);
                 }
             }
             case SUMMARY -> {
                 if (!empty) {
-                    flat.summary(Payloads.summary(FlatJson.parse(text)), at);
+                    flat.summary(Payloads.summary(Payloads.fields(text)), at);
                 }
             }
             case OCCUPANCY -> {
                 if (!empty) {
-                    flat.occupancy(Payloads.occupancy(FlatJson.parse(text)), at);
+                    flat.occupancy(Payloads.occupancy(Payloads.fields(text)), at);
                 }
             }
-            case HEALTH -> flat.health(t.id(), empty ? null : Payloads.health(FlatJson.parse(text)), at);
+            case HEALTH -> flat.health(t.id(), empty ? null : Payloads.health(Payloads.fields(text)), at);
             case ALERT -> {
                 if (empty) {
                     flat.alertGone(t.id(), at);
-                } else if (!flat.alert(Payloads.alert(t.flat(), t.id(), FlatJson.parse(text)), at)) {
+                } else if (!flat.alert(Payloads.alert(t.flat(), t.id(), Payloads.fields(text)), at)) {
                     duplicates.incrementAndGet();
                     return false;
                 }

@@ -27,6 +27,7 @@ import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.json.JsonWriter;
 
 /**
  * The board's MQTT link (Eclipse Paho v5): connects (and reconnects every {@value #RETRY_SECONDS} s while the broker
@@ -154,7 +155,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
 
     /** Publishes {@code {"by":…}} to the alert's ack topic (QoS 1) and waits for the broker to take it. */
     void acknowledge(String flat, String alertId, String by) throws MqttException {
-        String body = new JsonOut().open('{').field("by", by).close('}').toString();
+        String body = new JsonWriter().open('{').field("by", by).close('}').toString();
         client.publish(Topic.ack(settings.prefix(), flat, alertId), body.getBytes(StandardCharsets.UTF_8), 1, false)
                 .waitForCompletion(10_000);
     }

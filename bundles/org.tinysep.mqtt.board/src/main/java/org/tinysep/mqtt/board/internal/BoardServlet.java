@@ -18,6 +18,7 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.json.JsonWriter;
 
 /**
  * The central alert board: runs the board ({@link Central}) with its configuration and serves it under
@@ -93,10 +94,11 @@ public final class BoardServlet extends HttpServlet {
         byte[] body = req.getInputStream().readNBytes(4096);
         try {
             if (body.length > 0) {
-                by = FlatJson.parse(new String(body, StandardCharsets.UTF_8)).get("by");
+                by = Payloads.fields(new String(body, StandardCharsets.UTF_8)).get("by");
             }
             String words = central.acknowledge(m.group(1), m.group(2), by);
-            send(resp, 200, new JsonOut().open('{').field("ok", true).field("explanation", words).close('}').toString());
+            send(resp, 200, new JsonWriter().open('{').field("ok", true).field("explanation", words).close('}')
+                    .toString());
         } catch (IllegalArgumentException e) {
             send(resp, 404, error(e.getMessage()));
         } catch (IllegalStateException e) {
@@ -115,7 +117,7 @@ public final class BoardServlet extends HttpServlet {
     }
 
     private static String error(String words) {
-        return new JsonOut().open('{').field("error", words).close('}').toString();
+        return new JsonWriter().open('{').field("error", words).close('}').toString();
     }
 
     private static void send(HttpServletResponse resp, int status, String json) throws IOException {

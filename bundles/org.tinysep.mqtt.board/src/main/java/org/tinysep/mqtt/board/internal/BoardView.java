@@ -6,6 +6,7 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.tinysep.json.JsonWriter;
 import org.tinysep.mqtt.board.internal.Flat.Entry;
 import org.tinysep.mqtt.board.internal.Flat.Snapshot;
 import org.tinysep.mqtt.board.internal.Liveness.Rules;
@@ -33,7 +34,8 @@ final class BoardView {
         rows.sort(Comparator.comparing((Row r) -> r.open() == 0).thenComparing(r -> r.v().status())
                 .thenComparing(r -> r.s().id()));
         Board.Totals t = board.totals();
-        JsonOut j = new JsonOut().open('{').field("connected", connected).field("link", link).field("at", now.toString());
+        JsonWriter j = new JsonWriter().open('{').field("connected", connected).field("link", link)
+                .field("at", now.toString());
         j.key("totals").open('{').field("flats", t.flats()).field("messages", t.messages()).field("badPayloads", t.bad())
                 .field("duplicates", t.duplicates()).field("refusedFlats", t.refusedFlats()).close('}');
         j.key("flats").open('[');
@@ -43,7 +45,7 @@ final class BoardView {
         return j.close(']').close('}').toString();
     }
 
-    private static void flat(JsonOut j, Snapshot s, Verdict v, Rules rules, Instant now) {
+    private static void flat(JsonWriter j, Snapshot s, Verdict v, Rules rules, Instant now) {
         j.open('{').field("flat", s.id()).field("status", v.status().name()).field("explanation", v.explanation());
         if (s.occupancy() != null) {
             j.field("occupancy", s.occupancy().state()).field("occupancyExplanation", s.occupancy().explanation());

@@ -5,6 +5,7 @@ import java.time.Instant;
 import java.time.format.DateTimeParseException;
 import java.util.Map;
 import java.util.Set;
+import org.tinysep.json.JsonReader;
 
 /**
  * Turns the contract's payloads into records. A payload that breaks the contract throws
@@ -39,6 +40,15 @@ final class Payloads {
             throw new IllegalArgumentException("payload of " + payload.length + " bytes, more than " + MAX_PAYLOAD);
         }
         return new String(payload, StandardCharsets.UTF_8);
+    }
+
+    /**
+     * @return the members of the flat JSON object a payload holds, every value as text (null as absent)
+     * @throws IllegalArgumentException "not a flat JSON object: … at character N" (read strictly by the shared
+     *         {@link JsonReader})
+     */
+    static Map<String, String> fields(String text) {
+        return JsonReader.flatObject(text, MAX_PAYLOAD);
     }
 
     static String status(String text) {

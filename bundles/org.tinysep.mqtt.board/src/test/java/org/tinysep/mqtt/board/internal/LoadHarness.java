@@ -106,7 +106,7 @@ final class LoadHarness {
             return;
         }
         long now = micros(Instant.now());
-        Map<String, String> m = FlatJson.parse(new String(payload, StandardCharsets.UTF_8));
+        Map<String, String> m = Payloads.fields(new String(payload, StandardCharsets.UTF_8));
         String[] l = topic.split("/");
         String key = l[1] + "/" + l[3];
         if (m.get("state").equals("OPEN")) {

@@ -23,6 +23,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.PacketEntry;
 import org.tinysep.api.log.PacketLog;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.json.JsonWriter;
 
 /**
  * The JSON API under {@code /api/} (docs/web-api.md). Login, CSRF and roles are checked before any request gets
@@ -73,9 +74,9 @@ public final class ApiServlet extends HttpServlet {
         NameCache names = new NameCache(platform);
         this.streams = new LiveStreams(
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
-                        e -> Json.write(LogsApi.event(e, names.get()))),
+                        e -> JsonWriter.write(LogsApi.event(e, names.get()))),
                 new LiveFeed<PacketEntry>("packets", packets::recent, PacketEntry::sequence,
-                        p -> Json.write(LogsApi.packet(p))));
+                        p -> JsonWriter.write(LogsApi.packet(p))));
     }
 
     @Deactivate
@@ -213,7 +214,7 @@ public final class ApiServlet extends HttpServlet {
     }
 
     static void send(HttpServletResponse resp, int status, Object answer) throws IOException {
-        byte[] bytes = Json.write(answer).getBytes(StandardCharsets.UTF_8);
+        byte[] bytes = JsonWriter.write(answer).getBytes(StandardCharsets.UTF_8);
         resp.setStatus(status);
         resp.setContentType("application/json;charset=utf-8");
         resp.setHeader("Cache-Control", "no-store");

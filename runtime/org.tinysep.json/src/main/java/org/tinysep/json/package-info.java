@@ -1,0 +1,11 @@
+/**
+ * JSON for TinySEP's wire formats, written once: {@link org.tinysep.json.JsonReader} (strict, bounded, errors that
+ * name the character) and {@link org.tinysep.json.JsonWriter}.
+ * <p>
+ * Bundles do not import this package at run time: bnd copies the classes into each bundle that uses them
+ * ({@code -conditionalpackage: org.tinysep.json}), like the device support library.
+ */
+@Version("1.0.0")
+package org.tinysep.json;
+
+import org.osgi.annotation.versioning.Version;
