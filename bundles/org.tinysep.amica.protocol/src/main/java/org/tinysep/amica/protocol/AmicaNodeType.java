@@ -95,7 +95,7 @@ public enum AmicaNodeType {
 
     /** @return true for the TinySEP presence extension (bits 8..11): a node that reports ON/OFF as Reed-Switch Status */
     public boolean isPresence() {
-        return bitIndex >= PRESENCE_BED.bitIndex;
+        return bitIndex >= PRESENCE_BED.bitIndex && bitIndex <= PRESENCE_APPLIANCE.bitIndex;
     }
 
     /**
