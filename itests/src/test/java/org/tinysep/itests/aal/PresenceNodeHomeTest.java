@@ -8,8 +8,10 @@ import static org.tinysep.amica.protocol.AmicaNodeType.PRESENCE_SEAT;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.time.ZoneId;
+import java.time.temporal.ChronoUnit;
 import java.util.List;
-import java.util.Map;
+import java.util.Locale;
 import org.junit.Test;
 import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
@@ -38,105 +40,90 @@ import org.tinysep.itests.AmicaNode;
 @ExamReactorStrategy(PerMethod.class)
 public class PresenceNodeHomeTest extends AalTestSupport {
 
-    @Override
-    protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
-        return configs;
+    /** A hall with the front door and one room with a mat, both nodes' first reports in, OCCUPIED on arrival. */
+    private record Home(Instant start, Device mat, PresenceProvider presence, FlatOccupancyProvider flat,
+                        Device flatDevice, InactivityRecognitionProvider inactivity, Device detector) {
+    }
+
+    private Home arrive(AalSync sync, Instant t, AmicaNode front, AmicaNode matNode, String room, String type)
+            throws Exception {
+        sync.tickDone(t);
+        room("Hall", "Hall");
+        room(room, type);
+        place(front, "AmicaDoor", "Hall");
+        Device mat = place(matNode, "AmicaPresence", room);
+        String byNode = "(" + DeviceProperties.NODE_ADDRESS + "=" + matNode.id() + ")";
+        PresenceProvider presence = awaitService(PresenceProvider.class, byNode, TIMEOUT);
+        ServiceReference<?> ref = context.getServiceReferences(PresenceProvider.class.getName(), byNode)[0];
+        assertEquals(List.of("presence-" + presence.kind().name().toLowerCase(Locale.ROOT)),
+                List.of((String[]) ref.getProperty(DeviceProperties.NODE_TYPE)));
+        FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
+        InactivityRecognitionProvider inactivity = awaitService(InactivityRecognitionProvider.class, null, TIMEOUT);
+        Device detector = awaitService(Device.class, "(tinysep.device.uid=" + inactivity.deviceUid() + ")", TIMEOUT);
+        Device flatDevice = awaitService(Device.class, "(tinysep.device.uid=" + flat.deviceUid() + ")", TIMEOUT);
+        front.door(false); // first reports: resting states, no activity
+        matNode.door(false);
+        await(TIMEOUT, () -> flatDevice.connections().size() >= 2, "Flat Occupancy connected to door and mat");
+        await(TIMEOUT, () -> "OFF".equals(parameter(mat, "state")), "the mat's first report");
+        front.door(true);
+        await(TIMEOUT, () -> flat.occupancy() == Occupancy.OCCUPIED, "OCCUPIED on arrival");
+        sync.tickDone(t.plusSeconds(5));
+        front.door(false);
+        return new Home(t, mat, presence, flat, flatDevice, inactivity, detector);
     }
 
     @Test
     public void aSeatMatThatIsOnKeepsTheFlatOccupiedAfterTheOuterDoorClosed() throws Exception {
         try (AalSync sync = sync(); AmicaNode front = node(1, 71, DOOR); AmicaNode seat = node(1, 72, PRESENCE_SEAT)) {
-            Instant t = tomorrow();
-            sync.tickDone(t);
-            room("Hall", "Hall");
-            room("Living Room", "Living room");
-            place(front, "AmicaDoor", "Hall");
-            Device mat = place(seat, "AmicaPresence", "Living Room");
-            shell("tinysep:set " + mat.uid() + " name \"Seat (Pressure)\"");
-            PresenceProvider presence = awaitService(PresenceProvider.class,
-                    "(" + DeviceProperties.NODE_ADDRESS + "=" + seat.id() + ")", TIMEOUT);
-            assertEquals(PresenceKind.SEAT, presence.kind());
-            ServiceReference<?> ref = context.getServiceReferences(PresenceProvider.class.getName(),
-                    "(" + DeviceProperties.NODE_ADDRESS + "=" + seat.id() + ")")[0];
-            assertEquals(List.of("presence-seat"), List.of((String[]) ref.getProperty(DeviceProperties.NODE_TYPE)));
-            FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
-            InactivityRecognitionProvider inactivity = awaitService(InactivityRecognitionProvider.class, null,
-                    TIMEOUT);
-            Device detector = awaitService(Device.class, "(tinysep.device.uid=" + inactivity.deviceUid() + ")",
-                    TIMEOUT);
-            Device flatDevice = awaitService(Device.class, "(tinysep.device.uid=" + flat.deviceUid() + ")", TIMEOUT);
-            front.door(false); // first reports: resting states, no activity
-            seat.door(false);
-            await(TIMEOUT, () -> flatDevice.connections().size() >= 2, "Flat Occupancy connected to door and mat");
-            await(TIMEOUT, () -> "OFF".equals(parameter(mat, "state")), "the mat's first report");
-
-            // she comes home and sits down; later a visitor leaves: the front door opens and closes, then nothing
-            front.door(true);
-            await(TIMEOUT, () -> flat.occupancy() == Occupancy.OCCUPIED, "OCCUPIED on arrival");
-            sync.tickDone(t.plusSeconds(5));
-            front.door(false);
-            sync.tickDone(t.plusSeconds(60));
-            seat.door(true); // Reed-Switch Status A = 1: the seat mat is ON
-            await(TIMEOUT, () -> presence.present(), "the seat mat ON");
-            await(TIMEOUT, () -> parameter(detector, "lastActivity").contains("seat Seat (Pressure) on"),
-                    "the mat turning on is activity in the Living Room: " + parameter(detector, "lastActivity"));
-            await(TIMEOUT, () -> parameter(flatDevice, "someoneHere").contains(mat.uid()),
+            Home h = arrive(sync, tomorrow(), front, seat, "Living Room", "Living room");
+            assertEquals(PresenceKind.SEAT, h.presence().kind());
+            shell("tinysep:set " + h.mat().uid() + " name \"Seat (Pressure)\"");
+            sync.tickDone(h.start().plusSeconds(60));
+            seat.door(true); // Reed-Switch Status A = 1: she sits down, the seat mat is ON
+            await(TIMEOUT, () -> h.presence().present(), "the seat mat ON");
+            await(TIMEOUT, () -> parameter(h.detector(), "lastActivity").contains("seat Seat (Pressure) on"),
+                    "the mat turning on is activity in the Living Room");
+            await(TIMEOUT, () -> parameter(h.flatDevice(), "someoneHere").contains(h.mat().uid()),
                     "Flat Occupancy lists the mat as someone here");
 
-            Instant visitorLeaves = t.plus(Duration.ofMinutes(30));
+            // a visitor leaves: the front door opens and closes, then nothing (no motion sensor in this home)
+            Instant visitorLeaves = h.start().plus(Duration.ofMinutes(30));
             sync.tickDone(visitorLeaves);
             front.door(true);
             sync.tickDone(visitorLeaves.plusSeconds(5));
             front.door(false);
-            await(TIMEOUT, () -> !parameter(flatDevice, "leaveCheckUntil").isEmpty(), "the leave check started");
+            await(TIMEOUT, () -> !parameter(h.flatDevice(), "leaveCheckUntil").isEmpty(), "the leave check started");
             sync.tickDone(visitorLeaves.plusSeconds(5 + 600 + 60));
-            await(TIMEOUT, () -> parameter(flatDevice, "leaveCheckUntil").isEmpty(), "the leave check ended");
+            await(TIMEOUT, () -> parameter(h.flatDevice(), "leaveCheckUntil").isEmpty(), "the leave check ended");
             assertEquals("the seat mat ON says someone is here: no motion needed", Occupancy.OCCUPIED,
-                    flat.occupancy());
-            assertEquals(InactivityState.WATCHING, inactivity.state());
+                    h.flat().occupancy());
+            assertEquals(InactivityState.WATCHING, h.inactivity().state());
 
-            // she sits on and on, nothing else happens: the living room's limit runs from the last activity
-            // (the front door closing); the alert names the mat's room and what the detector knows
-            Instant deadline = Instant.parse(parameter(detector, "deadline"));
+            // she sits on and on: the living room's limit runs out and the alert is raised, the flat still occupied
+            Instant deadline = Instant.parse(parameter(h.detector(), "deadline"));
             sync.tickDone(deadline);
-            await(TIMEOUT, () -> inactivity.state() == InactivityState.ALERT, "the alert at " + deadline);
-            InactivityAlert alert = inactivity.alert().orElseThrow();
-            assertTrue(alert.lastActivity(), alert.lastActivity().startsWith("door "));
-            assertEquals("Occupancy never went away while she sat", Occupancy.OCCUPIED, flat.occupancy());
+            await(TIMEOUT, () -> h.inactivity().state() == InactivityState.ALERT, "the alert at " + deadline);
+            InactivityAlert alert = h.inactivity().alert().orElseThrow();
+            assertEquals("Living Room", alert.roomName());
+            assertEquals(Occupancy.OCCUPIED, h.flat().occupancy());
         }
     }
 
     @Test
     public void aBedMatTurningOnPutsTheDetectorInTheSleepState() throws Exception {
         try (AalSync sync = sync(); AmicaNode front = node(1, 73, DOOR); AmicaNode bed = node(1, 74, PRESENCE_BED)) {
-            Instant t = tomorrow();
-            sync.tickDone(t);
-            room("Hall", "Hall");
-            room("Bedroom", "Bedroom");
-            place(front, "AmicaDoor", "Hall");
-            Device mat = place(bed, "AmicaPresence", "Bedroom");
-            assertEquals("BED", parameter(mat, "kind"));
-            InactivityRecognitionProvider inactivity = awaitService(InactivityRecognitionProvider.class, null,
-                    TIMEOUT);
-            Device detector = awaitService(Device.class, "(tinysep.device.uid=" + inactivity.deviceUid() + ")",
-                    TIMEOUT);
-            FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
-            front.door(false);
-            bed.door(false);
-            await(TIMEOUT, () -> "OFF".equals(parameter(mat, "state")), "the mat's first report");
-            front.door(true);
-            await(TIMEOUT, () -> flat.occupancy() == Occupancy.OCCUPIED, "OCCUPIED on arrival");
-            sync.tickDone(t.plusSeconds(5));
-            front.door(false);
-            sync.tickDone(t.plusSeconds(30));
-            bed.door(true); // she lies down (by day: only the mat says she is in bed)
-            await(TIMEOUT, () -> parameter(detector, "lastActivity").contains("bed Bed mat " + bed.id() + " on"),
-                    "the bed mat is activity: " + parameter(detector, "lastActivity"));
-            String reason = parameter(detector, "limitReason");
+            // by day (noon in the platform's zone): only the mat can say that she is in bed, not the night
+            Instant noon = tomorrow().atZone(ZoneId.systemDefault()).truncatedTo(ChronoUnit.DAYS).plusDays(1)
+                    .plusHours(12).toInstant();
+            Home h = arrive(sync, noon, front, bed, "Bedroom", "Bedroom");
+            assertEquals("BED", parameter(h.mat(), "kind"));
+            sync.tickDone(h.start().plusSeconds(30));
+            bed.door(true); // she lies down
+            await(TIMEOUT, () -> parameter(h.detector(), "lastActivity").contains("bed Bed mat " + bed.id() + " on"),
+                    "the bed mat is activity in the Bedroom");
+            String reason = parameter(h.detector(), "limitReason");
             assertTrue("the bed mat gives the sleep state: " + reason, reason.contains("asleep"));
-            assertEquals(InactivityState.WATCHING, inactivity.state());
+            assertEquals(InactivityState.WATCHING, h.inactivity().state());
         }
     }
 }
