@@ -72,7 +72,8 @@ public abstract class TinySepTestSupport {
     /** The AmICA hardware bundles beyond the first slice; provisioned by default. */
     protected static final List<String> AMICA_HARDWARE = List.of("org.tinysep.amica.busradio.serial",
             "org.tinysep.amica.window", "org.tinysep.amica.simplelight", "org.tinysep.amica.dimmablelight",
-            "org.tinysep.amica.heater", "org.tinysep.amica.speaker", "org.tinysep.amica.petmovement");
+            "org.tinysep.amica.heater", "org.tinysep.amica.speaker", "org.tinysep.amica.petmovement",
+            "org.tinysep.amica.presence");
     /** The intermediate and AAL services beyond Flat Occupancy; provisioned by default. */
     protected static final List<String> SERVICES = List.of("org.tinysep.houseinformation",
             "org.tinysep.timecontroller", "org.tinysep.mailmanager", "org.tinysep.inactivity",

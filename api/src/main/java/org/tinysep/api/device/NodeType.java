@@ -16,6 +16,19 @@ public final class NodeType {
     public static final String PET_COLLAR = "pet-collar";
     public static final String TEMPERATURE = "temperature";
     public static final String LIGHT_SENSOR = "light-sensor";
+    /** Presence node (issue 11): a pressure mat in or under a bed ({@code PresenceKind.BED}). Since 1.1. */
+    public static final String PRESENCE_BED = "presence-bed";
+    /** Presence node: a pressure mat on a seat or sofa ({@code PresenceKind.SEAT}). Since 1.1. */
+    public static final String PRESENCE_SEAT = "presence-seat";
+    /** Presence node: a toilet flush ({@code PresenceKind.FLUSH}). Since 1.1. */
+    public static final String PRESENCE_FLUSH = "presence-flush";
+    /** Presence node: an appliance in use ({@code PresenceKind.APPLIANCE}). Since 1.1. */
+    public static final String PRESENCE_APPLIANCE = "presence-appliance";
+    /**
+     * The common prefix of the presence node types: {@code "presence-"} + the {@code PresenceKind} in lower case.
+     * Since 1.1.
+     */
+    public static final String PRESENCE_PREFIX = "presence-";
 
     private NodeType() {
     }

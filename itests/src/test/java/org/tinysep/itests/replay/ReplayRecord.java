@@ -14,12 +14,14 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowProvider;
+import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 
 /**
  * What the platform's devices tell their consumers during a replay: per node address, how many times a sensor
- * turned on (motion detected after none, a door or window opened after being closed), and Flat Occupancy's changes
+ * turned on (motion detected after none, a door or window opened after being closed, a presence sensor ON after
+ * OFF), and Flat Occupancy's changes
  * with their virtual times. It connects to every provider as it appears, like any consumer.
  */
 final class ReplayRecord implements AutoCloseable {
@@ -34,6 +36,7 @@ final class ReplayRecord implements AutoCloseable {
         connections.to(MovementProvider.class, (ref, p) -> p.connect((src, m) -> sensor(ref, m.detected())));
         connections.to(DoorProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
         connections.to(WindowProvider.class, (ref, p) -> p.connect((src, s, at) -> sensor(ref, s == OpenState.OPEN)));
+        connections.to(PresenceProvider.class, (ref, p) -> p.connect((src, on, first, at) -> sensor(ref, on)));
         connections.to(FlatOccupancyProvider.class, (ref, p) -> p.connect((src, o, at) -> occupancy.put(at, o)));
     }
 

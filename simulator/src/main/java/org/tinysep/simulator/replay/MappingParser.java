@@ -118,7 +118,7 @@ final class MappingParser {
     private AmicaNodeType type(String name) throws ReplayFormatException {
         AmicaNodeType t = AmicaNodeType.fromTypeName(name.toLowerCase(Locale.ROOT)).orElse(null);
         if (t == null || !NodeSpec.isReplayable(t)) {
-            throw error("type '" + name + "': expected movement, pet-collar, door or window");
+            throw error("type '" + name + "': expected " + NodeSpec.REPLAYABLE);
         }
         return t;
     }

@@ -10,7 +10,9 @@ import org.tinysep.amica.protocol.AmicaNodeType;
  * @param sensor   recorded sensor name
  * @param family   node family, always {@value #AMICA} for now
  * @param address  node address {@code NG.ADDR}
- * @param type     node type announced in the keep-alive's product id: movement, pet-collar, door or window
+ * @param type     node type announced in the keep-alive's product id: movement, pet-collar, door, window or a
+ *                 presence type (presence-bed, presence-seat, presence-flush, presence-appliance: the TinySEP
+ *                 extension, bits 8..11; such a node sends Reed-Switch Status, A = 1 while the sensor is ON)
  * @param room     room name the node is placed in (House Information room name)
  * @param doorKind for {@code door} nodes the Door device's {@code kind} parameter, {@code OUTER} or {@code INNER};
  *                 empty for other types
@@ -21,6 +23,10 @@ public record NodeSpec(String sensor, String family, AmicaAddress address, Amica
 
     /** The AmICA family name. */
     public static final String AMICA = "amica";
+
+    /** The node types a recorded binary sensor can become, for messages. */
+    static final String REPLAYABLE = "movement, pet-collar, door, window, presence-bed, presence-seat, "
+            + "presence-flush or presence-appliance";
 
     /** @throws NullPointerException if a field is null; IllegalArgumentException for an unsupported combination */
     public NodeSpec {
@@ -36,7 +42,7 @@ public record NodeSpec(String sensor, String family, AmicaAddress address, Amica
         }
         if (!isReplayable(type)) {
             throw new IllegalArgumentException("node type '" + type.typeName()
-                    + "' cannot replay a binary sensor; use movement, pet-collar, door or window");
+                    + "' cannot replay a binary sensor; use " + REPLAYABLE);
         }
         if (type == AmicaNodeType.DOOR != (doorKind.equals("OUTER") || doorKind.equals("INNER"))) {
             throw new IllegalArgumentException("doorKind '" + doorKind
@@ -51,6 +57,6 @@ public record NodeSpec(String sensor, String family, AmicaAddress address, Amica
 
     static boolean isReplayable(AmicaNodeType type) {
         return type == AmicaNodeType.MOVEMENT || type == AmicaNodeType.PET_COLLAR
-                || type == AmicaNodeType.DOOR || type == AmicaNodeType.WINDOW;
+                || type == AmicaNodeType.DOOR || type == AmicaNodeType.WINDOW || type.isPresence();
     }
 }

@@ -20,7 +20,8 @@ import org.tinysep.amica.protocol.AmicaNodeType;
  * default  = pressure; type = window
  * sensor   = Maindoor; node = amica 1.20; type = door; doorKind = OUTER; room = Entrance
  * </pre>
- * Built-in defaults by kind: motion → movement, door → door (INNER), pressure/flush/electric/other → window.
+ * Built-in defaults by kind: motion → movement, door → door (INNER), pressure → presence-seat, flush →
+ * presence-flush, electric → presence-appliance, other → window (README-replay.md says why).
  */
 public final class SensorMapping {
 
@@ -125,9 +126,12 @@ public final class SensorMapping {
         Map<Kind, Default> d = new EnumMap<>(Kind.class);
         d.put(Kind.MOTION, new Default(AmicaNodeType.MOVEMENT, ""));
         d.put(Kind.DOOR, new Default(AmicaNodeType.DOOR, "INNER"));
-        for (Kind k : List.of(Kind.PRESSURE, Kind.FLUSH, Kind.ELECTRIC, Kind.OTHER)) {
-            d.put(k, new Default(AmicaNodeType.WINDOW, ""));
-        }
+        // issue 11: a pressure mat holds a person but whether it is a bed is unknown: seat (someone is here, no
+        // sleep state claimed); a file that knows better says presence-bed
+        d.put(Kind.PRESSURE, new Default(AmicaNodeType.PRESENCE_SEAT, ""));
+        d.put(Kind.FLUSH, new Default(AmicaNodeType.PRESENCE_FLUSH, ""));
+        d.put(Kind.ELECTRIC, new Default(AmicaNodeType.PRESENCE_APPLIANCE, ""));
+        d.put(Kind.OTHER, new Default(AmicaNodeType.WINDOW, ""));
         return d;
     }
 }

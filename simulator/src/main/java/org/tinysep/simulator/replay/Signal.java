@@ -10,9 +10,9 @@ public enum Signal {
     MOTION_ON,
     /** Movement / pet-collar node: no motion ({@code 100 5 0 0}). */
     MOTION_OFF,
-    /** Reed switch (door, window): open ({@code 100 3 0 1}). */
+    /** Reed switch (door, window): open ({@code 100 3 0 1}); a presence node (mat, flush, appliance): ON. */
     CONTACT_OPEN,
-    /** Reed switch (door, window): closed ({@code 100 3 0 0}). */
+    /** Reed switch (door, window): closed ({@code 100 3 0 0}); a presence node: OFF. */
     CONTACT_CLOSED;
 
     /** @return the AmICA payload a node in this state sends */

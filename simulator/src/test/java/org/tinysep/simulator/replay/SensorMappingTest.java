@@ -23,8 +23,9 @@ class SensorMappingTest {
                 ev(3, "flush", Kind.FLUSH, true), ev(4, "tv", Kind.ELECTRIC, true), ev(5, "x", Kind.OTHER, true)),
                 SensorMapping.defaults());
         List<NodeSpec> n = plan.nodes();
-        assertEquals(List.of(AmicaNodeType.MOVEMENT, AmicaNodeType.DOOR, AmicaNodeType.WINDOW, AmicaNodeType.WINDOW,
-                AmicaNodeType.WINDOW, AmicaNodeType.WINDOW), n.stream().map(NodeSpec::type).toList());
+        assertEquals(List.of(AmicaNodeType.MOVEMENT, AmicaNodeType.DOOR, AmicaNodeType.PRESENCE_SEAT,
+                AmicaNodeType.PRESENCE_FLUSH, AmicaNodeType.PRESENCE_APPLIANCE, AmicaNodeType.WINDOW),
+                n.stream().map(NodeSpec::type).toList());
         assertEquals("INNER", n.get(1).doorKind());
         assertEquals("", n.get(0).doorKind());
         assertEquals(List.of("1.100", "1.101", "1.102", "1.103", "1.104", "1.105"),
@@ -62,7 +63,8 @@ class SensorMappingTest {
         assertError("m:2: address 1.5 of 'b' is already used by 'a'", "sensor = a; node = amica 1.5",
                 "sensor = b; node = amica 1.5");
         assertError("m:1: unknown key 'colour'", "sensor = a; colour = red");
-        assertError("m:1: type 'heater': expected movement, pet-collar, door or window", "sensor = a; type = heater");
+        assertError("m:1: type 'heater': expected movement, pet-collar, door, window, presence-bed",
+                "sensor = a; type = heater");
         assertError("m:1: doorKind 'OUTER': only for 'type = door'", "sensor = a; type = window; doorKind = OUTER");
         assertError("m:1: node 'sunspot 0014.4F01'", "sensor = a; node = sunspot 0014.4F01");
         assertError("m:1: address 1.0 is the platform's", "sensor = a; node = amica 1.0");

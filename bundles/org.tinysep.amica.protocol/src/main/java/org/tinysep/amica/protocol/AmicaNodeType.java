@@ -8,8 +8,10 @@ import java.util.Set;
 
 /**
  * The AmICA node types and their bits in a keep-alive's product id. A node may have several types, so the product id
- * is a bit mask; bits 8 to 15 are reserved and ignored. {@link #typeName()} is the matching node type name of the
- * TinySEP API ({@code org.tinysep.api.device.NodeType}).
+ * is a bit mask. Bits 0 to 7 are the thesis's types; bits 8 to 11 are a TinySEP extension (issue 11): presence
+ * nodes (a bed or seat mat, a toilet flush, an appliance in use) that report ON/OFF with the Reed-Switch Status
+ * payload (A = 1 ON). Bits 12 to 15 are reserved and ignored. {@link #typeName()} is the matching node type name of
+ * the TinySEP API ({@code org.tinysep.api.device.NodeType}).
  */
 public enum AmicaNodeType {
 
@@ -28,7 +30,15 @@ public enum AmicaNodeType {
     /** Pet collar (pet movement), bit 6. */
     PET_COLLAR(6, "pet-collar"),
     /** On/off light, bit 7. */
-    SIMPLE_LIGHT(7, "simple-light");
+    SIMPLE_LIGHT(7, "simple-light"),
+    /** TinySEP extension: pressure mat in or under a bed (ON while someone lies on it), bit 8. */
+    PRESENCE_BED(8, "presence-bed"),
+    /** TinySEP extension: pressure mat on a seat or sofa (ON while someone sits on it), bit 9. */
+    PRESENCE_SEAT(9, "presence-seat"),
+    /** TinySEP extension: toilet flush (ON while it is used), bit 10. */
+    PRESENCE_FLUSH(10, "presence-flush"),
+    /** TinySEP extension: appliance in use, e.g. a microwave or a toaster (ON while it runs), bit 11. */
+    PRESENCE_APPLIANCE(11, "presence-appliance");
 
     private final int bitIndex;
     private final String typeName;
@@ -43,7 +53,7 @@ public enum AmicaNodeType {
         return 1 << bitIndex;
     }
 
-    /** @return the position of this type's bit in the product id, 0..7 */
+    /** @return the position of this type's bit in the product id, 0..11 */
     public int bitIndex() {
         return bitIndex;
     }
@@ -55,7 +65,7 @@ public enum AmicaNodeType {
 
     /**
      * @param productId a keep-alive's product id, 0..65535
-     * @return the node types whose bits are set (unmodifiable); reserved bits are ignored
+     * @return the node types whose bits are set (unmodifiable); reserved bits (12..15) are ignored
      * @throws IllegalArgumentException if productId is outside 0..65535
      */
     public static Set<AmicaNodeType> fromProductId(int productId) {
@@ -81,6 +91,11 @@ public enum AmicaNodeType {
             id |= t.bit();
         }
         return id;
+    }
+
+    /** @return true for the TinySEP presence extension (bits 8..11): a node that reports ON/OFF as Reed-Switch Status */
+    public boolean isPresence() {
+        return bitIndex >= PRESENCE_BED.bitIndex && bitIndex <= PRESENCE_APPLIANCE.bitIndex;
     }
 
     /**

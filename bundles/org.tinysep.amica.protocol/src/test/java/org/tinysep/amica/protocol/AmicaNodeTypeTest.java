@@ -48,8 +48,8 @@ class AmicaNodeTypeTest {
     @Test
     void productIdZeroHasNoTypeAndReservedBitsAreIgnored() {
         assertTrue(AmicaNodeType.fromProductId(0).isEmpty());
-        assertTrue(AmicaNodeType.fromProductId(0xFF00).isEmpty());
-        assertEquals(EnumSet.of(AmicaNodeType.SIMPLE_LIGHT), AmicaNodeType.fromProductId(0x8180));
+        assertTrue(AmicaNodeType.fromProductId(0xF000).isEmpty());
+        assertEquals(EnumSet.of(AmicaNodeType.SIMPLE_LIGHT), AmicaNodeType.fromProductId(0x9080));
         assertEquals(EnumSet.allOf(AmicaNodeType.class), AmicaNodeType.fromProductId(0xFFFF));
     }
 

@@ -7,7 +7,8 @@ import org.tinysep.api.device.NodeType;
 
 /**
  * The report periods the thesis's node types promise (3.9.1 AmICA, 3.9.2 Sun SPOT): a movement or pet collar node
- * reports every 2 s, a reed switch (door, window) every second, lights, heaters, speakers and the Sun SPOT
+ * reports every 2 s, a reed switch (door, window) and a presence node (issue 11: a mat, flush or appliance sending
+ * Reed-Switch Status) every second, lights, heaters, speakers and the Sun SPOT
  * temperature and light sensors every 10 s. Used to tell a silent node (sensor health) and to rate its link.
  */
 public final class ReportRates {
@@ -25,12 +26,17 @@ public final class ReportRates {
      * @return the shortest report period of the types: how often the node is heard at least
      */
     public static Duration interval(Set<String> nodeTypes, Duration fallback) {
-        return nodeTypes.stream().map(PERIOD_SECONDS::get).filter(p -> p != null).min(Integer::compare)
+        return nodeTypes.stream().map(ReportRates::period).filter(p -> p != null).min(Integer::compare)
                 .map(Duration::ofSeconds).orElse(fallback);
     }
 
     /** @return reports per second the types promise together (a node of several types sends each report) */
     public static double perSecond(Set<String> nodeTypes) {
-        return nodeTypes.stream().map(PERIOD_SECONDS::get).filter(p -> p != null).mapToDouble(p -> 1.0 / p).sum();
+        return nodeTypes.stream().map(ReportRates::period).filter(p -> p != null).mapToDouble(p -> 1.0 / p).sum();
+    }
+
+    /** @return the report period of one node type in seconds, null if unknown */
+    private static Integer period(String nodeType) {
+        return nodeType.startsWith(NodeType.PRESENCE_PREFIX) ? Integer.valueOf(1) : PERIOD_SECONDS.get(nodeType);
     }
 }
