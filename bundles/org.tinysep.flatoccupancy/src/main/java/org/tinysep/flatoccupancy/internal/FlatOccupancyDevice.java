@@ -29,16 +29,16 @@ import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.FlatOccupancyListener;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Flat Occupancy device (thesis 4.4.3.1). Connects to every Movement and Door provider; each connection
  * counts as vital, so the device removes itself only when it has none left (thesis Fig 3.4).
  */
-final class FlatOccupancyDevice extends AbstractDevice
+final class FlatOccupancyDevice extends WholeFlatDevice
         implements FlatOccupancyProvider, MovementListener, DoorListener, WindowListener, PresenceListener {
 
     /**
@@ -274,12 +274,6 @@ final class FlatOccupancyDevice extends AbstractDevice
         synchronized (logic) {
             return logic.since();
         }
-    }
-
-    /** The whole flat: no room of its own. */
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 
     /** Where the device reads the rooms that cannot be watched now (the driver's Sensor Health, optional). */

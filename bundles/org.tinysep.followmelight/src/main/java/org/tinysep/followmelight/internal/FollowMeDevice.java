@@ -22,16 +22,16 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Uids;
 import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Follow Me Light device (thesis 4.4.4.2). Lights (simple and dimmable) are its vital connections;
  * movement, pet movement, Flat Occupancy and House Information are optional. It provides no interface.
  */
-final class FollowMeDevice extends AbstractDevice implements MovementListener {
+final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
 
     private final Placements directory;
     private final FollowMeLogic logic;
@@ -155,12 +155,6 @@ final class FollowMeDevice extends AbstractDevice implements MovementListener {
     private String roomName(String uid) {
         Room r = rooms.get(uid);
         return r == null ? "room " + uid : r.name();
-    }
-
-    /** A service of the whole flat: it has no room. */
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 
     @Override

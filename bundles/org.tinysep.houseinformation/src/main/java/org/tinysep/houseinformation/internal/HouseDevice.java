@@ -15,17 +15,17 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.HouseInformationListener;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Rooms;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The House Information device: holds the plan, validates every change, saves it, then tells listeners and the
  * event log. A malformed file on start makes the status ERROR with the reason (the last good house is used).
  */
-final class HouseDevice extends AbstractDevice implements HouseInformationProvider {
+final class HouseDevice extends WholeFlatDevice implements HouseInformationProvider {
 
     private static final Logger LOG = LoggerFactory.getLogger(HouseDevice.class);
 
@@ -60,11 +60,6 @@ final class HouseDevice extends AbstractDevice implements HouseInformationProvid
     private void problem(String reason) {
         status(DeviceStatus.State.ERROR, reason);
         context.reporter().event(EventKind.PROBLEM, uid(), reason);
-    }
-
-    @Override
-    protected boolean placeable() {
-        return false; // the house itself is in no room
     }
 
     @Override

@@ -26,17 +26,17 @@ import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
 import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;
  * Flat Occupancy, Mail Manager and House Information are optional.
  */
-final class InactivityDevice extends AbstractDevice
+final class InactivityDevice extends WholeFlatDevice
         implements InactivityRecognitionProvider {
 
     /** While running, the state is saved this often (wall time), so after a crash it tells when it stopped. */
@@ -266,12 +266,6 @@ final class InactivityDevice extends AbstractDevice
         synchronized (logic) {
             return logic.alert();
         }
-    }
-
-    /** A service of the whole flat: it has no room. */
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 
     @Override

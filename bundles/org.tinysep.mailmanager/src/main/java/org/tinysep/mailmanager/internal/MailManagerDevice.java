@@ -15,10 +15,10 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerListener;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The Mail Manager device (thesis 4.4.3.3): created at once by its driver, it takes send requests from any device
@@ -27,7 +27,7 @@ import org.tinysep.device.support.Uids;
  * or the password); its status ({@link MailHealth}) says where alerts go and shows an undelivered alert until a
  * delivery succeeds.
  */
-final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
+final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
 
     private static final Logger LOG = LoggerFactory.getLogger(MailManagerDevice.class);
 
@@ -202,11 +202,5 @@ final class MailManagerDevice extends AbstractDevice implements OutboxEvents {
     protected void onDispose() {
         outbox.close();
         listeners.closeAll();
-    }
-
-    /** A whole-flat service: it has no room. */
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 }

@@ -15,11 +15,11 @@ import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.health.UnmonitoredRoom;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.HealthWords;
 import org.tinysep.device.support.Listeners;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 import org.tinysep.sensorhealth.internal.Notices.Notice;
 
 /**
@@ -27,7 +27,7 @@ import org.tinysep.sensorhealth.internal.Notices.Notice;
  * rooms (event log and listeners on each change) and sends the notices that are due, by mail through the Mail
  * Manager when one is installed, always in the event log.
  */
-final class SensorHealthDevice extends AbstractDevice implements SensorHealthProvider {
+final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthProvider {
 
     static final String TYPE = "SensorHealth";
 
@@ -53,11 +53,6 @@ final class SensorHealthDevice extends AbstractDevice implements SensorHealthPro
         this.noticeAfterMinutes = Math.max(0, config.noticeAfterMinutes());
         this.listeners = new Listeners<>(uid());
         publish(this, SensorHealthProvider.class);
-    }
-
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 
     /** One platform second: only the nodes whose state or place changed are looked at again ({@link NodeIndex}). */

@@ -10,16 +10,16 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerProvider;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Time Controller device (thesis 4.4.3.4), created as soon as the driver starts: it needs no other device.
  * Provides {@link TimeControllerProvider}; in REAL mode its own scheduler ticks every real second (on the
  * second boundary); in EXTERNAL mode only the synchroniser's TICKs move the clock.
  */
-final class TimeControllerDevice extends AbstractDevice {
+final class TimeControllerDevice extends WholeFlatDevice {
 
     private final ClockService clock;
     private final Consumer<ClockMode> modeRequests;
@@ -109,11 +109,5 @@ final class TimeControllerDevice extends AbstractDevice {
     @Override
     public String toString() {
         return super.toString() + " " + clock.mode() + " " + clock.now();
-    }
-
-    /** A whole-flat service: it has no room. */
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 }

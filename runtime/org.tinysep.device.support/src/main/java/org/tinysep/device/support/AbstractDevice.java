@@ -123,7 +123,7 @@ public abstract class AbstractDevice implements Device {
 
     /**
      * @return whether the device has a {@code room} parameter (default true); services of the whole flat, like
-     *         Flat Occupancy or House Information, override this to return false
+     *         Flat Occupancy or House Information, extend {@link WholeFlatDevice} instead
      */
     protected boolean placeable() {
         return true;

@@ -103,4 +103,16 @@ class RoomParameterTest {
                 () -> s.setParameter("room", "Bathroom"));
         assertEquals("unknown or read-only parameter 'room' of Sensor; writable: name", e.getMessage());
     }
+
+    /** A service of the whole flat declares so once, by its base class: no room parameter, none in its backup. */
+    @Test
+    void wholeFlatDevicesHaveNoRoomParameterAndKeepNoRoom() {
+        WholeFlatDevice flat = new WholeFlatDevice(context(RoomDirectory.of(house)), "flat-1", "Flat", "Flat 1") {
+        };
+        assertEquals(java.util.List.of("name"), flat.parameters().stream().map(Parameter::key).toList());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> flat.setParameter("room", bath.uid()));
+        assertEquals("unknown or read-only parameter 'room' of Flat; writable: name", e.getMessage());
+        assertFalse(flat.backup().parameters().containsKey("room"));
+    }
 }

@@ -2,6 +2,7 @@ package org.tinysep.amica.door.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.tinysep.device.support.testing.TestPlatform.T0;
 
 import java.time.Instant;
 import java.util.ArrayList;
@@ -10,25 +11,20 @@ import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
+import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
-import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
 import org.tinysep.device.support.testing.FakeAmicaBus;
+import org.tinysep.device.support.testing.TestPlatform;
 
 /** Reed-switch payloads in, door changes out; repeated states are not re-announced. */
 class AmicaDoorDeviceTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-
     private final FakeAmicaBus bus = new FakeAmicaBus("1.20", "door");
 
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final AmicaDoorDevice door = new AmicaDoorDevice(
-            new DriverContext(null, "d", "AmicaDoor", logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final TestPlatform platform = new TestPlatform();
+    private final AmicaDoorDevice door = new AmicaDoorDevice(platform.context("AmicaDoor"), bus);
 
     @Test
     void announcesOnlyChanges() {

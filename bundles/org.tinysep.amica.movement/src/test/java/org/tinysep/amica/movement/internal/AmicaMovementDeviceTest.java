@@ -2,6 +2,7 @@ package org.tinysep.amica.movement.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.tinysep.device.support.testing.TestPlatform.T0;
 
 import java.time.Instant;
 import java.util.ArrayList;
@@ -13,21 +14,16 @@ import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.MovementLocation;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
 import org.tinysep.device.support.testing.FakeAmicaBus;
+import org.tinysep.device.support.testing.TestPlatform;
 
 /** Movement Detection payloads in, movement reports out. */
 class AmicaMovementDeviceTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-
     private final FakeAmicaBus bus = new FakeAmicaBus("1.17", "movement", "door");
 
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final AmicaMovementDevice movement = new AmicaMovementDevice(
-            new DriverContext(null, "d", "AmicaMovement", logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final TestPlatform platform = new TestPlatform();
+    private final AmicaMovementDevice movement = new AmicaMovementDevice(platform.context("AmicaMovement"), bus);
 
     @Test
     void everyMotionReportIsPassedOnAndOtherPayloadsOfTheNodeAreIgnored() {
@@ -42,7 +38,7 @@ class AmicaMovementDeviceTest {
         assertEquals(List.of(new MovementEvent(true, T0), new MovementEvent(true, T0.plusSeconds(2)),
                 new MovementEvent(false, T0.plusSeconds(4))), seen);
         assertEquals(new MovementEvent(false, T0.plusSeconds(4)), movement.lastMovement().orElseThrow());
-        long logged = logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).count();
+        long logged = platform.logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).count();
         assertEquals(2, logged, "the event log gets changes only: motion, then no motion");
     }
 

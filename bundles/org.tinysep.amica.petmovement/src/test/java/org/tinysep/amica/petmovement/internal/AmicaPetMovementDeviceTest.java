@@ -2,8 +2,8 @@ package org.tinysep.amica.petmovement.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.tinysep.device.support.testing.TestPlatform.T0;
 
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -15,19 +15,15 @@ import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.testing.TestPlatform;
 
 /** Motion Detection payloads of a pet collar in, pet movement reports out. */
 class AmicaPetMovementDeviceTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-
     private final FakeBus bus = new FakeBus("2.7", "pet-collar", "window");
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final AmicaPetMovementDevice pet = new AmicaPetMovementDevice(new DriverContext(null, "d",
-            AmicaPetMovementDriver.NAME, logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final TestPlatform platform = new TestPlatform();
+    private final AmicaPetMovementDevice pet = new AmicaPetMovementDevice(
+            platform.context(AmicaPetMovementDriver.NAME), bus);
 
     @Test
     void everyReportIsPassedOnTheEventLogGetsChangesAndOtherPayloadsAreIgnored() {
@@ -46,7 +42,7 @@ class AmicaPetMovementDeviceTest {
         assertEquals(List.of(new MovementEvent(true, T0), new MovementEvent(true, T0.plusSeconds(2)),
                 new MovementEvent(false, T0.plusSeconds(4))), seen);
         assertEquals(new MovementEvent(false, T0.plusSeconds(4)), pet.lastMovement().orElseThrow());
-        List<String> logged = logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT)
+        List<String> logged = platform.logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT)
                 .map(e -> e.message()).toList();
         assertEquals(List.of("pet movement detected", "no pet movement"), logged);
         assertEquals(0, bus.sent.size(), "a pet collar is never sent anything");

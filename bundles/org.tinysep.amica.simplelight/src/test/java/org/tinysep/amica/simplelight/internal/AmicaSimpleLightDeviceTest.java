@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tinysep.device.support.testing.TestPlatform.T0;
 
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
@@ -20,19 +20,15 @@ import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.testing.TestPlatform;
 
 /** Light Control status in, on/off out; switching sends Light Control 100/0 and waits for the node to confirm. */
 class AmicaSimpleLightDeviceTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
-
     private final FakeBus bus = new FakeBus("1.30", "simple-light", "movement");
-    private final RecordingLogs logs = new RecordingLogs(() -> T0);
-    private final AmicaSimpleLightDevice light = new AmicaSimpleLightDevice(new DriverContext(null, "d",
-            AmicaSimpleLightDriver.NAME, logs.reporter(), new PlatformClock(() -> T0)), bus);
+    private final TestPlatform platform = new TestPlatform();
+    private final AmicaSimpleLightDevice light = new AmicaSimpleLightDevice(
+            platform.context(AmicaSimpleLightDriver.NAME), bus);
     private final List<String> heard = new ArrayList<>();
 
     AmicaSimpleLightDeviceTest() {
@@ -142,7 +138,7 @@ class AmicaSimpleLightDeviceTest {
     }
 
     private List<String> deviceEvents() {
-        return logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).map(e -> e.message()).toList();
+        return platform.logs.events().stream().filter(e -> e.kind() == EventKind.DEVICE_EVENT).map(e -> e.message()).toList();
     }
 
     private String parameter(String key) {

@@ -9,22 +9,23 @@ import org.tinysep.api.bus.BusRadioSunSpotProvider;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
 
 /**
  * The fixture of a Sun SPOT sensor device's unit test, written once: the device under test ({@link #sensor}) built
- * without a framework on a {@link FakeSunSpotBus}, recorded logs and a clock fixed at {@link #T0}; payloads of the
- * sensor's own type are delivered with {@link #deliver}, and listeners record what they hear with {@link #hear}.
+ * without a framework on a {@link FakeSunSpotBus} and a {@link TestPlatform} (recorded logs, a clock fixed at
+ * {@link #T0}); payloads of the sensor's own type are delivered with {@link #deliver}, and listeners record what they
+ * hear with {@link #hear}.
  *
  * @param <D> the device under test
  */
 public abstract class SunSpotDeviceTestSupport<D extends Device & BusRadioSunSpotListener> {
 
-    protected static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    protected static final Instant T0 = TestPlatform.T0;
 
     protected final FakeSunSpotBus bus = new FakeSunSpotBus();
-    protected final RecordingLogs logs = new RecordingLogs(() -> T0);
+    private final TestPlatform platform = new TestPlatform();
+    protected final RecordingLogs logs = platform.logs;
     /** What the test's listener heard, in order. */
     protected final List<Object> heard = new ArrayList<>();
     protected final D sensor;
@@ -38,8 +39,7 @@ public abstract class SunSpotDeviceTestSupport<D extends Device & BusRadioSunSpo
     protected SunSpotDeviceTestSupport(String driverName, int sensorType,
             BiFunction<DriverContext, BusRadioSunSpotProvider, D> device) {
         this.sensorType = sensorType;
-        this.sensor = device.apply(new DriverContext(null, "d", driverName, logs.reporter(),
-                new PlatformClock(() -> T0)), bus);
+        this.sensor = device.apply(platform.context(driverName), bus);
     }
 
     /** Delivers one payload of the sensor's own type {@code second}s after {@link #T0}. */
