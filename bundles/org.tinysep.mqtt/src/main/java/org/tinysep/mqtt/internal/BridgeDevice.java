@@ -3,16 +3,16 @@ package org.tinysep.mqtt.internal;
 import java.util.List;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The bridge as a device ({@code tinysep:devices}, web console): its status says whether the broker is reachable
  * (and why not, in plain words), its parameters show the outbox and the command counters. Configuration changes
  * replace the running {@link Bridge}.
  */
-final class BridgeDevice extends AbstractDevice {
+final class BridgeDevice extends WholeFlatDevice {
 
     private volatile Settings settings;
     private volatile Figures figures = Figures.IDLE;
@@ -22,11 +22,6 @@ final class BridgeDevice extends AbstractDevice {
         super(context, Uids.of(context.driverName(), "device"), context.driverName(), "MQTT bridge");
         this.settings = settings;
         startBridge(configProblem);
-    }
-
-    @Override
-    protected boolean placeable() {
-        return false;
     }
 
     synchronized void reconfigure(Settings next, String configProblem) {
