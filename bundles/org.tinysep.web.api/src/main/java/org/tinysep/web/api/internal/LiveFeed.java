@@ -48,7 +48,8 @@ public final class LiveFeed<E> implements AutoCloseable {
     private volatile long last;
     private ScheduledFuture<?> polling; // guarded by subscribers
 
-    public LiveFeed(String name, Function<Integer, List<E>> recent, ToLongFunction<E> sequence, Function<E, String> format) {
+    public LiveFeed(String name, Function<Integer, List<E>> recent, ToLongFunction<E> sequence,
+            Function<E, String> format) {
         this.name = name;
         this.recent = recent;
         this.sequence = sequence;
@@ -64,7 +65,7 @@ public final class LiveFeed<E> implements AutoCloseable {
     public Subscriber subscribe(long after) {
         Subscriber s = new Subscriber();
         synchronized (subscribers) {
-            if (polling == null) { // the first stream: what the log holds now is the past, the poller sends what follows
+            if (polling == null) { // the first stream: the log's entries now are the past, the poller sends the rest
                 List<E> now = recent.apply(1);
                 last = now.isEmpty() ? -1 : sequence.applyAsLong(now.get(now.size() - 1));
                 polling = executor.scheduleWithFixedDelay(this::poll, PERIOD_MS, PERIOD_MS, TimeUnit.MILLISECONDS);
@@ -122,7 +123,8 @@ public final class LiveFeed<E> implements AutoCloseable {
                         s.queue.clear();
                         s.queue.offer(END);
                         unsubscribe(s);
-                        LOG.info("A live {} stream fell {} entries behind and was closed; the browser reconnects", name, QUEUE);
+                        LOG.info("A live {} stream fell {} entries behind and was closed; the browser reconnects",
+                                name, QUEUE);
                         break;
                     }
                 }
