@@ -44,6 +44,13 @@ class BackupStoreServiceTest {
         }
     };
 
+    /** Queues the backups of nodes u-0 .. u-(count-1), named "Node i", all saved at {@code at}. */
+    private static void saveNodes(BackupStoreService store, int count, Instant at) {
+        for (int i = 0; i < count; i++) {
+            store.save(device("u-" + i, "Node " + i, "", at));
+        }
+    }
+
     static ComponentBackup device(String uid, String name, String room, Instant at) {
         return new ComponentBackup(uid, ComponentKind.DEVICE, "drv-1", "BusRadioAmicaUdp", "BusRadioAmicaUdp", name,
                 Map.of("room", room), "1.10", List.of("movement", "door"), at,
@@ -78,9 +85,7 @@ class BackupStoreServiceTest {
         BackupStoreService store = new BackupStoreService(root, 600_000, events); // the writer has not run yet
         Instant t = Instant.parse("2026-11-22T10:00:00Z");
         int devices = 3_000;
-        for (int i = 0; i < devices; i++) {
-            store.save(device("u-" + i, "Node " + i, "", t));
-        }
+        saveNodes(store, devices, t);
         store.deactivate();
         assertTrue(statuses.contains("saving 3,000 device backup(s) before stopping…"), "said before: " + statuses);
         assertTrue(statuses.stream().anyMatch(m -> m.startsWith("saved 3,000 device backup(s) in ")), "said after: "
@@ -93,9 +98,7 @@ class BackupStoreServiceTest {
     void aStopPastItsTimeLimitSaysHowManyBackupsWereNotSavedAndLeavesNoHalfWrittenFile() throws Exception {
         BackupStoreService store = new BackupStoreService(root, 600_000, events);
         Instant t = Instant.parse("2026-11-22T10:00:00Z");
-        for (int i = 0; i < 100; i++) {
-            store.save(device("u-" + i, "Node " + i, "", t));
-        }
+        saveNodes(store, 100, t);
         store.stopSaveMillisForTest(0); // the limit has passed before the first write
         store.deactivate();
         assertEquals(List.of("stopping with 100 device backup(s) not saved: the disk took longer than 0 s"
@@ -111,9 +114,7 @@ class BackupStoreServiceTest {
         // last states: 38-60 s in all, past the launcher's 30 s and systemd's stop timeout
         BackupStoreService store = new BackupStoreService(root, 600_000, events);
         Instant t = Instant.parse("2026-11-22T10:00:00Z");
-        for (int i = 0; i < 10; i++) {
-            store.save(device("u-" + i, "Node " + i, "", t));
-        }
+        saveNodes(store, 10, t);
         assertTrue(store.flush(Duration.ofSeconds(30)), "on disk before the stop");
         store.stopSaveMillisForTest(200);
         long stopping = System.nanoTime();
