@@ -11,18 +11,29 @@ import org.tinysep.simulator.replay.Label;
 
 /**
  * Draws the injected collapses: uniformly (fixed seed) over the test half's time during which the resident is at home
- * and awake per the labels, i.e. outside every {@code Leaving} and {@code Sleeping} label.
+ * and awake per the labels, i.e. outside every {@code Leaving} and {@code Sleeping} label, and within the labelled
+ * span (from the first label's start to the last label's end): after the last label nobody says whether the resident
+ * is awake or even at home (Ordonez A's labels end at 21:41 on its last evening, its sensors go on until the bed mat
+ * turns OFF at 07:22 the next morning), so no collapse is placed there.
  */
 final class Collapses {
 
     private Collapses() {
     }
 
-    /** @return the at-home, awake intervals of {@code [from, to)} */
+    /** @return the at-home, awake intervals of {@code [from, to)} within the labelled span */
     static List<Interval> candidates(List<Label> labels, LocalDateTime from, LocalDateTime to) {
+        List<Label> valid = labels.stream().filter(l -> l.end().isAfter(l.start())).toList();
+        LocalDateTime first = valid.stream().map(Label::start).min(LocalDateTime::compareTo).orElse(to);
+        LocalDateTime last = valid.stream().map(Label::end).max(LocalDateTime::compareTo).orElse(from);
+        LocalDateTime start = first.isAfter(from) ? first : from;
+        LocalDateTime end = last.isBefore(to) ? last : to;
+        if (!start.isBefore(end)) {
+            return List.of();
+        }
         List<Interval> excluded = new ArrayList<>(Evaluation.leaving(labels));
         excluded.addAll(Evaluation.intervalsOf(labels, "Sleeping"));
-        return Intervals.minus(new Interval(from, to), Evaluation.merge(excluded));
+        return Intervals.minus(new Interval(start, end), Evaluation.merge(excluded));
     }
 
     /** @return {@code n} moments drawn with {@code seed}, in time order (to whole seconds) */

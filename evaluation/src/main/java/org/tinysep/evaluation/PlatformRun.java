@@ -49,7 +49,7 @@ final class PlatformRun {
             for (int k = 0; k < segments.size(); k++) {
                 Segment s = segments.get(k);
                 Path recording = dir.resolve("events-" + k + ".csv");
-                EventsCsv.write(s.events(), recording);
+                EventsCsv.write(StateReports.prepend(setup.home().events(), s.events()), recording);
                 List<String> args = new ArrayList<>(List.of("--replay", recording.toString(), "--mapping",
                         setup.home().mapping().toString(), "--lockstep", "--rate", "changes", "--amica-port",
                         Integer.toString(platform.amicaPort()), "--sync-port", Integer.toString(platform.syncPort()),
@@ -74,7 +74,9 @@ final class PlatformRun {
     /**
      * One replay within a run.
      *
-     * @param events   what to replay
+     * @param events   what to replay; the replay starts with every contact's and mat's state before them (recorded
+     *                 changes only would make a sensor's first change in the segment its first report to the platform,
+     *                 {@link StateReports})
      * @param firstDay the virtual day of the events' first recorded day
      * @param end      recorded time to play on to (quiet) after the last event, or null
      */

@@ -59,9 +59,11 @@ class JudgingTest {
 
     @Test
     void collapsesLieOnlyInAtHomeAwakeTime() {
-        List<Label> labels = List.of(new Label(T0.plusHours(1), T0.plusHours(2), "Leaving", ""),
+        List<Label> labels = List.of(new Label(T0, T0.plusMinutes(20), "Breakfast", ""),
+                new Label(T0.plusHours(1), T0.plusHours(2), "Leaving", ""),
                 new Label(T0.plusHours(3), T0.plusHours(9), "Sleeping", ""),
-                new Label(T0.plusHours(5), T0.plusHours(4), "Toileting", "")); // ends before it starts: skipped
+                new Label(T0.plusHours(5), T0.plusHours(4), "Toileting", ""), // ends before it starts: skipped
+                new Label(T0.plusHours(9).plusMinutes(30), T0.plusHours(10), "Spare_Time/TV", ""));
         List<Interval> free = Collapses.candidates(labels, T0, T0.plusHours(10));
         assertEquals(List.of(new Interval(T0, T0.plusHours(1)), new Interval(T0.plusHours(2), T0.plusHours(3)),
                 new Interval(T0.plusHours(9), T0.plusHours(10))), free);
@@ -69,6 +71,21 @@ class JudgingTest {
         assertEquals(drawn, Collapses.draw(free, 500, 1), "a fixed seed draws the same moments");
         assertTrue(drawn.stream().allMatch(m -> free.stream()
                 .anyMatch(i -> !m.isBefore(i.start()) && m.isBefore(i.end()))), "never while away or asleep");
+    }
+
+    @Test
+    void collapsesLieOnlyWithinTheLabelledSpan() {
+        List<Label> labels = List.of(new Label(T0.plusHours(2), T0.plusHours(3), "Lunch", ""),
+                new Label(T0.plusHours(4), T0.plusHours(5), "Leaving", ""),
+                new Label(T0.plusHours(6), T0.plusHours(7), "Spare_Time/TV", ""),
+                new Label(T0.plusHours(9), T0.plusHours(8), "Toileting", "")); // ends before it starts: no span
+        assertEquals(List.of(new Interval(T0.plusHours(2), T0.plusHours(4)),
+                new Interval(T0.plusHours(5), T0.plusHours(7))), Collapses.candidates(labels, T0, T0.plusHours(10)),
+                "nobody says what the resident does before the first label or after the last one");
+        assertEquals(List.of(new Interval(T0.plusHours(5), T0.plusHours(6))),
+                Collapses.candidates(labels, T0.plusHours(5), T0.plusHours(6)), "the asked range inside the span");
+        assertEquals(List.of(), Collapses.candidates(labels, T0.plusHours(7), T0.plusHours(10)), "after the span");
+        assertEquals(List.of(), Collapses.candidates(List.of(), T0, T0.plusHours(10)), "no labels, no span");
     }
 
     @Test
