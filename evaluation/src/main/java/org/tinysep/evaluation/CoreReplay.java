@@ -88,7 +88,7 @@ final class CoreReplay {
 
     LearnedLimits newLimits() {
         SleepRule sleep = new SleepRule(21, 7, ZoneOffset.UTC);
-        return new LearnedLimits(new HistoryLearner(ZoneOffset.UTC, sleep, LearningSettings.defaults()));
+        return new LearnedLimits(new HistoryLearner(ZoneOffset.UTC, sleep, settings()));
     }
 
     Limit limit(LearnedLimits l, Act a) {
@@ -146,5 +146,15 @@ final class CoreReplay {
         Alert lastAlert = a.isEmpty() ? null : a.get(a.size() - 1);
         // raised before or after the collapse (the caller judges); none: the flat counted as empty
         return lastAlert != null && lastAlert.after().equals(last) ? lastAlert : null;
+    }
+
+    /** The defaults, or a sweep's: {@code -Dfloor=<minutes> -Dmargin=<x> -Dpad=<minutes> -DminDays=<n>}. */
+    private static LearningSettings settings() {
+        LearningSettings d = LearningSettings.defaults();
+        return new LearningSettings(Integer.getInteger("minDays", d.minDays()), d.historyDays(),
+                Double.parseDouble(System.getProperty("margin", Double.toString(d.margin()))),
+                java.time.Duration.ofMinutes(Long.getLong("pad", d.pad().toMinutes())),
+                java.time.Duration.ofMinutes(Long.getLong("floor", d.floor().toMinutes())), d.ceiling(),
+                d.halfWindow());
     }
 }
