@@ -8,9 +8,9 @@ import java.util.UUID;
 
 /**
  * A House Information file (format of {@code org.tinysep.houseinformation}) for a recorded home that brings none:
- * one room per mapped room name, its type = its name (Inactivity Recognition then finds a type limit where the name
- * is a known type, e.g. {@code Bathroom}, and uses its default limit otherwise). No neighbour links: the data gives
- * no floor plan and the evaluation does not use them.
+ * one room per mapped room name, its type guessed from the name ({@link #typeOf}: the room types Inactivity
+ * Recognition has limits for, and {@code Bedroom}, which its sleep state needs), else the name itself (then the
+ * default limit applies). No neighbour links: the data gives no floor plan and the evaluation does not use them.
  */
 final class HouseFile {
 
@@ -23,10 +23,32 @@ final class HouseFile {
             String uid = UUID.nameUUIDFromBytes(("room " + r).getBytes(java.nio.charset.StandardCharsets.UTF_8))
                     .toString();
             x.append("    <ROOM>\n        <UID>").append(uid).append("</UID>\n        <NAME>").append(esc(r))
-                    .append("</NAME>\n        <TYPE>").append(esc(r)).append("</TYPE>\n        <NEIGHBORS/>\n    </ROOM>\n");
+                    .append("</NAME>\n        <TYPE>").append(esc(typeOf(r))).append("</TYPE>\n        <NEIGHBORS/>\n    </ROOM>\n");
         }
         Files.writeString(file, x.append("</HOUSE_ROOMS>\n").toString());
         return file;
+    }
+
+    /**
+     * @return the room type a recorded room's name says ({@code Master bedroom} → {@code Bedroom}, {@code WC} →
+     *         {@code Bathroom}, {@code Lounge} → {@code Living room}, {@code Entrance} → {@code Hall}, ...), else the
+     *         name; the first match in this order: bedroom, bathroom, kitchen, living room, hall
+     */
+    static String typeOf(String room) {
+        String r = room.toLowerCase(java.util.Locale.ROOT);
+        if (r.contains("bed")) {
+            return "Bedroom";
+        }
+        if (r.matches(".*(bath|toilet|shower|restroom|lavatory).*") || r.matches("(.*\\W)?wc(\\W.*)?")) {
+            return "Bathroom";
+        }
+        if (r.matches(".*(kitchen|cook|pantry).*")) {
+            return "Kitchen";
+        }
+        if (r.matches(".*(living|lounge|sitting|family|\\btv\\b|\\bden\\b|salon).*")) {
+            return "Living room";
+        }
+        return r.matches(".*(hall|entrance|entry|corridor|foyer|porch|vestibule|landing).*") ? "Hall" : room;
     }
 
     private static String esc(String s) {

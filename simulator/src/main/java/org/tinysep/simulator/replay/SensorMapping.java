@@ -20,8 +20,9 @@ import org.tinysep.amica.protocol.AmicaNodeType;
  * default  = pressure; type = window
  * sensor   = Maindoor; node = amica 1.20; type = door; doorKind = OUTER; room = Entrance
  * </pre>
- * Built-in defaults by kind: motion → movement, door → door (INNER), pressure → presence-seat, flush →
- * presence-flush, electric → presence-appliance, other → window (README-replay.md says why).
+ * Built-in defaults by kind: motion → movement, door → window (door OUTER where the name or room says it leads
+ * outside), pressure → presence-seat (presence-bed where the name or room says bed), flush → presence-flush,
+ * electric → presence-appliance, other → window (README-replay.md says why; {@link NameHints}).
  */
 public final class SensorMapping {
 
@@ -32,6 +33,8 @@ public final class SensorMapping {
     /** A default line: node type (and door kind) for a sensor kind. */
     record Default(AmicaNodeType type, String doorKind) {
     }
+
+    private static final Map<Kind, Default> BUILT_IN = Collections.unmodifiableMap(builtIn());
 
     private final Map<String, Entry> entries;
     private final Map<Kind, Default> defaults;
@@ -107,7 +110,7 @@ public final class SensorMapping {
      */
     NodeSpec resolve(String sensor, String room, Kind kind, AmicaAddress address) {
         Entry e = entries.get(sensor);
-        Default d = defaults.get(kind);
+        Default d = hinted(sensor, room, kind);
         AmicaNodeType type = e != null && e.type() != null ? e.type() : d.type();
         String doorKind = e != null && e.doorKind() != null ? e.doorKind()
                 : type != AmicaNodeType.DOOR ? "" : d.type() == AmicaNodeType.DOOR ? d.doorKind() : "INNER";
@@ -116,13 +119,36 @@ public final class SensorMapping {
                 e != null && e.name() != null ? e.name() : sensor);
     }
 
+    /**
+     * @return the kind's default; where the file has no default line for the kind, the built-in one read with the
+     *         sensor's name and room ({@link NameHints}): a door that leads outside is an OUTER door, any other door
+     *         contact a window node (the platform's Door device defaults to OUTER and a replay cannot configure it;
+     *         a window is "activity that says nothing about leaving"), a mat that says bed a bed
+     */
+    private Default hinted(String sensor, String room, Kind kind) {
+        Default d = defaults.get(kind);
+        if (d != BUILT_IN.get(kind)) {
+            return d;
+        }
+        if (kind == Kind.DOOR) {
+            return "OUTER".equals(NameHints.doorKind(sensor, room)) ? new Default(AmicaNodeType.DOOR, "OUTER")
+                    : new Default(AmicaNodeType.WINDOW, "");
+        }
+        return kind == Kind.PRESSURE ? new Default(NameHints.pressureType(sensor, room), "") : d;
+    }
+
     /** @return true if a node for this sensor needs an allocated address */
     boolean needsAddress(String sensor) {
         Entry e = entries.get(sensor);
         return e == null || e.address() == null;
     }
 
+    /** @return a modifiable copy of the built-in defaults (the same instances: a file's default line replaces one) */
     static Map<Kind, Default> builtInDefaults() {
+        return new EnumMap<>(BUILT_IN);
+    }
+
+    private static Map<Kind, Default> builtIn() {
         Map<Kind, Default> d = new EnumMap<>(Kind.class);
         d.put(Kind.MOTION, new Default(AmicaNodeType.MOVEMENT, ""));
         d.put(Kind.DOOR, new Default(AmicaNodeType.DOOR, "INNER"));

@@ -19,19 +19,50 @@ class SensorMappingTest {
     @Test
     void builtInDefaultsByKind() {
         ReplayPlan plan = ReplayPlan.of(List.of(
-                ev(0, "pir", Kind.MOTION, true), ev(1, "front", Kind.DOOR, true), ev(2, "bed", Kind.PRESSURE, true),
+                ev(0, "pir", Kind.MOTION, true), ev(1, "d1", Kind.DOOR, true), ev(2, "mat", Kind.PRESSURE, true),
                 ev(3, "flush", Kind.FLUSH, true), ev(4, "tv", Kind.ELECTRIC, true), ev(5, "x", Kind.OTHER, true)),
                 SensorMapping.defaults());
         List<NodeSpec> n = plan.nodes();
-        assertEquals(List.of(AmicaNodeType.MOVEMENT, AmicaNodeType.DOOR, AmicaNodeType.PRESENCE_SEAT,
+        assertEquals(List.of(AmicaNodeType.MOVEMENT, AmicaNodeType.WINDOW, AmicaNodeType.PRESENCE_SEAT,
                 AmicaNodeType.PRESENCE_FLUSH, AmicaNodeType.PRESENCE_APPLIANCE, AmicaNodeType.WINDOW),
-                n.stream().map(NodeSpec::type).toList());
-        assertEquals("INNER", n.get(1).doorKind());
+                n.stream().map(NodeSpec::type).toList(), "a door contact that does not lead outside is a window node");
+        assertEquals("", n.get(1).doorKind());
         assertEquals("", n.get(0).doorKind());
         assertEquals(List.of("1.100", "1.101", "1.102", "1.103", "1.104", "1.105"),
                 n.stream().map(s -> s.address().toString()).toList());
         assertEquals("Room", n.get(0).room());
         assertEquals("pir", n.get(0).name());
+    }
+
+    @Test
+    void builtInDefaultsReadNamesAndRoomsForOuterDoorsAndBeds() throws Exception {
+        ReplayPlan plan = ReplayPlan.of(List.of(ev(0, "Frontdoor", Kind.DOOR, true),
+                ev(1, "Main door", Kind.DOOR, true), ev(2, "Fridge", Kind.DOOR, true),
+                ev(3, "Bathroom door", Kind.DOOR, true), ev(4, "Bed", Kind.PRESSURE, true),
+                ev(5, "Sofa", Kind.PRESSURE, true), ev(6, "Armchair", Kind.PRESSURE, true)), SensorMapping.defaults());
+        List<NodeSpec> n = plan.nodes();
+        assertEquals(List.of("OUTER", "OUTER", "", ""), n.subList(0, 4).stream().map(NodeSpec::doorKind).toList(),
+                "a door whose name says it leads outside is the outer door; furniture and rooms are not");
+        assertEquals(List.of(AmicaNodeType.DOOR, AmicaNodeType.DOOR, AmicaNodeType.WINDOW, AmicaNodeType.WINDOW),
+                n.subList(0, 4).stream().map(NodeSpec::type).toList());
+        assertEquals(List.of(AmicaNodeType.PRESENCE_BED, AmicaNodeType.PRESENCE_SEAT, AmicaNodeType.PRESENCE_SEAT),
+                n.subList(4, 7).stream().map(NodeSpec::type).toList());
+        ReplayPlan byRoom = ReplayPlan.of(List.of(new SensorEvent(T, "D001", "Entry", Kind.DOOR, true),
+                new SensorEvent(T, "M017", "Bedroom", Kind.PRESSURE, true),
+                new SensorEvent(T, "Chair", "Bedroom", Kind.PRESSURE, true)), SensorMapping.defaults());
+        assertEquals("OUTER", byRoom.nodes().get(0).doorKind(), "a door in the entrance room");
+        assertEquals(List.of(AmicaNodeType.PRESENCE_BED, AmicaNodeType.PRESENCE_SEAT),
+                byRoom.nodes().subList(1, 3).stream().map(NodeSpec::type).toList(), "a mat in the bedroom, a chair");
+        SensorMapping file = SensorMapping.parse(List.of("default = door; type = door; doorKind = INNER",
+                "sensor = Bed; type = presence-seat"), "m.mapping");
+        ReplayPlan told = ReplayPlan.of(List.of(ev(0, "Frontdoor", Kind.DOOR, true), ev(1, "Bed", Kind.PRESSURE,
+                true)), file);
+        assertEquals(new NodeSpec("Frontdoor", "amica", new AmicaAddress(1, 100), AmicaNodeType.DOOR, "Room", "INNER",
+                "Frontdoor"), told.nodes().get(0), "a default line decides, even one that reads like the built-in");
+        assertEquals(AmicaNodeType.PRESENCE_SEAT, told.nodes().get(1).type(), "a sensor line decides");
+        SensorMapping allInner = SensorMapping.parse(List.of("default = door; type = window"), "m.mapping");
+        assertEquals(AmicaNodeType.WINDOW, ReplayPlan.of(List.of(ev(0, "Frontdoor", Kind.DOOR, true)), allInner)
+                .nodes().get(0).type(), "a changed default line decides");
     }
 
     @Test
@@ -51,7 +82,7 @@ class SensorMappingTest {
                 "Front door"), n.get(1));
         assertEquals(new NodeSpec("Bed", "amica", new AmicaAddress(2, 9), AmicaNodeType.MOVEMENT, "Bedroom", "", "Bed"),
                 n.get(2));
-        assertEquals("INNER", n.get(3).doorKind());
+        assertEquals(AmicaNodeType.WINDOW, n.get(3).type(), "a door contact the file does not describe");
         assertEquals(new AmicaAddress(2, 10), n.get(3).address());
         assertTrue(m.isMapped("Bed"));
         assertEquals(List.of("Maindoor", "Fridge", "Bed"), m.mappedSensors());
