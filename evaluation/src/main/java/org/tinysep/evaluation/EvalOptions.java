@@ -20,14 +20,16 @@ import java.util.List;
  * @param readme      README to write the table into (null: print only)
  * @param command     the command line as typed, for the report
  * @param split       {@code half} (history = first half, the headline) or {@code cvK} (K folds by days, {@link Split})
+ * @param words       which labelled activities mean away and asleep
  */
 record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int batch, int days,
-        List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command, String split) {
+        List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command, String split,
+        LabelWords words) {
 
     static final String USAGE = """
             usage: ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S]
                    [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--split half|cvK] [--detectors LEARNED,THESIS]
-                   [--no-readme]
+                   [--away-labels REGEX] [--sleep-labels REGEX] [--no-readme]
               A, B          Ordonez Home A / B (default A), converted from ../shared/data/ordonez
               --collapses   injected collapses per detector (default 200)
               --seed        seed of the collapse draw (default 1)
@@ -38,6 +40,9 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
               --days        only the first D days of the recording (default all)
               --split       half (default: learn from the first half, test the second) or cvK: K folds by days,
                             every day tested once with the other days as history (cv<days> = leave-one-day-out)
+              --away-labels, --sleep-labels  which labelled activities mean away / asleep (case-insensitive regex,
+                            found anywhere in the name; defaults match Leaving, Leave_Home, Out, Away, ... and Sleeping,
+                            Sleep, go to bed, Nap, ...: README, "Labels")
               --no-readme   print the table only (default: also into evaluation/README.md)
             """;
 
@@ -51,6 +56,8 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
         int days = 0;
         String split = "half";
         List<String> detectors = List.of("LEARNED", "THESIS");
+        String away = LabelWords.AWAY;
+        String sleep = LabelWords.SLEEP;
         Path readme = repo.resolve("evaluation/README.md");
         Path ordonez = repo.resolve("../shared/data/ordonez").normalize();
         Path dist = repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
@@ -71,6 +78,8 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             case "--dist" -> dist = Path.of(value(args, ++i, a));
             case "--work" -> work = Path.of(value(args, ++i, a));
             case "--readme" -> readme = Path.of(value(args, ++i, a));
+            case "--away-labels" -> away = pattern(args, ++i, a);
+            case "--sleep-labels" -> sleep = pattern(args, ++i, a);
             default -> {
                 if (a.startsWith("--")) {
                     throw new IllegalArgumentException("unknown option " + a + "\n" + USAGE);
@@ -80,7 +89,18 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             }
         }
         return new EvalOptions(home, collapses, seed, warmup, parallel, batch, days, detectors, ordonez, dist, work, readme,
-                "./evaluate.sh " + String.join(" ", args), split);
+                "./evaluate.sh " + String.join(" ", args), split, new LabelWords(away, sleep));
+    }
+
+    private static String pattern(String[] args, int i, String option) {
+        String v = value(args, i, option);
+        try {
+            java.util.regex.Pattern.compile(v);
+            return v;
+        } catch (java.util.regex.PatternSyntaxException e) {
+            throw new IllegalArgumentException(option + " needs a regular expression: " + e.getDescription()
+                    + " in '" + v + "'");
+        }
     }
 
     private static String value(String[] args, int i, String option) {

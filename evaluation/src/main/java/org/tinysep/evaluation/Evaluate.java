@@ -42,7 +42,7 @@ public final class Evaluate {
         String loadBefore = load();
         String commit = commit(); // at the start: the code that runs
         long wall = System.nanoTime();
-        Home home = Home.load(o.home(), o.ordonez(), o.work());
+        Home home = Home.load(o.home(), o.ordonez(), o.work(), o.words());
         if (o.days() > 0) {
             home = Days.first(home, o.days());
         }

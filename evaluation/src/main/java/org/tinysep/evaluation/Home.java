@@ -41,6 +41,12 @@ record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapp
      * @param work    a folder for the converted files
      */
     static Home load(String spec, Path ordonezDir, Path work) throws IOException, ReplayFormatException {
+        return load(spec, ordonezDir, work, LabelWords.defaults());
+    }
+
+    /** As {@link #load(String, Path, Path)}, with {@code words} deciding which labels mean away and asleep. */
+    static Home load(String spec, Path ordonezDir, Path work, LabelWords words)
+            throws IOException, ReplayFormatException {
         Files.createDirectories(work);
         Path dir;
         String name;
@@ -65,7 +71,9 @@ record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapp
         if (!Files.isRegularFile(labelFile)) {
             throw new IOException(labelFile + " is missing: collapses are drawn from the labels' at-home, awake time");
         }
-        List<Label> labels = LabelsCsv.read(labelFile);
+        List<Label> recorded = LabelsCsv.read(labelFile);
+        System.out.println(words.describe(recorded));
+        List<Label> labels = words.normalise(recorded);
         ReplayPlan plan = ReplayPlan.of(events, mapping);
         if (!Files.isRegularFile(house)) {
             house = HouseFile.write(rooms(plan), work.resolve(name + ".house.xml"));
