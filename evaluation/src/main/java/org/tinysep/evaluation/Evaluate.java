@@ -71,7 +71,9 @@ public final class Evaluate {
                 + o.warmupHours() + " h before it to 12 h after it; " + o.parallel() + " platforms at once; "
                 + (o.batch() == 1 ? "every collapse in its own platform started from a copy of the snapshot"
                         : o.batch() + " collapses per platform started from a copy of the snapshot, one after another "
-                                + "in virtual time (README: batches)"));
+                                + "in virtual time; **not for published figures**: LEARNED also learns from live "
+                                + "activity, so a batch's later windows learn from its earlier windows' test-half events "
+                                + "(README: batches)"));
         facts.add("Detector config: `org.tinysep.inactivity` key `detector` = the column's value in "
                 + "`etc/org.tinysep.inactivity.cfg` of each platform (the history was replayed with `detector="
                 + o.detectors().get(0) + "`)");
