@@ -5,6 +5,7 @@ import java.util.Collections;
 import java.util.EnumSet;
 import java.util.Optional;
 import java.util.Set;
+import org.tinysep.link.frame.TypeCode;
 
 /**
  * The AmICA node types and their bits in a keep-alive's product id. A node may have several types, so the product id
@@ -40,27 +41,26 @@ public enum AmicaNodeType {
     /** TinySEP extension: appliance in use, e.g. a microwave or a toaster (ON while it runs), bit 11. */
     PRESENCE_APPLIANCE(11, "presence-appliance");
 
-    private final int bitIndex;
-    private final String typeName;
+    /** The bit index and the type name; the lookup by name is the shared {@link TypeCode}'s. */
+    private final TypeCode wire;
 
     AmicaNodeType(int bitIndex, String typeName) {
-        this.bitIndex = bitIndex;
-        this.typeName = typeName;
+        this.wire = new TypeCode(bitIndex, typeName);
     }
 
     /** @return this type's bit mask in the product id, e.g. {@code 0x02} for {@link #DOOR} */
     public int bit() {
-        return 1 << bitIndex;
+        return 1 << wire.code();
     }
 
     /** @return the position of this type's bit in the product id, 0..11 */
     public int bitIndex() {
-        return bitIndex;
+        return wire.code();
     }
 
     /** @return the TinySEP node type name, e.g. {@code "dimmable-light"} */
     public String typeName() {
-        return typeName;
+        return wire.typeName();
     }
 
     /**
@@ -95,7 +95,7 @@ public enum AmicaNodeType {
 
     /** @return true for the TinySEP presence extension (bits 8..11): a node that reports ON/OFF as Reed-Switch Status */
     public boolean isPresence() {
-        return bitIndex >= PRESENCE_BED.bitIndex && bitIndex <= PRESENCE_APPLIANCE.bitIndex;
+        return bitIndex() >= PRESENCE_BED.bitIndex() && bitIndex() <= PRESENCE_APPLIANCE.bitIndex();
     }
 
     /**
@@ -103,11 +103,6 @@ public enum AmicaNodeType {
      * @return the AmICA node type with that name, if any
      */
     public static Optional<AmicaNodeType> fromTypeName(String typeName) {
-        for (AmicaNodeType t : values()) {
-            if (t.typeName.equals(typeName)) {
-                return Optional.of(t);
-            }
-        }
-        return Optional.empty();
+        return TypeCode.byTypeName(values(), t -> t.wire, typeName);
     }
 }

@@ -1,0 +1,46 @@
+package org.tinysep.link.frame;
+
+import java.util.Optional;
+import java.util.function.Function;
+
+/**
+ * One entry of a family's node type table: the type's number on the wire (the AmICA product id's bit index, the Sun
+ * SPOT sensor type byte) and the matching TinySEP node type name ({@code org.tinysep.api.device.NodeType}). Each
+ * family's enum ({@code AmicaNodeType}, {@code SunSpotSensorType}) holds one per constant and looks its constants up
+ * with {@link #byCode} and {@link #byTypeName}, written once here.
+ *
+ * @param code     the number on the wire
+ * @param typeName the TinySEP node type name, e.g. {@code "door"}
+ */
+public record TypeCode(int code, String typeName) {
+
+    /**
+     * @param types  the family's constants, e.g. {@code values()}
+     * @param codeOf a constant's entry
+     * @param code   the number looked for (any int)
+     * @return the first constant with that number, if any
+     */
+    public static <E> Optional<E> byCode(E[] types, Function<E, TypeCode> codeOf, int code) {
+        for (E t : types) {
+            if (codeOf.apply(t).code == code) {
+                return Optional.of(t);
+            }
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * @param types    the family's constants, e.g. {@code values()}
+     * @param codeOf   a constant's entry
+     * @param typeName the TinySEP node type name looked for
+     * @return the first constant with that name, if any
+     */
+    public static <E> Optional<E> byTypeName(E[] types, Function<E, TypeCode> codeOf, String typeName) {
+        for (E t : types) {
+            if (codeOf.apply(t).typeName.equals(typeName)) {
+                return Optional.of(t);
+            }
+        }
+        return Optional.empty();
+    }
+}
