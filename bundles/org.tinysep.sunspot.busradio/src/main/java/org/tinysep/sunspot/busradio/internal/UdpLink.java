@@ -73,7 +73,7 @@ final class UdpLink implements AutoCloseable {
             LOG.warn("UDP link {}: {}", localAddress(), first);
             problems.accept(first);
         }
-        handler.refusedSource(SourceGate.why(verdict, sender.getAddress()), data, length, from);
+        handler.refused(SourceGate.why(verdict, sender.getAddress()), data, length, from);
     }
 
     @Override

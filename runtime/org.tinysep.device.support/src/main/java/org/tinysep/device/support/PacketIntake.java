@@ -1,0 +1,126 @@
+package org.tinysep.device.support;
+
+import java.time.Instant;
+import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * The decoder path every link of a bus radio feeds, written once for both node families (issue 16): counts what is
+ * handed in, copies a datagram (the transport may reuse its buffer), decodes it with the family's codec and hands
+ * on the frame ({@link #handle}) or the codec's protocol exception ({@link #decodeFailed}); rejected input, refused
+ * sources and the summary of what was not kept go to the packet log through one {@link RejectSampler}. A family's
+ * handler (the AmICA {@code FrameHandler}, the Sun SPOT {@code PacketHandler}) adds its node table and its reject
+ * counter. Links may call it on their own receive threads; the subclass's {@code handle} must allow that.
+ *
+ * @param <F> the family's frame
+ * @param <X> the family's protocol exception, the one its codec throws
+ * @param <S> where input comes from: a route, or a link's description
+ */
+public abstract class PacketIntake<F, X extends Exception, S> {
+
+    /**
+     * A family's datagram decoder, e.g. {@code raw -> AmicaCodec.decode(raw, 0, raw.length)}.
+     *
+     * @param <F> the frame
+     * @param <X> the protocol exception
+     */
+    @FunctionalInterface
+    public interface Decoder<F, X extends Exception> {
+        F decode(byte[] raw) throws X;
+    }
+
+    private final Decoder<F, X> decoder;
+    private final Class<X> failure;
+    private final RejectSampler sampler;
+    private final AtomicLong received = new AtomicLong();
+
+    /**
+     * @param decoder decodes one datagram
+     * @param failure the class of the decoder's protocol exception
+     */
+    protected PacketIntake(DriverContext context, Decoder<F, X> decoder, Class<X> failure) {
+        this.decoder = decoder;
+        this.failure = failure;
+        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
+    }
+
+    /** Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after. */
+    public final void datagram(byte[] data, int length, S from) {
+        datagram(data, length, from, null);
+    }
+
+    /**
+     * Like {@link #datagram(byte[], int, Object)}, stamped {@code at} instead of the platform time now (a transport
+     * that takes a late frame during a platform tick stamps it with the time it arrived in).
+     *
+     * @param at the platform time of the frame; {@code null} for now
+     */
+    public final void datagram(byte[] data, int length, S from, Instant at) {
+        received.incrementAndGet();
+        byte[] raw = Arrays.copyOf(data, length);
+        F frame;
+        try {
+            frame = decoder.decode(raw);
+        } catch (Exception e) {
+            if (!failure.isInstance(e)) {
+                throw (RuntimeException) e; // the decoder declares only X
+            }
+            decodeFailed(failure.cast(e), raw, from);
+            return;
+        }
+        handle(frame, raw, from, at);
+    }
+
+    /**
+     * Handles a frame whose framing was checked already: found in a byte stream, or built from an SDK radiogram.
+     *
+     * @param raw the bytes as they arrived, for the packet log
+     */
+    public final void frame(F frame, byte[] raw, S from) {
+        received.incrementAndGet();
+        handle(frame, raw, from, null);
+    }
+
+    /** Handles input a link refused before it became a frame (e.g. an empty radiogram): counted and rejected. */
+    public final void refused(X failure, byte[] raw, S from) {
+        received.incrementAndGet();
+        decodeFailed(failure, raw, from);
+    }
+
+    /**
+     * Records a datagram the transport refused for its source (not on the allow-list, over the rate limit; the
+     * transport's {@code SourceGate} counts it): in the packet log, sampled like every rejected input.
+     */
+    public final void refused(String why, byte[] data, int length, S from) {
+        received.incrementAndGet();
+        sampler.rejected(origin(from), Arrays.copyOf(data, length), why);
+    }
+
+    /** Writes the summary of rejected input not kept in the packet log, at most once a minute; call on a tick. */
+    public final void flushRejects() {
+        sampler.flush();
+    }
+
+    /** @return how many datagrams or frames were handed in, rejected ones included (stream runs not) */
+    public final long received() {
+        return received.get();
+    }
+
+    /** Puts rejected input into the packet log while the sampler's budget lasts; the caller counted it. */
+    protected final void sample(String origin, byte[] raw, String note) {
+        sampler.rejected(origin, raw, note);
+    }
+
+    /** @return where input from {@code from} came from, for logs, e.g. {@code 127.0.0.1:5000} */
+    protected abstract String origin(S from);
+
+    /**
+     * Delivers a decoded frame.
+     *
+     * @param at the platform time of the frame; {@code null} for now
+     */
+    protected abstract void handle(F frame, byte[] raw, S from, Instant at);
+
+    /** Counts input the codec rejected under the exception's reason and samples it into the packet log. */
+    protected abstract void decodeFailed(X failure, byte[] raw, S from);
+}
