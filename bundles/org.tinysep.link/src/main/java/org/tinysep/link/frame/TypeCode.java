@@ -1,5 +1,6 @@
 package org.tinysep.link.frame;
 
+import java.util.Locale;
 import java.util.Optional;
 import java.util.function.Function;
 
@@ -13,6 +14,17 @@ import java.util.function.Function;
  * @param typeName the TinySEP node type name, e.g. {@code "door"}
  */
 public record TypeCode(int code, String typeName) {
+
+    /**
+     * The entry of a constant whose TinySEP node type name follows the API's rule: the constant's name in lower case
+     * with '-' for '_' ({@code DIMMABLE_LIGHT} is {@code "dimmable-light"}), as every AmICA type's is.
+     *
+     * @param constant the family's constant (its name is set in its constructor already)
+     * @param code     the number on the wire
+     */
+    public static TypeCode named(Enum<?> constant, int code) {
+        return new TypeCode(code, constant.name().toLowerCase(Locale.ROOT).replace('_', '-'));
+    }
 
     /**
      * @param types  the family's constants, e.g. {@code values()}

@@ -34,6 +34,16 @@ class TypeCodeTest {
         }
     }
 
+    enum Named {
+        DIMMABLE_LIGHT, DOOR
+    }
+
+    @Test
+    void aNamedEntryTakesTheConstantsNameInLowerCaseWithDashes() {
+        assertEquals(new TypeCode(3, "dimmable-light"), TypeCode.named(Named.DIMMABLE_LIGHT, 3));
+        assertEquals(new TypeCode(1, "door"), TypeCode.named(Named.DOOR, 1));
+    }
+
     @Test
     void byCodeFindsTheFirstConstantWithThatNumber() {
         assertEquals(Optional.of(Toy.A), TypeCode.byCode(Toy.values(), t -> t.wire, 7));

@@ -3,20 +3,22 @@ package org.tinysep.device.support;
 import java.time.Instant;
 import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Function;
 
 /**
  * The decoder path every link of a bus radio feeds, written once for both node families (issue 16): counts what is
  * handed in, copies a datagram (the transport may reuse its buffer), decodes it with the family's codec and hands
- * on the frame ({@link #handle}) or the codec's protocol exception ({@link #decodeFailed}); rejected input, refused
- * sources and the summary of what was not kept go to the packet log through one {@link RejectSampler}. A family's
- * handler (the AmICA {@code FrameHandler}, the Sun SPOT {@code PacketHandler}) adds its node table and its reject
- * counter. Links may call it on their own receive threads; the subclass's {@code handle} must allow that.
+ * on the frame ({@link #handle}) or the reason and message of the codec's protocol exception ({@link #reject});
+ * rejected input, refused sources and the summary of what was not kept go to the packet log through one
+ * {@link RejectSampler}. A family's handler (the AmICA {@code FrameHandler}, the Sun SPOT {@code PacketHandler})
+ * adds its node table and its reject counter. Links may call it on their own receive threads; the subclass's {@code handle} must allow that.
  *
  * @param <F> the family's frame
+ * @param <R> the family's reject reason
  * @param <X> the family's protocol exception, the one its codec throws
  * @param <S> where input comes from: a route, or a link's description
  */
-public abstract class PacketIntake<F, X extends Exception, S> {
+public abstract class PacketIntake<F, R, X extends Exception, S> {
 
     /**
      * A family's datagram decoder, e.g. {@code raw -> AmicaCodec.decode(raw, 0, raw.length)}.
@@ -31,16 +33,19 @@ public abstract class PacketIntake<F, X extends Exception, S> {
 
     private final Decoder<F, X> decoder;
     private final Class<X> failure;
+    private final Function<X, R> reasonOf;
     private final RejectSampler sampler;
     private final AtomicLong received = new AtomicLong();
 
     /**
-     * @param decoder decodes one datagram
-     * @param failure the class of the decoder's protocol exception
+     * @param decoder  decodes one datagram
+     * @param failure  the class of the decoder's protocol exception
+     * @param reasonOf the exception's reason, e.g. {@code AmicaProtocolException::reason}
      */
-    protected PacketIntake(DriverContext context, Decoder<F, X> decoder, Class<X> failure) {
+    protected PacketIntake(DriverContext context, Decoder<F, X> decoder, Class<X> failure, Function<X, R> reasonOf) {
         this.decoder = decoder;
         this.failure = failure;
+        this.reasonOf = reasonOf;
         this.sampler = new RejectSampler(context.reporter(), context.driverUid());
     }
 
@@ -65,7 +70,7 @@ public abstract class PacketIntake<F, X extends Exception, S> {
             if (!failure.isInstance(e)) {
                 throw (RuntimeException) e; // the decoder declares only X
             }
-            decodeFailed(failure.cast(e), raw, from);
+            rejectFor(failure.cast(e), raw, from);
             return;
         }
         handle(frame, raw, from, at);
@@ -84,7 +89,17 @@ public abstract class PacketIntake<F, X extends Exception, S> {
     /** Handles input a link refused before it became a frame (e.g. an empty radiogram): counted and rejected. */
     public final void refused(X failure, byte[] raw, S from) {
         received.incrementAndGet();
-        decodeFailed(failure, raw, from);
+        rejectFor(failure, raw, from);
+    }
+
+    /**
+     * Records input that a link's framing already rejected, e.g. a run of bytes a stream decoder skipped: counted
+     * under its reason and written to the packet log.
+     *
+     * @param message the reason and detail in the form of the family's exception message
+     */
+    public final void rejected(R reason, String message, byte[] raw, S from) {
+        reject(reason, message, raw, from);
     }
 
     /**
@@ -121,6 +136,10 @@ public abstract class PacketIntake<F, X extends Exception, S> {
      */
     protected abstract void handle(F frame, byte[] raw, S from, Instant at);
 
-    /** Counts input the codec rejected under the exception's reason and samples it into the packet log. */
-    protected abstract void decodeFailed(X failure, byte[] raw, S from);
+    /** Counts rejected input under its reason and samples it into the packet log ({@link #sample}). */
+    protected abstract void reject(R reason, String message, byte[] raw, S from);
+
+    private void rejectFor(X failure, byte[] raw, S from) {
+        reject(reasonOf.apply(failure), failure.getMessage(), raw, from);
+    }
 }

@@ -21,7 +21,7 @@ import org.tinysep.device.support.PacketIntake;
  *
  * @param <R> the route type (where a frame came from)
  */
-public final class FrameHandler<R> extends PacketIntake<AmicaFrame, AmicaProtocolException, R> {
+public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason, AmicaProtocolException, R> {
 
     /** Where nodes live: the driver's node table. */
     public interface Nodes<R> {
@@ -40,18 +40,11 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, AmicaProtoco
     private volatile Instant lastStamp;
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
-        super(context, raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class);
+        super(context, raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class,
+                AmicaProtocolException::reason);
         this.context = context;
         this.nodes = nodes;
         this.rejects = rejects;
-    }
-
-    /**
-     * Records input that the transport's framing already rejected, e.g. a run of bytes a stream decoder skipped:
-     * counted under its reason and written to the packet log.
-     */
-    public void rejected(RejectReason reason, String message, byte[] raw, R from) {
-        reject(reason, message, raw, from);
     }
 
     /**
@@ -92,16 +85,12 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, AmicaProtoco
     }
 
     @Override
-    protected void decodeFailed(AmicaProtocolException e, byte[] raw, R from) {
-        reject(e.reason(), e.getMessage(), raw, from);
-    }
-
-    @Override
     protected String origin(R from) {
         return nodes.describe(from);
     }
 
-    private void reject(RejectReason reason, String message, byte[] raw, R from) {
+    @Override
+    protected void reject(RejectReason reason, String message, byte[] raw, R from) {
         String origin = nodes.describe(from);
         rejects.reject(reason, message, origin);
         sample(origin, raw, message);

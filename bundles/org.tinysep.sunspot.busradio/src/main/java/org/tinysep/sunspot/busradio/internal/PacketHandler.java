@@ -18,25 +18,18 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  * e.g. {@code udp 127.0.0.1:5000}), refused sources and the sampled packet log are the shared
  * {@link PacketIntake}'s. Thread-safe: each link calls it on its own receive thread.
  */
-final class PacketHandler extends PacketIntake<SunSpotFrame, SunSpotProtocolException, String> {
+final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSpotProtocolException, String> {
 
     private final DriverContext context;
     private final SunSpotNodes nodes;
     private final RejectCounter rejects;
 
     PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter rejects) {
-        super(context, raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class);
+        super(context, raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class,
+                SunSpotProtocolException::reason);
         this.context = context;
         this.nodes = nodes;
         this.rejects = rejects;
-    }
-
-    /**
-     * Records input that a link's framing rejected, e.g. a run of bytes the stream decoder skipped: counted under
-     * its reason and written to the packet log.
-     */
-    void rejected(RejectReason reason, String message, byte[] raw, String from) {
-        reject(reason, message, raw, from);
     }
 
     @Override
@@ -66,16 +59,12 @@ final class PacketHandler extends PacketIntake<SunSpotFrame, SunSpotProtocolExce
     }
 
     @Override
-    protected void decodeFailed(SunSpotProtocolException e, byte[] raw, String from) {
-        reject(e.reason(), e.getMessage(), raw, from);
-    }
-
-    @Override
     protected String origin(String from) {
         return from;
     }
 
-    private void reject(RejectReason reason, String message, byte[] raw, String from) {
+    @Override
+    protected void reject(RejectReason reason, String message, byte[] raw, String from) {
         rejects.reject(reason, message, from);
         sample(from, raw, message);
     }
