@@ -52,8 +52,8 @@ final class SunSpotLinks implements AutoCloseable {
         }
         try {
             udp = UdpLink.open(settings.udpBindAddress(), port, driverName);
-            udpState = "listening on " + udp.localAddress();
-            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState, udp.receiveBufferSize());
+            udpState = "listening on " + udp.socket().localAddress();
+            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState, udp.socket().receiveBufferSize());
         } catch (IOException | RuntimeException e) {
             udpState = problem("udp: cannot listen on " + settings.udpBindAddress() + ":" + port + ": "
                     + e.getMessage());
@@ -62,7 +62,7 @@ final class SunSpotLinks implements AutoCloseable {
 
     /** @return the bound UDP port, if the UDP link is on */
     OptionalInt udpPort() {
-        return udp == null ? OptionalInt.empty() : OptionalInt.of(udp.localPort());
+        return udp == null ? OptionalInt.empty() : OptionalInt.of(udp.socket().localPort());
     }
 
     /** Sets who may send on the UDP link (docs/security.md); call before {@link #start}. */
@@ -74,6 +74,7 @@ final class SunSpotLinks implements AutoCloseable {
 
     /** Starts receiving on every configured link; reports the problems met so far as PROBLEM events. */
     void start(PacketHandler handler, SunSpotNodes nodes, DriverContext context) {
+        Feed feed = new Feed(handler, nodes, context);
         if (udp != null) {
             udp.start(handler);
         }
@@ -81,8 +82,7 @@ final class SunSpotLinks implements AutoCloseable {
             if (settings.serialBaudRate() <= 0) {
                 serialState = problem("serial: bad serialBaudRate " + settings.serialBaudRate());
             } else {
-                serial = new SerialLink(settings.serialPort().strip(), settings.serialBaudRate(), reopenEvery, handler,
-                        nodes, context);
+                serial = new SerialLink(settings.serialPort().strip(), settings.serialBaudRate(), reopenEvery, feed);
                 serial.start();
             }
         }
@@ -91,7 +91,7 @@ final class SunSpotLinks implements AutoCloseable {
             if (port < 1 || port > 255) {
                 sdkState = problem("sdk: bad sdkRadiogramPort " + port + ", expected 1..255");
             } else {
-                sdk = new SdkLink(sdkOpener, port, reopenEvery, handler, nodes, context);
+                sdk = new SdkLink(sdkOpener, port, reopenEvery, feed);
                 sdk.start();
             }
         }
