@@ -7,11 +7,12 @@ import java.util.function.Function;
 
 /**
  * The decoder path every link of a bus radio feeds, written once for both node families (issue 16): counts what is
- * handed in, copies a datagram (the transport may reuse its buffer), decodes it with the family's codec and hands
- * on the frame ({@link #handle}) or the reason and message of the codec's protocol exception ({@link #reject});
- * rejected input, refused sources and the summary of what was not kept go to the packet log through one
- * {@link RejectSampler}. A family's handler (the AmICA {@code FrameHandler}, the Sun SPOT {@code PacketHandler})
- * adds its node table and its reject counter. Links may call it on their own receive threads; the subclass's {@code handle} must allow that.
+ * handed in, copies a datagram (the transport may reuse its buffer), decodes it with the family's {@link Codec} and
+ * hands on the frame ({@link #handle}); rejected input is counted under its reason by the family's {@link Counter}
+ * and goes to the packet log through one {@link RejectSampler}, like refused sources and the summary of what was not
+ * kept. A family's handler (the AmICA {@code FrameHandler}, the Sun SPOT {@code PacketHandler}) adds only its node
+ * table and what a valid frame becomes. Links may call it on their own receive threads; the subclass's
+ * {@code handle} must allow that.
  *
  * @param <F> the family's frame
  * @param <R> the family's reject reason
@@ -31,21 +32,40 @@ public abstract class PacketIntake<F, R, X extends Exception, S> {
         F decode(byte[] raw) throws X;
     }
 
-    private final Decoder<F, X> decoder;
-    private final Class<X> failure;
-    private final Function<X, R> reasonOf;
-    private final RejectSampler sampler;
-    private final AtomicLong received = new AtomicLong();
-
     /**
+     * How a family decodes a datagram and names why it failed; one constant per family.
+     *
      * @param decoder  decodes one datagram
      * @param failure  the class of the decoder's protocol exception
      * @param reasonOf the exception's reason, e.g. {@code AmicaProtocolException::reason}
      */
-    protected PacketIntake(DriverContext context, Decoder<F, X> decoder, Class<X> failure, Function<X, R> reasonOf) {
-        this.decoder = decoder;
-        this.failure = failure;
-        this.reasonOf = reasonOf;
+    public record Codec<F, R, X extends Exception>(Decoder<F, X> decoder, Class<X> failure, Function<X, R> reasonOf) {
+    }
+
+    /**
+     * Counts one rejection under its reason, e.g. a bus radio's reject counter ({@code rejects::reject}).
+     *
+     * @param <R> the reject reason
+     */
+    @FunctionalInterface
+    public interface Counter<R> {
+        /**
+         * @param message the reason and detail in the form of the family's exception message
+         * @param origin  where the input came from, e.g. {@code 127.0.0.1:5000}
+         */
+        void reject(R reason, String message, String origin);
+    }
+
+    private final DriverContext context;
+    private final Codec<F, R, X> codec;
+    private final Counter<R> counter;
+    private final RejectSampler sampler;
+    private final AtomicLong received = new AtomicLong();
+
+    protected PacketIntake(DriverContext context, Codec<F, R, X> codec, Counter<R> counter) {
+        this.context = context;
+        this.codec = codec;
+        this.counter = counter;
         this.sampler = new RejectSampler(context.reporter(), context.driverUid());
     }
 
@@ -65,12 +85,12 @@ public abstract class PacketIntake<F, R, X extends Exception, S> {
         byte[] raw = Arrays.copyOf(data, length);
         F frame;
         try {
-            frame = decoder.decode(raw);
+            frame = codec.decoder().decode(raw);
         } catch (Exception e) {
-            if (!failure.isInstance(e)) {
+            if (!codec.failure().isInstance(e)) {
                 throw (RuntimeException) e; // the decoder declares only X
             }
-            rejectFor(failure.cast(e), raw, from);
+            rejectFor(codec.failure().cast(e), raw, from);
             return;
         }
         handle(frame, raw, from, at);
@@ -121,7 +141,18 @@ public abstract class PacketIntake<F, R, X extends Exception, S> {
         return received.get();
     }
 
-    /** Puts rejected input into the packet log while the sampler's budget lasts; the caller counted it. */
+    protected final DriverContext context() {
+        return context;
+    }
+
+    /** Counts rejected input under its reason and puts it into the packet log while the sampler's budget lasts. */
+    protected final void reject(R reason, String message, byte[] raw, S from) {
+        String origin = origin(from);
+        counter.reject(reason, message, origin);
+        sampler.rejected(origin, raw, message);
+    }
+
+    /** Puts input into the packet log as rejected while the sampler's budget lasts, not counted under a reason. */
     protected final void sample(String origin, byte[] raw, String note) {
         sampler.rejected(origin, raw, note);
     }
@@ -136,10 +167,7 @@ public abstract class PacketIntake<F, R, X extends Exception, S> {
      */
     protected abstract void handle(F frame, byte[] raw, S from, Instant at);
 
-    /** Counts rejected input under its reason and samples it into the packet log ({@link #sample}). */
-    protected abstract void reject(R reason, String message, byte[] raw, S from);
-
     private void rejectFor(X failure, byte[] raw, S from) {
-        reject(reasonOf.apply(failure), failure.getMessage(), raw, from);
+        reject(codec.reasonOf().apply(failure), failure.getMessage(), raw, from);
     }
 }

@@ -34,17 +34,16 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
         String describe(R route);
     }
 
-    private final DriverContext context;
+    /** A datagram is one frame; the reason of a bad one is its exception's. */
+    private static final Codec<AmicaFrame, RejectReason, AmicaProtocolException> CODEC = new Codec<>(
+            raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, AmicaProtocolException::reason);
+
     private final Nodes<R> nodes;
-    private final RejectCounter rejects;
     private volatile Instant lastStamp;
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
-        super(context, raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class,
-                AmicaProtocolException::reason);
-        this.context = context;
+        super(context, CODEC, rejects::reject);
         this.nodes = nodes;
-        this.rejects = rejects;
     }
 
     /**
@@ -54,7 +53,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     @Override
     protected void handle(AmicaFrame frame, byte[] raw, R from, Instant stamp) {
         Instant last = lastStamp;
-        Instant at = stamp == null ? context.now() : last != null && stamp.isBefore(last) ? last : stamp;
+        Instant at = stamp == null ? context().now() : last != null && stamp.isBefore(last) ? last : stamp;
         lastStamp = at;
         String origin = nodes.describe(from);
         AmicaPayload payload;
@@ -77,9 +76,9 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
                 sample(origin, raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
                 return;
             }
-            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         } else {
-            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         }
         device.received(frame, payload, from, at);
     }
@@ -87,12 +86,5 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     @Override
     protected String origin(R from) {
         return nodes.describe(from);
-    }
-
-    @Override
-    protected void reject(RejectReason reason, String message, byte[] raw, R from) {
-        String origin = nodes.describe(from);
-        rejects.reject(reason, message, origin);
-        sample(origin, raw, message);
     }
 }

@@ -20,21 +20,21 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  */
 final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSpotProtocolException, String> {
 
-    private final DriverContext context;
+    /** A datagram is one frame; the reason of a bad one is its exception's. */
+    private static final Codec<SunSpotFrame, RejectReason, SunSpotProtocolException> CODEC = new Codec<>(
+            raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class,
+            SunSpotProtocolException::reason);
+
     private final SunSpotNodes nodes;
-    private final RejectCounter rejects;
 
     PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter rejects) {
-        super(context, raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class,
-                SunSpotProtocolException::reason);
-        this.context = context;
+        super(context, CODEC, rejects::reject);
         this.nodes = nodes;
-        this.rejects = rejects;
     }
 
     @Override
     protected void handle(SunSpotFrame frame, byte[] raw, String from, Instant stamp) {
-        Instant at = stamp == null ? context.now() : stamp;
+        Instant at = stamp == null ? context().now() : stamp;
         SunSpotSensorType type;
         try {
             byte[] payload = frame.payload();
@@ -54,19 +54,13 @@ final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSp
             sample(from, raw, "rejected: Sun SPOT " + frame.source() + " would exceed maxNodes");
             return;
         }
-        context.reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
+        context().reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
         device.received(frame, type, from, at);
     }
 
     @Override
     protected String origin(String from) {
         return from;
-    }
-
-    @Override
-    protected void reject(RejectReason reason, String message, byte[] raw, String from) {
-        rejects.reject(reason, message, from);
-        sample(from, raw, message);
     }
 
     /** A platform tick: silent nodes go OFFLINE; the summary of rejected input not kept, at most once a minute. */

@@ -150,10 +150,6 @@ final class SdkLink implements AutoCloseable {
         return unreadable.get();
     }
 
-    String name() {
-        return name;
-    }
-
     @Override
     public void close() {
         closed = true;

@@ -53,7 +53,8 @@ final class SunSpotLinks implements AutoCloseable {
         try {
             udp = UdpLink.open(settings.udpBindAddress(), port, driverName);
             udpState = "listening on " + udp.socket().localAddress();
-            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState, udp.socket().receiveBufferSize());
+            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState,
+                    udp.socket().receiveBufferSize());
         } catch (IOException | RuntimeException e) {
             udpState = problem("udp: cannot listen on " + settings.udpBindAddress() + ":" + port + ": "
                     + e.getMessage());
