@@ -12,6 +12,11 @@ import java.util.Objects;
  * {@code class AmicaProtocolException extends ProtocolException implements Typed<RejectReason>}, and inherits its
  * typed {@code reason()} from {@link Typed} (a generic class may not extend {@code Throwable}, a generic interface
  * of one may).
+ * <p>
+ * A bundle that uses a family's exception calls {@code e.reason()} (or {@code e -> e.reason()}), never the method
+ * reference {@code AmicaProtocolException::reason}: javac names the declaring interface in a method reference, so
+ * the bundle would import this package, which no bundle exports (it is compiled into each protocol bundle), and
+ * would not resolve. A call names the family's exception class, as before.
  */
 public abstract class ProtocolException extends Exception {
 

@@ -37,7 +37,7 @@ public abstract class PacketIntake<F, R, X extends Exception, S> {
      *
      * @param decoder  decodes one datagram
      * @param failure  the class of the decoder's protocol exception
-     * @param reasonOf the exception's reason, e.g. {@code AmicaProtocolException::reason}
+     * @param reasonOf the exception's reason, e.g. {@code e -> e.reason()}
      */
     public record Codec<F, R, X extends Exception>(Decoder<F, X> decoder, Class<X> failure, Function<X, R> reasonOf) {
     }

@@ -34,9 +34,12 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
         String describe(R route);
     }
 
-    /** A datagram is one frame; the reason of a bad one is its exception's. */
+    /**
+     * A datagram is one frame; the reason of a bad one is its exception's ({@code e -> e.reason()}, not a method
+     * reference: that would name the private package declaring {@code reason()} and make this bundle import it).
+     */
     private static final Codec<AmicaFrame, RejectReason, AmicaProtocolException> CODEC = new Codec<>(
-            raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, AmicaProtocolException::reason);
+            raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, e -> e.reason());
 
     private final Nodes<R> nodes;
     private volatile Instant lastStamp;

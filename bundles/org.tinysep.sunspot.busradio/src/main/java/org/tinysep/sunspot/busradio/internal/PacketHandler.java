@@ -20,10 +20,9 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  */
 final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSpotProtocolException, String> {
 
-    /** A datagram is one frame; the reason of a bad one is its exception's. */
+    /** A datagram is one frame; the reason of a bad one is its exception's (a lambda: see the AmICA FrameHandler). */
     private static final Codec<SunSpotFrame, RejectReason, SunSpotProtocolException> CODEC = new Codec<>(
-            raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class,
-            SunSpotProtocolException::reason);
+            raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class, e -> e.reason());
 
     private final SunSpotNodes nodes;
 
