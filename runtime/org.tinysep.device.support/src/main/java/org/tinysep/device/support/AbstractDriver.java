@@ -103,17 +103,7 @@ public abstract class AbstractDriver implements Driver {
      * @param parts what the driver opened, e.g. its ticker first, then its transport
      */
     protected final void stop(AutoCloseable... parts) {
-        for (AutoCloseable part : parts) {
-            if (part != null) {
-                try {
-                    part.close();
-                } catch (RuntimeException e) {
-                    throw e;
-                } catch (Exception e) {
-                    throw new IllegalStateException(name + ": cannot close " + part + ": " + e.getMessage(), e);
-                }
-            }
-        }
+        Closeables.closeInOrder(name, parts);
         stop();
     }
 

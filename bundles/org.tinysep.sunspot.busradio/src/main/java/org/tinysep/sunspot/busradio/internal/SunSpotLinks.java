@@ -9,6 +9,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.Closeables;
 import org.tinysep.device.support.DriverContext;
 
 /**
@@ -145,14 +146,6 @@ final class SunSpotLinks implements AutoCloseable {
 
     @Override
     public void close() {
-        if (udp != null) {
-            udp.close();
-        }
-        if (serial != null) {
-            serial.close();
-        }
-        if (sdk != null) {
-            sdk.close();
-        }
+        Closeables.closeInOrder(driverName, udp, serial, sdk);
     }
 }
