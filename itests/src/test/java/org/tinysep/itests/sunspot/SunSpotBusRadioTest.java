@@ -136,6 +136,36 @@ public class SunSpotBusRadioTest extends SunSpotTestSupport {
         }
     }
 
+    /**
+     * Removing a bus device forgets its node (the device leaves the node table as it is disposed, issue 16): the
+     * node's next packet creates it anew, under the same UID, counting its packets from 1 again.
+     */
+    @Test
+    public void aRemovedBusDeviceIsCreatedAnewByTheNodesNextPacket() throws Exception {
+        String spot = "0014.4F01.0000.0E01";
+        String filter = "(&(" + DeviceProperties.NODE_ADDRESS + "=" + spot + ")(" + DeviceProperties.DRIVER_NAME
+                + "=" + BUS + "))";
+        try (SunSpotSender sender = new SunSpotSender(udpPortOf(BUS))) {
+            sender.send(spot, new TemperatureStatus(20.0));
+            sender.send(spot, new TemperatureStatus(20.5));
+            awaitDelivered(spot, 2);
+            String uid = awaitService(Device.class, filter, TIMEOUT).uid();
+            Driver driver = awaitService(Driver.class, "(" + DeviceProperties.DRIVER_NAME + "=" + BUS + ")", TIMEOUT);
+            assertTrue(driver.removeDevice(uid));
+            await(TIMEOUT, () -> {
+                try {
+                    return context.getServiceReferences(Device.class, filter).isEmpty();
+                } catch (InvalidSyntaxException e) {
+                    throw new IllegalStateException(e);
+                }
+            }, "the removed bus device's service to go");
+
+            sender.send(spot, new TemperatureStatus(21.0));
+            awaitDelivered(spot, 1);
+            assertEquals("the same node, the same UID", uid, awaitService(Device.class, filter, TIMEOUT).uid());
+        }
+    }
+
     @Test
     public void badFramesAreCountedPerReasonAndNoValidPacketIsLost() throws Exception {
         String[] spots = {"0014.4F01.0000.0B01", "0014.4F01.0000.0B02", "0014.4F01.0000.0B03"};

@@ -1,8 +1,6 @@
 package org.tinysep.simulator.node;
 
 import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.tinysep.amica.protocol.AmicaAddress;
@@ -12,7 +10,10 @@ import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 
-/** One AmICA node's own UDP socket: frames to the bus radio (sequence numbers 0..255), commands back from it. */
+/**
+ * One AmICA node's own UDP socket ({@link RadioSocket}): frames to the bus radio (sequence numbers 0..255), commands
+ * back from it.
+ */
 final class AmicaPort implements AutoCloseable {
 
     /** The battery and vendor every simulated AmICA node reports in its keep-alive. */
@@ -20,14 +21,12 @@ final class AmicaPort implements AutoCloseable {
     private static final int VENDOR = 0x0A11;
 
     private final AmicaAddress address;
-    private final DatagramChannel channel;
-    private final InetSocketAddress radio;
+    private final RadioSocket socket;
     private final AtomicInteger sequence = new AtomicInteger();
 
     AmicaPort(AmicaAddress address, Target target) throws IOException {
         this.address = address;
-        this.radio = target.amica();
-        this.channel = DatagramChannel.open().bind(target.bind());
+        this.socket = new RadioSocket(target, target.amica());
     }
 
     AmicaAddress address() {
@@ -35,7 +34,7 @@ final class AmicaPort implements AutoCloseable {
     }
 
     DatagramChannel channel() {
-        return channel;
+        return socket.channel();
     }
 
     /** Sends this node's keep-alive: {@code uptime} seconds since start-up, its product id and serial number. */
@@ -44,17 +43,12 @@ final class AmicaPort implements AutoCloseable {
     }
 
     void send(AmicaPayload payload) {
-        byte[] b = AmicaCodec.encode(AmicaFrame.toPlatform(address, sequence.getAndIncrement() & 0xFF,
-                AmicaPayloads.encode(payload)));
-        try {
-            channel.send(ByteBuffer.wrap(b), radio);
-        } catch (IOException e) {
-            NodeLog.LOG.warning("node " + address + " could not send to " + radio + ": " + e.getMessage());
-        }
+        socket.send(AmicaCodec.encode(AmicaFrame.toPlatform(address, sequence.getAndIncrement() & 0xFF,
+                AmicaPayloads.encode(payload))), "node " + address);
     }
 
     @Override
     public void close() throws IOException {
-        channel.close();
+        socket.close();
     }
 }

@@ -4,25 +4,18 @@ import java.util.Objects;
 import org.tinysep.link.frame.ProtocolException;
 
 /**
- * Bad input: a frame or payload that violates the AmICA node protocol. The {@link #reason()} says which rule was
- * broken; the message adds the detail (which byte, which value). Created without a stack trace, since rejecting
- * garbage is an expected, frequent event on a radio link.
+ * Bad input against the AmICA node protocol; {@code reason()} is the broken {@link RejectReason}, never null. The
+ * message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s (issue 16).
  */
-public final class AmicaProtocolException extends ProtocolException {
+public final class AmicaProtocolException extends ProtocolException implements ProtocolException.Typed<RejectReason> {
 
     private static final long serialVersionUID = 1L;
 
     /**
      * @param reason the broken rule
-     * @param detail what exactly was wrong, e.g. {@code "checksum 0x12, computed 0x34"}
+     * @param detail what exactly was wrong, e.g. {@code "checksum 0x12, computed 0x34"}; may be null
      */
     public AmicaProtocolException(RejectReason reason, String detail) {
         super(Objects.requireNonNull(reason, "reason"), reason.description(), detail);
-    }
-
-    /** @return the broken rule, never null */
-    @Override
-    public RejectReason reason() {
-        return (RejectReason) super.reason();
     }
 }

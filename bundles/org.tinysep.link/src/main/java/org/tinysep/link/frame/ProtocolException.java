@@ -3,10 +3,20 @@ package org.tinysep.link.frame;
 import java.util.Objects;
 
 /**
- * What the AmICA and the Sun SPOT protocol exceptions share: bad input, the broken rule (a family's reason enum)
- * and the message {@code "NAME (description): detail"} ({@link FrameFormat#message}). Created without a stack
- * trace, since rejecting garbage is an expected, frequent event on a radio link. Each family's exception adds only
- * its constructor and its typed {@code reason()}.
+ * Bad input: a frame or payload that violates a node protocol (AmICA or Sun SPOT). The exception's {@code reason()}
+ * says which rule was broken (one of the family's {@code RejectReason}s, never null); the message is
+ * {@code "NAME (description): detail"} ({@link FrameFormat#message}), the detail saying which byte or which value.
+ * Created without a stack trace, since rejecting garbage is an expected, frequent event on a radio link.
+ * <p>
+ * Everything is written here once: a family's exception is only its declaration and its constructor,
+ * {@code class AmicaProtocolException extends ProtocolException implements Typed<RejectReason>}, and inherits its
+ * typed {@code reason()} from {@link Typed} (a generic class may not extend {@code Throwable}, a generic interface
+ * of one may).
+ * <p>
+ * A bundle that uses a family's exception calls {@code e.reason()} (or {@code e -> e.reason()}), never the method
+ * reference {@code AmicaProtocolException::reason}: javac names the declaring interface in a method reference, so
+ * the bundle would import this package, which no bundle exports (it is compiled into each protocol bundle), and
+ * would not resolve. A call names the family's exception class, as before.
  */
 public abstract class ProtocolException extends Exception {
 
@@ -24,8 +34,17 @@ public abstract class ProtocolException extends Exception {
         this.reason = reason;
     }
 
-    /** @return the broken rule, never null; each family narrows the type */
-    public Enum<?> reason() {
-        return reason;
+    /**
+     * The typed accessor of a family's exception: {@code reason()} returns the family's reason enum.
+     *
+     * @param <R> the family's reason enum, the type its constructor takes
+     */
+    public interface Typed<R extends Enum<R>> {
+
+        /** @return the broken rule, never null */
+        @SuppressWarnings("unchecked") // only a ProtocolException implements it, its constructor taking an R
+        default R reason() {
+            return (R) ((ProtocolException) this).reason;
+        }
     }
 }

@@ -10,14 +10,11 @@ import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * A UDP socket with one receive loop on its own single-thread executor that {@link #close()} shuts
+ * A UDP socket with one receive loop on its own {@link LinkThread} that {@link #close()} shuts
  * down; datagrams are handed to the receiver synchronously on the receive thread. {@link #drain} hands over every
  * datagram already waiting on the caller's thread instead (the platform tick calls it, so in lock-step every frame
  * sent before a TICK is handled before its DONE). Receive loop and drain never interleave: one lock, held while a
@@ -46,14 +43,14 @@ public final class DatagramLink implements AutoCloseable {
 
     private final DatagramChannel channel;
     private final Selector selector;
-    private final ExecutorService receiveExecutor;
+    private final LinkThread receiveThread;
     private final ByteBuffer buffer = ByteBuffer.allocate(RECEIVE_BUFFER);
     private volatile boolean open = true;
 
     private DatagramLink(DatagramChannel channel, Selector selector, String threadName) {
         this.channel = channel;
         this.selector = selector;
-        this.receiveExecutor = Executors.newSingleThreadExecutor(r -> new Thread(r, threadName));
+        this.receiveThread = new LinkThread(threadName);
     }
 
     /**
@@ -87,7 +84,7 @@ public final class DatagramLink implements AutoCloseable {
 
     /** Starts the receive loop; datagrams queued in the socket buffer meanwhile are not lost. */
     public void start(Receiver receiver) {
-        receiveExecutor.execute(() -> receiveLoop(receiver));
+        receiveThread.execute(() -> receiveLoop(receiver));
     }
 
     public int localPort() {
@@ -192,13 +189,6 @@ public final class DatagramLink implements AutoCloseable {
         } catch (IOException e) {
             LOG.debug("closing {}: {}", localAddress(), e.toString());
         }
-        receiveExecutor.shutdown();
-        try {
-            if (!receiveExecutor.awaitTermination(2, TimeUnit.SECONDS)) {
-                receiveExecutor.shutdownNow();
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        receiveThread.close();
     }
 }

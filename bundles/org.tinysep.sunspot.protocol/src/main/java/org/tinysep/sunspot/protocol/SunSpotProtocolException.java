@@ -4,11 +4,10 @@ import java.util.Objects;
 import org.tinysep.link.frame.ProtocolException;
 
 /**
- * Signals a frame or payload that violates the Sun SPOT node protocol. The {@link #reason()} says which rule was
- * broken; the message adds the detail (which byte, which value). Created without a stack trace, since rejecting
- * garbage is an expected, frequent event on a radio link.
+ * Bad input against the Sun SPOT node protocol; {@code reason()} is the broken {@link RejectReason}, never null.
+ * The message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s (issue 16).
  */
-public final class SunSpotProtocolException extends ProtocolException {
+public final class SunSpotProtocolException extends ProtocolException implements ProtocolException.Typed<RejectReason> {
 
     private static final long serialVersionUID = 1L;
 
@@ -18,11 +17,5 @@ public final class SunSpotProtocolException extends ProtocolException {
      */
     public SunSpotProtocolException(RejectReason reason, String detail) {
         super(Objects.requireNonNull(reason, "reason"), reason.description(), detail);
-    }
-
-    /** @return the broken rule, never null */
-    @Override
-    public RejectReason reason() {
-        return (RejectReason) super.reason();
     }
 }

@@ -1,6 +1,7 @@
 package org.tinysep.sunspot.protocol;
 
 import java.util.Optional;
+import org.tinysep.link.frame.TypeCode;
 
 /**
  * The Sun SPOT sensor types: the header's sensor type byte, which is also the first byte of the payloads of thesis
@@ -18,22 +19,21 @@ public enum SunSpotSensorType {
     /** Pet collar (pet movement), code 5. */
     PET_COLLAR(5, "pet-collar");
 
-    private final int code;
-    private final String typeName;
+    /** The sensor type byte and the type name; the lookups are the shared {@link TypeCode}'s. */
+    private final TypeCode wire;
 
     SunSpotSensorType(int code, String typeName) {
-        this.code = code;
-        this.typeName = typeName;
+        this.wire = new TypeCode(code, typeName);
     }
 
     /** @return the sensor type byte, e.g. 3 for {@link #TEMPERATURE} */
     public int code() {
-        return code;
+        return wire.code();
     }
 
     /** @return the TinySEP node type name, e.g. {@code "light-sensor"} */
     public String typeName() {
-        return typeName;
+        return wire.typeName();
     }
 
     /**
@@ -41,17 +41,12 @@ public enum SunSpotSensorType {
      * @return the sensor type with that code, if any
      */
     public static Optional<SunSpotSensorType> fromCode(int code) {
-        for (SunSpotSensorType t : values()) {
-            if (t.code == code) {
-                return Optional.of(t);
-            }
-        }
-        return Optional.empty();
+        return TypeCode.byCode(values(), t -> t.wire, code);
     }
 
     /** @return true if {@code code} is one of the four sensor types, without allocating */
     static boolean isKnown(int code) {
-        return code >= MOVEMENT.code && code <= PET_COLLAR.code;
+        return code >= MOVEMENT.code() && code <= PET_COLLAR.code();
     }
 
     /**
@@ -59,11 +54,6 @@ public enum SunSpotSensorType {
      * @return the sensor type with that name, if any
      */
     public static Optional<SunSpotSensorType> fromTypeName(String typeName) {
-        for (SunSpotSensorType t : values()) {
-            if (t.typeName.equals(typeName)) {
-                return Optional.of(t);
-            }
-        }
-        return Optional.empty();
+        return TypeCode.byTypeName(values(), t -> t.wire, typeName);
     }
 }

@@ -95,6 +95,18 @@ public abstract class AbstractDriver implements Driver {
         }
     }
 
+    /**
+     * The usual deactivation of a driver with parts of its own (a socket, a serial radio, a ticker): closes the
+     * given parts in order (null ones, never opened, are skipped), then {@link #stop()}. Written once for the bus
+     * radios (issue 16); a part that throws on close stops the deactivation there, as before.
+     *
+     * @param parts what the driver opened, e.g. its ticker first, then its transport
+     */
+    protected final void stop(AutoCloseable... parts) {
+        Closeables.closeInOrder(name, parts);
+        stop();
+    }
+
     protected final DriverContext context() {
         DriverContext c = context;
         if (c == null) {

@@ -45,13 +45,16 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     /** How often an AmICA node sends its keep-alive (the thesis gives no rate; the simulator's, a TinySEP choice). */
     public static final Duration KEEP_ALIVE_PERIOD = Duration.ofSeconds(60);
 
-    /** Sends a command payload to the node along a route; the driver's side. */
+    /** The driver's side, its node table: sends a command payload to the node along a route. */
     public interface Link<R> {
         /** Frames and queues the payload; never blocks. */
         void send(AmicaBusDevice<R> device, byte[] payload, R route);
 
         /** @return the route for the user, e.g. {@code 127.0.0.1:5000} or {@code /dev/ttyUSB0} */
         String describe(R route);
+
+        /** Forgets a bus device its driver removed (it calls this as it is disposed), so the node comes anew. */
+        void forget(AbstractDevice device);
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(AmicaBusDevice.class);
@@ -298,8 +301,10 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
                 Parameter.readOnly("serialNumber", ka.serialNumber(), "from the last keep-alive"));
     }
 
+    /** Closes the connections and leaves the node table (its driver removed it). */
     @Override
     protected void onDispose() {
         listeners.closeAll();
+        link.forget(this);
     }
 }

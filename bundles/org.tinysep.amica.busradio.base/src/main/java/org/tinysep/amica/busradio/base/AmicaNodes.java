@@ -158,6 +158,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     }
 
     /** Forgets the node of a removed bus device, so its next keep-alive creates it anew. */
+    @Override
     public void forget(AbstractDevice device) {
         if (device instanceof AmicaBusDevice<?> bus) {
             nodes.remove(bus.address(), bus);

@@ -1,8 +1,6 @@
 package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
-import java.util.Arrays;
-import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
@@ -13,16 +11,17 @@ import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.RejectSampler;
+import org.tinysep.device.support.PacketIntake;
 
 /**
  * Turns one frame into a delivery to a bus device, a new bus device (keep-alive from an unknown node), or a
- * counted rejection; every input ends up in the packet log, a rejected one with its reason. Runs on the
- * transport's receive thread only.
+ * counted rejection; every input ends up in the packet log, a rejected one with its reason. Counting, copying and
+ * decoding a datagram, refused sources and the sampled packet log are the shared {@link PacketIntake}'s. Runs on
+ * the transport's receive thread only.
  *
  * @param <R> the route type (where a frame came from)
  */
-public final class FrameHandler<R> {
+public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason, AmicaProtocolException, R> {
 
     /** Where nodes live: the driver's node table. */
     public interface Nodes<R> {
@@ -35,62 +34,29 @@ public final class FrameHandler<R> {
         String describe(R route);
     }
 
-    private final DriverContext context;
+    /**
+     * A datagram is one frame; the reason of a bad one is its exception's ({@code e -> e.reason()}, not a method
+     * reference: that would name the private package declaring {@code reason()} and make this bundle import it).
+     */
+    private static final Codec<AmicaFrame, RejectReason, AmicaProtocolException> CODEC = new Codec<>(
+            raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, e -> e.reason());
+
     private final Nodes<R> nodes;
-    private final RejectCounter rejects;
-    private final RejectSampler sampler;
-    private final AtomicLong received = new AtomicLong();
     private volatile Instant lastStamp;
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
-        this.context = context;
+        super(context, CODEC, rejects::reject);
         this.nodes = nodes;
-        this.rejects = rejects;
-        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
-    }
-
-    /** Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after. */
-    public void datagram(byte[] data, int length, R from) {
-        datagram(data, length, from, null);
     }
 
     /**
-     * Like {@link #datagram(byte[], int, Object)}, stamped {@code at} instead of the platform time now: a
-     * transport that takes a late frame during a platform tick stamps it with the time it arrived in (the time
-     * before the tick), as it would have been stamped on time. Never earlier than the last stamp given.
-     *
-     * @param at the platform time of the frame; {@code null} for now
+     * A frame is stamped {@code stamp} (a transport's late frame during a platform tick, see
+     * {@link #datagram(byte[], int, Object, Instant)}) or the platform time now; never earlier than the last stamp.
      */
-    public void datagram(byte[] data, int length, R from, Instant at) {
-        received.incrementAndGet();
-        byte[] raw = Arrays.copyOf(data, length);
-        AmicaFrame frame;
-        try {
-            frame = AmicaCodec.decode(data, 0, length);
-        } catch (AmicaProtocolException e) {
-            reject(e.reason(), e.getMessage(), raw, from);
-            return;
-        }
-        handle(frame, raw, from, at);
-    }
-
-    /** Handles a frame already found in a byte stream (framing checked); {@code raw} are its bytes. */
-    public void frame(AmicaFrame frame, byte[] raw, R from) {
-        received.incrementAndGet();
-        handle(frame, raw, from, null);
-    }
-
-    /**
-     * Records input that the transport's framing already rejected, e.g. a run of bytes a stream decoder skipped:
-     * counted under its reason and written to the packet log.
-     */
-    public void rejected(RejectReason reason, String message, byte[] raw, R from) {
-        reject(reason, message, raw, from);
-    }
-
-    private void handle(AmicaFrame frame, byte[] raw, R from, Instant stamp) {
+    @Override
+    protected void handle(AmicaFrame frame, byte[] raw, R from, Instant stamp) {
         Instant last = lastStamp;
-        Instant at = stamp == null ? context.now() : last != null && stamp.isBefore(last) ? last : stamp;
+        Instant at = stamp == null ? context().now() : last != null && stamp.isBefore(last) ? last : stamp;
         lastStamp = at;
         String origin = nodes.describe(from);
         AmicaPayload payload;
@@ -110,38 +76,18 @@ public final class FrameHandler<R> {
             }
             device = nodes.create(frame.sender(), keepAlive, from, at);
             if (device == null) { // over the bus radio's node cap: counted by the node table
-                sampler.rejected(origin, raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
+                sample(origin, raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
                 return;
             }
-            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         } else {
-            context.reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
+            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         }
         device.received(frame, payload, from, at);
     }
 
-    private void reject(RejectReason reason, String message, byte[] raw, R from) {
-        String origin = nodes.describe(from);
-        rejects.reject(reason, message, origin);
-        sampler.rejected(origin, raw, message);
-    }
-
-    /**
-     * Records a datagram the transport refused for its source (not on the allow-list, over the rate limit; the
-     * transport's {@code SourceGate} counts it): in the packet log, sampled like every rejected input.
-     */
-    public void refused(String why, byte[] data, int length, R from) {
-        received.incrementAndGet();
-        sampler.rejected(nodes.describe(from), Arrays.copyOf(data, length), why);
-    }
-
-    /** Writes the summary of rejected frames not kept in the packet log, at most once a minute; call on a tick. */
-    public void flushRejects() {
-        sampler.flush();
-    }
-
-    /** @return how many datagrams or frames were handed in (rejected ones included, stream runs not) */
-    public long received() {
-        return received.get();
+    @Override
+    protected String origin(R from) {
+        return nodes.describe(from);
     }
 }

@@ -1,11 +1,9 @@
 package org.tinysep.sunspot.busradio.internal;
 
 import java.time.Instant;
-import java.util.Arrays;
-import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.RejectSampler;
+import org.tinysep.device.support.PacketIntake;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -16,67 +14,26 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
 /**
  * The one decoder path every link feeds: turns a packet into a delivery to a bus device (created on the node's
  * first valid packet of any kind, thesis 4.4.1.3) or a counted rejection. Every packet ends up in the packet log, a
- * rejected one with its reason. Thread-safe: each link calls it on its own receive thread.
+ * rejected one with its reason. Counting, copying and decoding a datagram ({@code from} is the link and remote end,
+ * e.g. {@code udp 127.0.0.1:5000}), refused sources and the sampled packet log are the shared
+ * {@link PacketIntake}'s. Thread-safe: each link calls it on its own receive thread.
  */
-final class PacketHandler {
+final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSpotProtocolException, String> {
 
-    private final DriverContext context;
+    /** A datagram is one frame; the reason of a bad one is its exception's (a lambda: see the AmICA FrameHandler). */
+    private static final Codec<SunSpotFrame, RejectReason, SunSpotProtocolException> CODEC = new Codec<>(
+            raw -> SunSpotCodec.decode(raw, 0, raw.length), SunSpotProtocolException.class, e -> e.reason());
+
     private final SunSpotNodes nodes;
-    private final RejectCounter rejects;
-    private final RejectSampler sampler;
-    private final AtomicLong received = new AtomicLong();
 
     PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter rejects) {
-        this.context = context;
+        super(context, CODEC, rejects::reject);
         this.nodes = nodes;
-        this.rejects = rejects;
-        this.sampler = new RejectSampler(context.reporter(), context.driverUid());
     }
 
-    /**
-     * Handles bytes that must be exactly one frame, such as a UDP datagram; {@code data} may be reused after.
-     *
-     * @param from the link and remote end, e.g. {@code udp 127.0.0.1:5000}
-     */
-    void datagram(byte[] data, int length, String from) {
-        received.incrementAndGet();
-        byte[] raw = Arrays.copyOf(data, length);
-        SunSpotFrame frame;
-        try {
-            frame = SunSpotCodec.decode(raw, 0, length);
-        } catch (SunSpotProtocolException e) {
-            reject(e.reason(), e.getMessage(), raw, from);
-            return;
-        }
-        handle(frame, raw, from);
-    }
-
-    /**
-     * Handles a frame whose framing was checked already: found in a byte stream, or built from an SDK radiogram.
-     *
-     * @param raw the bytes as they arrived, for the packet log (a radiogram's payload, a stream frame's bytes)
-     */
-    void frame(SunSpotFrame frame, byte[] raw, String from) {
-        received.incrementAndGet();
-        handle(frame, raw, from);
-    }
-
-    /**
-     * Records input that a link's framing rejected, e.g. a run of bytes the stream decoder skipped: counted under
-     * its reason and written to the packet log.
-     */
-    void rejected(RejectReason reason, String message, byte[] raw, String from) {
-        reject(reason, message, raw, from);
-    }
-
-    /** Handles a packet a link refused before it became a frame, e.g. an empty radiogram: counted and rejected. */
-    void refused(SunSpotProtocolException e, byte[] raw, String from) {
-        received.incrementAndGet();
-        reject(e.reason(), e.getMessage(), raw, from);
-    }
-
-    private void handle(SunSpotFrame frame, byte[] raw, String from) {
-        Instant at = context.now();
+    @Override
+    protected void handle(SunSpotFrame frame, byte[] raw, String from, Instant stamp) {
+        Instant at = stamp == null ? context().now() : stamp;
         SunSpotSensorType type;
         try {
             byte[] payload = frame.payload();
@@ -93,32 +50,21 @@ final class PacketHandler {
         }
         SunSpotBusDevice device = nodes.findOrCreate(frame.source(), type, from);
         if (device == null) { // over the node cap: counted by the node table
-            sampler.rejected(from, raw, "rejected: Sun SPOT " + frame.source() + " would exceed maxNodes");
+            sample(from, raw, "rejected: Sun SPOT " + frame.source() + " would exceed maxNodes");
             return;
         }
-        context.reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
+        context().reporter().packet(Direction.RECEIVED, "node " + frame.source() + " via " + from, raw, "");
         device.received(frame, type, from, at);
     }
 
-    private void reject(RejectReason reason, String message, byte[] raw, String from) {
-        rejects.reject(reason, message, from);
-        sampler.rejected(from, raw, message);
-    }
-
-    /** Records a datagram a link refused for its source (the link's {@code SourceGate} counted it), sampled. */
-    void refusedSource(String why, byte[] data, int length, String from) {
-        received.incrementAndGet();
-        sampler.rejected(from, Arrays.copyOf(data, length), why);
+    @Override
+    protected String origin(String from) {
+        return from;
     }
 
     /** A platform tick: silent nodes go OFFLINE; the summary of rejected input not kept, at most once a minute. */
     void tick(Instant now) {
         nodes.checkHealth(now);
-        sampler.flush();
-    }
-
-    /** @return how many packets (datagrams, stream frames, radiograms) were handed in, rejected ones included */
-    long received() {
-        return received.get();
+        flushRejects();
     }
 }

@@ -2,14 +2,11 @@ package org.tinysep.sunspot.busradio.internal;
 
 import java.io.IOException;
 import java.time.Duration;
-import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.link.udp.LinkThread;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
@@ -19,7 +16,7 @@ import org.tinysep.sunspot.protocol.SunSpotProtocolException;
 /**
  * The SDK link: the Sun SPOT SDK running in-process receives radiograms from the basestation, each carrying one
  * Table 3.2 payload; the sender's address and the payload become a {@link SunSpotFrame} for the shared
- * {@link PacketHandler}. Opens and receives on its own single-thread executor. A missing SDK is reported once
+ * {@link PacketHandler}. Opens and receives on its own {@link LinkThread}. A missing SDK is reported once
  * (status and PROBLEM event) and not retried; a port that cannot be opened or a lost connection is retried every
  * {@code reopenEvery}.
  */
@@ -30,34 +27,28 @@ final class SdkLink implements AutoCloseable {
     private final RadiogramSource.Opener opener;
     private final int port;
     private final Duration reopenEvery;
-    private final PacketHandler handler;
-    private final SunSpotNodes nodes;
-    private final DriverContext context;
+    private final Feed feed;
     private final String name;
-    private final ScheduledThreadPoolExecutor executor;
+    private final LinkThread thread;
     private final AtomicLong unreadable = new AtomicLong();
     private volatile RadiogramSource source;
     private volatile boolean closed;
     private volatile String state = "not started";
     private boolean outageReported; // executor thread only
 
-    SdkLink(RadiogramSource.Opener opener, int port, Duration reopenEvery, PacketHandler handler, SunSpotNodes nodes,
-            DriverContext context) {
+    SdkLink(RadiogramSource.Opener opener, int port, Duration reopenEvery, Feed feed) {
         this.opener = opener;
         this.port = port;
         this.reopenEvery = reopenEvery;
-        this.handler = handler;
-        this.nodes = nodes;
-        this.context = context;
+        this.feed = feed;
         this.name = "sdk radiogram://:" + port;
-        this.executor = new ScheduledThreadPoolExecutor(1, r -> new Thread(r, context.driverName() + "-sdk"));
-        this.executor.setExecuteExistingDelayedTasksAfterShutdownPolicy(false);
+        this.thread = new LinkThread(feed.context().driverName() + "-sdk");
     }
 
     /** Opens the radiogram port and receives, on the link's thread; returns at once. */
     void start() {
         state = "opening " + name;
-        submit(this::openAndReceive, Duration.ZERO);
+        thread.schedule(this::openAndReceive, Duration.ZERO);
     }
 
     private void openAndReceive() {
@@ -79,7 +70,7 @@ final class SdkLink implements AutoCloseable {
         }
         outageReported = false;
         state = "receiving on " + name;
-        LOG.info("{}: {}", context.driverName(), state);
+        LOG.info("{}: {}", feed.context().driverName(), state);
         receiveLoop(s);
     }
 
@@ -91,7 +82,7 @@ final class SdkLink implements AutoCloseable {
             } catch (IOException | RuntimeException e) {
                 s.close();
                 if (!closed) {
-                    nodes.offline(name, "SDK link lost");
+                    feed.nodes().offline(name, "SDK link lost");
                     outage("lost " + name + ": " + e.getMessage());
                 }
                 return;
@@ -118,11 +109,11 @@ final class SdkLink implements AutoCloseable {
             return;
         }
         if (data.length == 0 || data.length > SunSpotCodec.MAX_PAYLOAD) {
-            handler.refused(new SunSpotProtocolException(data.length == 0 ? RejectReason.UNKNOWN_PAYLOAD
+            feed.handler().refused(new SunSpotProtocolException(data.length == 0 ? RejectReason.UNKNOWN_PAYLOAD
                     : RejectReason.OVERSIZE, data.length + "-byte radiogram from " + address), data, name);
             return;
         }
-        handler.frame(SunSpotFrame.of(address, data), data, name);
+        feed.handler().frame(SunSpotFrame.of(address, data), data, name);
     }
 
     /** @return the dotted address without a {@code radiogram://} scheme or a {@code :port} suffix */
@@ -141,20 +132,12 @@ final class SdkLink implements AutoCloseable {
             outageReported = true;
             problem(reason + "; retrying every " + reopenEvery.toSeconds() + " s");
         }
-        submit(this::openAndReceive, reopenEvery);
+        thread.schedule(this::openAndReceive, reopenEvery);
     }
 
     private void problem(String text) {
-        LOG.warn("{}: {}", context.driverName(), text);
-        context.event(EventKind.PROBLEM, text);
-    }
-
-    private void submit(Runnable task, Duration delay) {
-        try {
-            executor.schedule(task, delay.toMillis(), TimeUnit.MILLISECONDS);
-        } catch (RejectedExecutionException e) {
-            // closing
-        }
+        LOG.warn("{}: {}", feed.context().driverName(), text);
+        feed.context().event(EventKind.PROBLEM, text);
     }
 
     /** @return e.g. {@code receiving on sdk radiogram://:100} or {@code Sun SPOT SDK not installed (...)} */
@@ -167,10 +150,6 @@ final class SdkLink implements AutoCloseable {
         return unreadable.get();
     }
 
-    String name() {
-        return name;
-    }
-
     @Override
     public void close() {
         closed = true;
@@ -179,13 +158,6 @@ final class SdkLink implements AutoCloseable {
         if (s != null) {
             s.close(); // ends a blocked receive
         }
-        executor.shutdown();
-        try {
-            if (!executor.awaitTermination(2, TimeUnit.SECONDS)) {
-                executor.shutdownNow();
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        thread.close();
     }
 }

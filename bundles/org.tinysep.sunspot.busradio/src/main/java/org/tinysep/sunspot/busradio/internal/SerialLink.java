@@ -2,7 +2,6 @@ package org.tinysep.sunspot.busradio.internal;
 
 import java.time.Duration;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
 import org.tinysep.serial.support.SerialPortLink;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
@@ -20,20 +19,15 @@ final class SerialLink implements AutoCloseable, SerialPortLink.Listener, SunSpo
 
     private static final byte[] NO_BYTES = new byte[0];
 
-    private final PacketHandler handler;
-    private final SunSpotNodes nodes;
-    private final DriverContext context;
+    private final Feed feed;
     private final String name;
     private final SunSpotStreamDecoder decoder = new SunSpotStreamDecoder(this);
     private final SerialPortLink port;
 
-    SerialLink(String portPath, int baudRate, Duration reopenEvery, PacketHandler handler, SunSpotNodes nodes,
-            DriverContext context) {
-        this.handler = handler;
-        this.nodes = nodes;
-        this.context = context;
+    SerialLink(String portPath, int baudRate, Duration reopenEvery, Feed feed) {
+        this.feed = feed;
         this.name = "serial " + portPath;
-        this.port = new SerialPortLink(portPath, baudRate, reopenEvery, context.driverName() + "-serial", this);
+        this.port = new SerialPortLink(portPath, baudRate, reopenEvery, feed.context().driverName() + "-serial", this);
     }
 
     /** Opens the port and reads it on the link's own thread; returns at once. */
@@ -48,24 +42,24 @@ final class SerialLink implements AutoCloseable, SerialPortLink.Listener, SunSpo
 
     @Override
     public void opened(String portPath) {
-        context.event(EventKind.STATUS, name + " open at " + port.baudRate() + " baud");
+        feed.context().event(EventKind.STATUS, name + " open at " + port.baudRate() + " baud");
     }
 
     @Override
     public void lost(String portPath, String reason) {
         decoder.reset();
-        nodes.offline(name, "serial link lost: " + reason);
-        context.event(EventKind.PROBLEM, name + ": " + reason + "; reopening by itself");
+        feed.nodes().offline(name, "serial link lost: " + reason);
+        feed.context().event(EventKind.PROBLEM, name + ": " + reason + "; reopening by itself");
     }
 
     @Override
     public void frame(SunSpotFrame f) {
-        handler.frame(f, SunSpotCodec.encode(f), name);
+        feed.handler().frame(f, SunSpotCodec.encode(f), name);
     }
 
     @Override
     public void rejected(RejectReason r, int skippedBytes) {
-        handler.rejected(r, r.name() + " (" + r.description() + "): " + skippedBytes
+        feed.handler().rejected(r, r.name() + " (" + r.description() + "): " + skippedBytes
                 + " bytes skipped in the serial stream", NO_BYTES, name);
     }
 

@@ -46,6 +46,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
     static final Duration REAL_SILENCE_GUARD = Duration.ofSeconds(2);
 
     private final SunSpotAddress address;
+    private final SunSpotNodes table;
     private final Listeners<BusRadioSunSpotListener> listeners;
     private final AtomicLong packets = new AtomicLong();
     private volatile Set<String> nodeTypes;
@@ -57,12 +58,14 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
      * @param type  the device type, {@code BusRadioSunSpot}; the UID derives from the driver name and the address
      * @param first the sensor type of the first packet
      * @param link  the link the first packet came on, e.g. {@code udp 127.0.0.1:5000}
+     * @param table the node table, which the device leaves when its driver removes it
      */
     SunSpotBusDevice(DriverContext context, String type, SunSpotAddress address, SunSpotSensorType first,
-            String link) {
+            String link, SunSpotNodes table) {
         super(context, Uids.of(context.driverName(), address.toString()), type, "Sun SPOT " + address);
         this.address = address;
         this.link = link;
+        this.table = table;
         this.listeners = new Listeners<>(uid());
         this.nodeTypes = Set.of(first.typeName());
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
@@ -82,7 +85,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
      *
      * @throws IllegalArgumentException when the backup lacks the address or a known node type
      */
-    static SunSpotBusDevice restored(DriverContext context, String type, ComponentBackup saved) {
+    static SunSpotBusDevice restored(DriverContext context, String type, ComponentBackup saved, SunSpotNodes table) {
         List<SunSpotSensorType> types = saved.nodeTypes().stream()
                 .map(t -> SunSpotSensorType.fromTypeName(t).orElseThrow(
                         () -> new IllegalArgumentException("unknown node type " + t)))
@@ -91,7 +94,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
             throw new IllegalArgumentException("no node types saved");
         }
         SunSpotBusDevice d = new SunSpotBusDevice(context, type, SunSpotAddress.parse(saved.nodeAddress()),
-                types.get(0), NOT_HEARD);
+                types.get(0), NOT_HEARD, table);
         types.forEach(d::addType);
         d.lastSeen = saved.lastSeen();
         d.watch.restored(saved.lastSeen());
@@ -216,8 +219,10 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
                         "battery state"));
     }
 
+    /** Closes the connections and leaves the node table (its driver removed it). */
     @Override
     protected void onDispose() {
         listeners.closeAll();
+        table.forget(this);
     }
 }

@@ -11,7 +11,6 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
@@ -74,18 +73,7 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
 
     @Deactivate
     void deactivate() {
-        if (ticker != null) {
-            ticker.close();
-        }
-        if (links != null) {
-            links.close();
-        }
-        stop(); // removes the bus devices one by one, each removal announced, then the driver
-    }
-
-    @Override
-    protected void onDeviceRemoved(AbstractDevice device) {
-        nodes.forget(device);
+        stop(ticker, links); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override

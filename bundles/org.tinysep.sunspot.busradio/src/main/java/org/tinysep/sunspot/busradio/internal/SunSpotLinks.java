@@ -9,6 +9,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.Closeables;
 import org.tinysep.device.support.DriverContext;
 
 /**
@@ -52,8 +53,9 @@ final class SunSpotLinks implements AutoCloseable {
         }
         try {
             udp = UdpLink.open(settings.udpBindAddress(), port, driverName);
-            udpState = "listening on " + udp.localAddress();
-            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState, udp.receiveBufferSize());
+            udpState = "listening on " + udp.socket().localAddress();
+            LOG.info("{} UDP link {} (receive buffer {} bytes)", driverName, udpState,
+                    udp.socket().receiveBufferSize());
         } catch (IOException | RuntimeException e) {
             udpState = problem("udp: cannot listen on " + settings.udpBindAddress() + ":" + port + ": "
                     + e.getMessage());
@@ -62,7 +64,7 @@ final class SunSpotLinks implements AutoCloseable {
 
     /** @return the bound UDP port, if the UDP link is on */
     OptionalInt udpPort() {
-        return udp == null ? OptionalInt.empty() : OptionalInt.of(udp.localPort());
+        return udp == null ? OptionalInt.empty() : OptionalInt.of(udp.socket().localPort());
     }
 
     /** Sets who may send on the UDP link (docs/security.md); call before {@link #start}. */
@@ -74,6 +76,7 @@ final class SunSpotLinks implements AutoCloseable {
 
     /** Starts receiving on every configured link; reports the problems met so far as PROBLEM events. */
     void start(PacketHandler handler, SunSpotNodes nodes, DriverContext context) {
+        Feed feed = new Feed(handler, nodes, context);
         if (udp != null) {
             udp.start(handler);
         }
@@ -81,8 +84,7 @@ final class SunSpotLinks implements AutoCloseable {
             if (settings.serialBaudRate() <= 0) {
                 serialState = problem("serial: bad serialBaudRate " + settings.serialBaudRate());
             } else {
-                serial = new SerialLink(settings.serialPort().strip(), settings.serialBaudRate(), reopenEvery, handler,
-                        nodes, context);
+                serial = new SerialLink(settings.serialPort().strip(), settings.serialBaudRate(), reopenEvery, feed);
                 serial.start();
             }
         }
@@ -91,7 +93,7 @@ final class SunSpotLinks implements AutoCloseable {
             if (port < 1 || port > 255) {
                 sdkState = problem("sdk: bad sdkRadiogramPort " + port + ", expected 1..255");
             } else {
-                sdk = new SdkLink(sdkOpener, port, reopenEvery, handler, nodes, context);
+                sdk = new SdkLink(sdkOpener, port, reopenEvery, feed);
                 sdk.start();
             }
         }
@@ -144,14 +146,6 @@ final class SunSpotLinks implements AutoCloseable {
 
     @Override
     public void close() {
-        if (udp != null) {
-            udp.close();
-        }
-        if (serial != null) {
-            serial.close();
-        }
-        if (sdk != null) {
-            sdk.close();
-        }
+        Closeables.closeInOrder(driverName, udp, serial, sdk);
     }
 }

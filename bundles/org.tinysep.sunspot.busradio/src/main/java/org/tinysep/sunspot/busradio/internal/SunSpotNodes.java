@@ -71,7 +71,7 @@ final class SunSpotNodes {
                 }
                 return null;
             }
-            SunSpotBusDevice device = new SunSpotBusDevice(context, deviceType, address, type, link);
+            SunSpotBusDevice device = new SunSpotBusDevice(context, deviceType, address, type, link, this);
             nodes.put(address, device);
             try {
                 return register.apply(device);
@@ -84,7 +84,7 @@ final class SunSpotNodes {
 
     /** Re-creates the bus devices of the nodes known before the restart; an unusable backup is reported. */
     int restore(List<ComponentBackup> saved) {
-        return Backups.recreate(context, saved, b -> SunSpotBusDevice.restored(context, deviceType, b), d -> {
+        return Backups.recreate(context, saved, b -> SunSpotBusDevice.restored(context, deviceType, b, this), d -> {
             synchronized (creating) {
                 return nodes.putIfAbsent(d.address(), d) == null;
             }
@@ -114,7 +114,7 @@ final class SunSpotNodes {
         return nodes.get(address);
     }
 
-    /** Forgets the node of a removed bus device, so its next packet creates it anew. */
+    /** Forgets a removed bus device (it calls this as it is disposed), so the node's next packet creates it anew. */
     void forget(AbstractDevice device) {
         if (device instanceof SunSpotBusDevice bus) {
             nodes.remove(bus.address(), bus);

@@ -48,16 +48,9 @@ final class UdpLink implements AutoCloseable {
         socket.start((data, length, from) -> datagram(handler, data, length, from));
     }
 
-    int localPort() {
-        return socket.localPort();
-    }
-
-    String localAddress() {
-        return socket.localAddress();
-    }
-
-    int receiveBufferSize() {
-        return socket.receiveBufferSize();
+    /** @return the socket, for its bound port and address and its receive buffer size */
+    DatagramLink socket() {
+        return socket;
     }
 
     private void datagram(PacketHandler handler, byte[] data, int length, InetSocketAddress sender) {
@@ -70,10 +63,10 @@ final class UdpLink implements AutoCloseable {
         }
         String first = g.firstRefusal(verdict, sender.getAddress());
         if (first != null) {
-            LOG.warn("UDP link {}: {}", localAddress(), first);
+            LOG.warn("UDP link {}: {}", socket.localAddress(), first);
             problems.accept(first);
         }
-        handler.refusedSource(SourceGate.why(verdict, sender.getAddress()), data, length, from);
+        handler.refused(SourceGate.why(verdict, sender.getAddress()), data, length, from);
     }
 
     @Override

@@ -8,11 +8,12 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.tinysep.sunspot.busradio.internal.TestBus.SPOT_A;
 import static org.tinysep.sunspot.busradio.internal.TestBus.SPOT_B;
+import static org.tinysep.sunspot.busradio.internal.TestBus.TIMEOUT;
 import static org.tinysep.sunspot.busradio.internal.TestBus.await;
 
 import java.time.Duration;
 import java.util.Set;
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
@@ -23,22 +24,15 @@ import org.tinysep.sunspot.protocol.TemperatureStatus;
 /** The SDK link through its seam, with an in-process fake radiogram source; and the real opener without an SDK. */
 class SdkLinkTest {
 
-    private static final Duration TIMEOUT = Duration.ofSeconds(10);
     private static final byte[] MOTION = SunSpotPayloads.encode(new MovementDetection(true));
 
+    @AutoClose
     private final TestBus bus = new TestBus();
     private final FakeRadiograms sdk = new FakeRadiograms();
     private SdkLink link;
 
-    @AfterEach
-    void close() {
-        if (link != null) {
-            link.close();
-        }
-    }
-
     private void startLink(RadiogramSource.Opener opener) {
-        link = new SdkLink(opener, 100, Duration.ofMillis(20), bus.handler, bus.nodes, bus.context);
+        link = bus.closing(new SdkLink(opener, 100, Duration.ofMillis(20), bus.feed));
         link.start();
     }
 
@@ -126,7 +120,6 @@ class SdkLinkTest {
         link.close();
         assertFalse(sdk.isOpen());
         assertEquals("closed", link.state());
-        link = null;
     }
 
     @Test

@@ -56,8 +56,7 @@ class SerialLinkTest {
     }
 
     private void startLink() {
-        link = new SerialLink(socat.a().toString(), 115200, Duration.ofMillis(100), bus.handler, bus.nodes,
-                bus.context);
+        link = new SerialLink(socat.a().toString(), 115200, Duration.ofMillis(100), bus.feed);
         link.start();
         await("port open", TIMEOUT, () -> link.state().startsWith("open at"));
     }
@@ -121,8 +120,7 @@ class SerialLinkTest {
     }
 
     private void startLinkWithoutWaiting() {
-        link = new SerialLink(socat.a().toString(), 115200, Duration.ofMillis(100), bus.handler, bus.nodes,
-                bus.context);
+        link = new SerialLink(socat.a().toString(), 115200, Duration.ofMillis(100), bus.feed);
         link.start();
     }
 }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.tinysep.sunspot.busradio.internal.TestBus.SPOT_A;
+import static org.tinysep.sunspot.busradio.internal.TestBus.TIMEOUT;
 import static org.tinysep.sunspot.busradio.internal.TestBus.await;
 import static org.tinysep.sunspot.busradio.internal.TestBus.frame;
 
@@ -14,7 +15,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.sunspot.protocol.MovementDetection;
@@ -22,23 +23,16 @@ import org.tinysep.sunspot.protocol.MovementDetection;
 /** One configuration, three links: what runs, what is reported, and that one link's trouble spares the others. */
 class SunSpotLinksTest {
 
-    private static final Duration TIMEOUT = Duration.ofSeconds(10);
     private static final RadiogramSource.Opener NO_SDK = port -> {
         throw new SdkUnavailableException("no javax.microedition.io");
     };
 
+    @AutoClose
     private final TestBus bus = new TestBus();
     private SunSpotLinks links;
 
-    @AfterEach
-    void close() {
-        if (links != null) {
-            links.close();
-        }
-    }
-
     private SunSpotLinks start(LinkSettings settings) {
-        links = new SunSpotLinks(settings, NO_SDK, Duration.ofMillis(50), "BusRadioSunSpot");
+        links = bus.closing(new SunSpotLinks(settings, NO_SDK, Duration.ofMillis(50), "BusRadioSunSpot"));
         links.bind();
         links.start(bus.handler, bus.nodes, bus.context);
         return links;

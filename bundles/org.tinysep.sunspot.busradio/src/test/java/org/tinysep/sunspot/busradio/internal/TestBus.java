@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.fail;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.function.BooleanSupplier;
 import java.util.function.UnaryOperator;
@@ -20,9 +21,13 @@ import org.tinysep.sunspot.protocol.SunSpotPayloads;
 
 /**
  * The bus radio's shared parts wired as the driver wires them, without a framework: in-memory logs, a node table
- * that does not register services, one packet handler.
+ * that does not register services, one packet handler; and the links a test opens on them, closed with the bus (a
+ * test's {@code @AutoClose} field).
  */
-final class TestBus {
+final class TestBus implements AutoCloseable {
+
+    /** How long a test waits for a link's thread to get somewhere. */
+    static final Duration TIMEOUT = Duration.ofSeconds(10);
 
     static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
     static final SunSpotAddress SPOT_A = SunSpotAddress.parse("0014.4F01.0000.1234");
@@ -34,6 +39,21 @@ final class TestBus {
     final RejectCounter rejects = new RejectCounter(context);
     final SunSpotNodes nodes = new SunSpotNodes(context, "BusRadioSunSpot", UnaryOperator.identity());
     final PacketHandler handler = new PacketHandler(context, nodes, rejects);
+    final Feed feed = new Feed(handler, nodes, context);
+    private final List<AutoCloseable> links = new ArrayList<>();
+
+    /** @return the link, closed when the test ends (closing a link twice does no harm) */
+    <L extends AutoCloseable> L closing(L link) {
+        links.add(link);
+        return link;
+    }
+
+    @Override
+    public void close() throws Exception {
+        for (AutoCloseable link : links) {
+            link.close();
+        }
+    }
 
     void feed(byte[] datagram, String from) {
         handler.datagram(datagram, datagram.length, from);

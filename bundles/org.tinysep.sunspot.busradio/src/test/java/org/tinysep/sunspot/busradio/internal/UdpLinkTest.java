@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.tinysep.sunspot.busradio.internal.TestBus.SPOT_A;
 import static org.tinysep.sunspot.busradio.internal.TestBus.SPOT_B;
+import static org.tinysep.sunspot.busradio.internal.TestBus.TIMEOUT;
 import static org.tinysep.sunspot.busradio.internal.TestBus.await;
 import static org.tinysep.sunspot.busradio.internal.TestBus.frame;
 
@@ -13,9 +14,8 @@ import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.SocketException;
-import java.time.Duration;
 import java.util.Set;
-import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.Test;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
@@ -25,27 +25,19 @@ import org.tinysep.sunspot.protocol.TemperatureStatus;
 /** The UDP link with real sockets on 127.0.0.1. */
 class UdpLinkTest {
 
-    private static final Duration TIMEOUT = Duration.ofSeconds(10);
-
+    @AutoClose
     private final TestBus bus = new TestBus();
     private UdpLink link;
 
-    @AfterEach
-    void close() {
-        if (link != null) {
-            link.close();
-        }
-    }
-
     private void send(DatagramSocket from, byte[] bytes) throws IOException {
-        from.send(new DatagramPacket(bytes, bytes.length, InetAddress.getLoopbackAddress(), link.localPort()));
+        from.send(new DatagramPacket(bytes, bytes.length, InetAddress.getLoopbackAddress(), link.socket().localPort()));
     }
 
     @Test
     void datagramsBecomeBusDevicesAndBadOnesAreCounted() throws Exception {
-        link = UdpLink.open("127.0.0.1", 0, "test");
-        assertTrue(link.localPort() > 0);
-        assertTrue(link.localAddress().startsWith("127.0.0.1:"), link.localAddress());
+        link = bus.closing(UdpLink.open("127.0.0.1", 0, "test"));
+        assertTrue(link.socket().localPort() > 0);
+        assertTrue(link.socket().localAddress().startsWith("127.0.0.1:"), link.socket().localAddress());
         link.start(bus.handler);
         byte[] bad = frame(SPOT_A, new LightStatus(1));
         bad[bad.length - 1] ^= 0x55;
@@ -68,8 +60,8 @@ class UdpLinkTest {
 
     @Test
     void nothingIsLostInABurst() throws Exception {
-        link = UdpLink.open("127.0.0.1", 0, "test");
-        assertTrue(link.receiveBufferSize() > 0);
+        link = bus.closing(UdpLink.open("127.0.0.1", 0, "test"));
+        assertTrue(link.socket().receiveBufferSize() > 0);
         link.start(bus.handler);
         int count = 2000;
         try (DatagramSocket sender = new DatagramSocket()) {
@@ -84,14 +76,13 @@ class UdpLinkTest {
 
     @Test
     void aBusyPortIsAnIoErrorAndCloseEndsTheLoop() throws Exception {
-        link = UdpLink.open("127.0.0.1", 0, "test");
+        link = bus.closing(UdpLink.open("127.0.0.1", 0, "test"));
         link.start(bus.handler);
-        int port = link.localPort();
+        int port = link.socket().localPort();
         assertThrows(SocketException.class, () -> UdpLink.open("127.0.0.1", port, "second"));
         link.close();
         try (DatagramSocket again = new DatagramSocket(port, InetAddress.getLoopbackAddress())) {
             assertEquals(port, again.getLocalPort(), "close released the port");
         }
-        link = null;
     }
 }

@@ -13,7 +13,6 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
@@ -70,23 +69,7 @@ public final class AmicaSerialDriver extends AbstractDriver {
 
     @Deactivate
     void deactivate() {
-        PlatformTicker t = ticker;
-        if (t != null) {
-            t.close();
-        }
-        SerialRadio r = radio;
-        if (r != null) {
-            r.close();
-        }
-        stop(); // removes the bus devices one by one, each removal announced, then the driver
-    }
-
-    @Override
-    protected void onDeviceRemoved(AbstractDevice device) {
-        SerialRadio r = radio;
-        if (r != null) {
-            r.forget(device);
-        }
+        stop(ticker, radio); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override

@@ -12,7 +12,6 @@ import org.tinysep.amica.busradio.base.FrameHandler;
 import org.tinysep.amica.busradio.base.RejectCounter;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.serial.support.SerialPortLink;
@@ -110,11 +109,6 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     void tick(Instant now) {
         nodes.checkHealth(now);
         handler.flushRejects();
-    }
-
-    /** Forgets the node of a removed bus device. */
-    void forget(AbstractDevice device) {
-        nodes.forget(device);
     }
 
     List<Parameter> parameters() {

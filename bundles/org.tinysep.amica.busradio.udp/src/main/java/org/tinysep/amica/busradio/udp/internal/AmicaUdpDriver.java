@@ -19,7 +19,6 @@ import org.tinysep.amica.busradio.base.FrameHandler;
 import org.tinysep.amica.busradio.base.RejectCounter;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
@@ -138,18 +137,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     @Deactivate
     void deactivate() {
-        if (ticker != null) {
-            ticker.close();
-        }
-        if (transport != null) {
-            transport.close();
-        }
-        stop(); // removes the bus devices one by one, each removal announced, then the driver
-    }
-
-    @Override
-    protected void onDeviceRemoved(AbstractDevice device) {
-        nodes.forget(device);
+        stop(ticker, transport); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override
