@@ -78,7 +78,9 @@ public final class Evaluate {
                 + "`etc/org.tinysep.inactivity.cfg` of each platform (the history was replayed with `detector="
                 + o.detectors().get(0) + "`)");
         facts.add("Machine: " + Runtime.getRuntime().availableProcessors() + " CPUs, load average before " + loadBefore
-                + ", after " + load());
+                + ", after " + load() + (PlatformRun.retries() == 0 ? ""
+                        : "; " + PlatformRun.retries() + " platform run(s) started again because the port chosen for "
+                                + "the time synchroniser was taken before the platform bound it (no answer to HELLO)"));
         facts.add(Report.CITATION);
         String title = home.name() + (x.split().name().equals("half") ? "" : "-" + x.split().name());
         String md = Report.markdown(title, facts, results);

@@ -8,10 +8,12 @@ import java.time.LocalDateTime;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.tinysep.simulator.cli.ReplayResult;
 import org.tinysep.simulator.cli.Run;
 import org.tinysep.simulator.replay.EventsCsv;
 import org.tinysep.simulator.replay.SensorEvent;
+import org.tinysep.simulator.time.SyncClient;
 
 /**
  * One replay through one platform process: copy the snapshot (if any) to a fresh state folder, start the
@@ -22,6 +24,8 @@ final class PlatformRun {
 
     /** How long to wait for alert mails after the replay (they are sent on the Mail Manager's own thread). */
     private static final long MAIL_WAIT_NANOS = 60_000_000_000L;
+    private static final int MAX_ATTEMPTS = 3;
+    private static final AtomicInteger RETRIES = new AtomicInteger();
 
     private PlatformRun() {
     }
@@ -33,6 +37,31 @@ final class PlatformRun {
      * @return the outcome: the entries this run wrote, the mails received
      */
     static Outcome run(Setup setup, Path snapshot, Path dir, String detector, List<Segment> segments)
+            throws Exception {
+        for (int attempt = 1;; attempt++) {
+            try {
+                return runOnce(setup, snapshot, dir, detector, segments);
+            } catch (SyncClient.NoAnswer e) {
+                // the free port the harness chose for the synchroniser was taken by another process before the
+                // platform bound it (its log: "TimeController cannot listen on …: Address already in use"): the
+                // platform never answers; start it again from a fresh copy, on new ports
+                if (attempt == MAX_ATTEMPTS) {
+                    throw e;
+                }
+                RETRIES.incrementAndGet();
+                System.out.printf("platform run %s: %s; started again (attempt %d of %d)%n", dir.getFileName(),
+                        e.getMessage(), attempt + 1, MAX_ATTEMPTS);
+                Snapshot.delete(dir);
+            }
+        }
+    }
+
+    /** @return how many platform runs had to be started again (see {@link #run}) */
+    static int retries() {
+        return RETRIES.get();
+    }
+
+    private static Outcome runOnce(Setup setup, Path snapshot, Path dir, String detector, List<Segment> segments)
             throws Exception {
         Files.createDirectories(dir);
         Path var = dir.resolve("var");

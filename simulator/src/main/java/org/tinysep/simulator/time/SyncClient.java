@@ -68,8 +68,8 @@ public final class SyncClient implements AutoCloseable {
         }
     }
 
-    /** No answer after every try. */
-    static final class NoAnswer extends IOException {
+    /** No answer after every try (public: a harness may start the platform again, e.g. when its port was taken). */
+    public static final class NoAnswer extends IOException {
         private static final long serialVersionUID = 1L;
 
         NoAnswer(String message) {
