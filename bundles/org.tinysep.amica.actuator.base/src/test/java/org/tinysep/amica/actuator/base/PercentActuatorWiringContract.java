@@ -81,7 +81,7 @@ public abstract class PercentActuatorWiringContract<D extends PercentActuatorDev
     }
 
     @Test
-    void itsControlsReportsAreItsValueAndOtherControlsAreNot() {
+    void itsControlReportsAreItsValueAndOtherControlsAreNot() {
         receive(CONTROLS.get(key).apply(30), 0);
         int second = 0;
         for (String other : CONTROLS.keySet().stream().filter(k -> !k.equals(key)).sorted().toList()) {
