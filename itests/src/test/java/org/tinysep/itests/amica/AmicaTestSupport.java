@@ -4,8 +4,14 @@ import static org.junit.Assert.assertArrayEquals;
 import static org.junit.Assert.assertEquals;
 
 import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.BiConsumer;
+import java.util.function.Consumer;
+import java.util.function.Function;
+import java.util.function.IntFunction;
 import java.util.function.Supplier;
 import org.junit.runner.RunWith;
 import org.ops4j.pax.exam.junit.PaxExam;
@@ -14,9 +20,11 @@ import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.tinysep.amica.protocol.AmicaNodeType;
+import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.sensor.Percent;
 import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
@@ -89,6 +97,47 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
         } catch (AssertionError timeout) {
             assertEquals(what, expected, actual.get());
             throw timeout;
+        }
+    }
+
+    /**
+     * The scenario of the percent actuators (dimmable light, heater, speaker), written once: node {@code 1.address} of
+     * {@code type} announces itself; its status reports reach listeners as changes (a repeated one is not); the typed
+     * setter puts {@code 5 code 0 A} on the node's socket and the value stays, {@code pending} meanwhile, until the
+     * node's next status confirms it; {@code tinysep:set uid key 70} does the same.
+     *
+     * @param device  the device type, e.g. {@code "AmicaHeater"}
+     * @param control makes the node's status and command payload, e.g. {@code HeaterControl::new}
+     * @param connect connects a listener to the provider that accepts each value heard
+     */
+    protected <P> void assertPercentActuator(AmicaNodeType type, int address, String device, Class<P> provider,
+            IntFunction<AmicaPayload> control, String key, int code, BiConsumer<P, Consumer<Percent>> connect,
+            BiConsumer<P, Percent> set, Function<P, Optional<Percent>> value) throws Exception {
+        try (AmicaNode node = node(1, address, type)) {
+            P actuator = announce(node, device, provider, type.typeName());
+            Device abstraction = device(device, node.id());
+            List<Percent> heard = new CopyOnWriteArrayList<>();
+            connect.accept(actuator, heard::add);
+
+            node.send(control.apply(10));
+            node.send(control.apply(10)); // repeated every 10 s by the node: not a change
+            node.send(control.apply(25));
+            awaitEquals("status reports", List.of(Percent.of(10), Percent.of(25)), () -> List.copyOf(heard));
+
+            set.accept(actuator, Percent.of(40));
+            expectCommand(node, 5, code, 0, 40);
+            assertEquals("unchanged before the node confirms", Optional.of(Percent.of(25)), value.apply(actuator));
+            assertEquals("40%", parameter(abstraction, "pending"));
+            node.send(control.apply(40));
+            awaitEquals("confirmed", List.of(Percent.of(10), Percent.of(25), Percent.of(40)), () -> List.copyOf(heard));
+            assertEquals(Optional.of(Percent.of(40)), value.apply(actuator));
+            assertEquals("", parameter(abstraction, "pending"));
+
+            shell("tinysep:set " + abstraction.uid() + " " + key + " 70");
+            expectCommand(node, 5, code, 0, 70);
+            assertEquals("70%", parameter(abstraction, "pending"));
+            node.send(control.apply(70));
+            awaitEquals(key + " parameter", "70%", () -> parameter(abstraction, key));
         }
     }
 

@@ -1,10 +1,13 @@
 package org.tinysep.amica.protocol;
 
+import org.tinysep.link.frame.Reason;
+
 /**
  * Why a frame or payload was rejected. Every rejection in this library names one of these, so bus radios can log and
- * count rejections by cause.
+ * count rejections by cause. Each tells its rule in plain words: {@code description()} (written once in the shared
+ * {@code org.tinysep.link.frame.Reason}).
  */
-public enum RejectReason {
+public enum RejectReason implements Reason {
 
     /** Fewer bytes than a frame needs: under 8 bytes, or under 8 + S. */
     TRUNCATED("frame shorter than its size identifier announces"),
@@ -23,14 +26,7 @@ public enum RejectReason {
     /** Used by bus radios: a packet from a node that has not announced itself with a keep-alive. */
     UNKNOWN_NODE("packet from an unknown node that is not a keep-alive");
 
-    private final String description;
-
     RejectReason(String description) {
-        this.description = description;
-    }
-
-    /** @return a short human-readable explanation, suitable for a log entry */
-    public String description() {
-        return description;
+        Reason.describe(this, description);
     }
 }

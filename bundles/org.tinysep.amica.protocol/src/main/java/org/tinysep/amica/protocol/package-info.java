@@ -17,7 +17,7 @@
  * {@link org.tinysep.amica.protocol.RejectReason}.
  */
 @Export
-@Version("2.0.0")
+@Version("2.1.0")
 package org.tinysep.amica.protocol;
 
 import org.osgi.annotation.bundle.Export;

@@ -9,7 +9,7 @@
  * each protocol bundle ({@code -conditionalpackage: org.tinysep.link.frame}), and no exported signature names its
  * types, so the protocol packages' APIs are unchanged.
  */
-@Version("3.0.0")
+@Version("3.1.0")
 package org.tinysep.link.frame;
 
 import org.osgi.annotation.versioning.Version;

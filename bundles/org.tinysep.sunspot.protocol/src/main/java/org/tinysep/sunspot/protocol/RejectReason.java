@@ -1,10 +1,13 @@
 package org.tinysep.sunspot.protocol;
 
+import org.tinysep.link.frame.Reason;
+
 /**
  * Why a frame or payload was rejected. Every rejection in this library names one of these, so the bus radio can log
- * and count rejections by cause.
+ * and count rejections by cause. Each tells its rule in plain words: {@code description()} (written once in the
+ * shared {@code org.tinysep.link.frame.Reason}).
  */
-public enum RejectReason {
+public enum RejectReason implements Reason {
 
     /** Fewer bytes than a frame needs: under 12 bytes, or under 12 + S. */
     TRUNCATED("frame shorter than its size identifier announces"),
@@ -21,14 +24,7 @@ public enum RejectReason {
     /** A known payload with a wrong length, a non-zero reserved byte or a value out of range. */
     BAD_VALUE("payload has a wrong length or a value out of range");
 
-    private final String description;
-
     RejectReason(String description) {
-        this.description = description;
-    }
-
-    /** @return a short human-readable explanation, suitable for a log entry */
-    public String description() {
-        return description;
+        Reason.describe(this, description);
     }
 }

@@ -18,26 +18,19 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 
 /** Light Status payloads in, brightness changes out. */
-class SunSpotLightDeviceTest extends SunSpotDeviceTestSupport<SunSpotLightDevice> {
+class SunSpotLightDeviceTest extends SunSpotDeviceTestSupport<SunSpotLightDevice, Integer> {
 
     SunSpotLightDeviceTest() {
-        super("SunSpotLight", SunSpotSensorType.LIGHT.code(), SunSpotLightDevice::new);
+        super("SunSpotLight", SunSpotSensorType.LIGHT.code(), SunSpotLightDevice::new,
+                percent -> SunSpotPayloads.encode(new LightStatus(percent)));
         sensor.connect((src, b, at) -> hear(b, at));
     }
 
     @Test
     void listenersHearChangesOnly() {
         assertEquals(Optional.empty(), sensor.brightness());
-        feed(40, 0);
-        feed(40, 10);
-        feed(0, 20);
-        feed(100, 30);
-        feed(100, 40);
-
-        assertEquals(List.of("40%@0", "0%@20", "100%@30"), heard);
+        assertHeardEvery(10, List.of("40%@0", "0%@20", "100%@30"), 40, 40, 0, 100, 100);
         assertEquals(Optional.of(Percent.FULL), sensor.brightness());
-        assertEquals(T0.plusSeconds(40).toString(), parameter("lastUpdate"));
-        assertEquals(DeviceStatus.State.ONLINE, sensor.status().state());
     }
 
     @Test
@@ -69,9 +62,5 @@ class SunSpotLightDeviceTest extends SunSpotDeviceTestSupport<SunSpotLightDevice
         assertEquals(List.of(), sensor.functions());
         assertEquals(List.of("name", "room"), sensor.parameters().stream().filter(Parameter::writable)
                 .map(Parameter::key).toList(), "only the common name and room");
-    }
-
-    private void feed(int percent, int second) {
-        deliver(SunSpotPayloads.encode(new LightStatus(percent)), second);
     }
 }

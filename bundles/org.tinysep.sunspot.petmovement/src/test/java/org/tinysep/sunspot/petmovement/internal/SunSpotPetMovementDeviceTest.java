@@ -17,20 +17,17 @@ import org.tinysep.sunspot.protocol.SunSpotPayloads;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
 
 /** Pet Movement Detection payloads in, pet movement reports out. */
-class SunSpotPetMovementDeviceTest extends SunSpotDeviceTestSupport<SunSpotPetMovementDevice> {
+class SunSpotPetMovementDeviceTest extends SunSpotDeviceTestSupport<SunSpotPetMovementDevice, Boolean> {
 
     SunSpotPetMovementDeviceTest() {
-        super("SunSpotPetMovement", SunSpotSensorType.PET_COLLAR.code(), SunSpotPetMovementDevice::new);
+        super("SunSpotPetMovement", SunSpotSensorType.PET_COLLAR.code(), SunSpotPetMovementDevice::new,
+                moved -> SunSpotPayloads.encode(new PetMovementDetection(moved)));
         sensor.connect((src, e) -> heard.add(e));
     }
 
     @Test
     void everyReportIsPassedOnAndTheEventLogGetsChanges() {
-        feed(true, 0);
-        feed(true, 2);
-        feed(false, 4);
-        feed(false, 6);
-        feed(true, 8);
+        feedEvery(2, true, true, false, false, true);
 
         assertEquals(List.of(new MovementEvent(true, T0), new MovementEvent(true, T0.plusSeconds(2)),
                 new MovementEvent(false, T0.plusSeconds(4)), new MovementEvent(false, T0.plusSeconds(6)),
@@ -61,9 +58,5 @@ class SunSpotPetMovementDeviceTest extends SunSpotDeviceTestSupport<SunSpotPetMo
         feed(true, 1);
         assertEquals(List.of(new MovementEvent(true, T0.plusSeconds(1))), heard);
         assertEquals(DeviceStatus.State.ONLINE, sensor.status().state());
-    }
-
-    private void feed(boolean moved, int second) {
-        deliver(SunSpotPayloads.encode(new PetMovementDetection(moved)), second);
     }
 }

@@ -12,25 +12,20 @@ import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.amica.protocol.SpeakerControl;
 
-/** An AmICA frame in words (only loaded once {@link PacketDecoder} found the protocol library). */
+/**
+ * An AmICA frame in words (only loaded once {@link PacketDecoder} found the protocol library); the decoding and its
+ * fallbacks are {@link FrameText}'s.
+ */
 final class AmicaText {
 
     private AmicaText() {
     }
 
     static String of(byte[] bytes) {
-        AmicaFrame f;
-        try {
-            f = AmicaCodec.decode(bytes, 0, bytes.length);
-        } catch (AmicaProtocolException e) {
-            return "";
-        }
-        String head = "AmICA " + f.sender() + " → " + f.receiver() + " #" + f.sequence() + ": ";
-        try {
-            return head + payload(AmicaPayloads.decode(f.payload()));
-        } catch (AmicaProtocolException e) {
-            return head + "payload not understood (" + e.getMessage() + ")";
-        }
+        return FrameText.<AmicaFrame, AmicaPayload, AmicaProtocolException>of(bytes,
+                b -> AmicaCodec.decode(b, 0, b.length),
+                f -> "AmICA " + f.sender() + " → " + f.receiver() + " #" + f.sequence() + ": ",
+                f -> AmicaPayloads.decode(f.payload()), AmicaText::payload);
     }
 
     private static String payload(AmicaPayload p) {

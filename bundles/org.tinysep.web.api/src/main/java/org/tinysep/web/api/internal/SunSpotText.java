@@ -10,25 +10,19 @@ import org.tinysep.sunspot.protocol.SunSpotPayloads;
 import org.tinysep.sunspot.protocol.SunSpotProtocolException;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 
-/** A Sun SPOT frame in words (only loaded once {@link PacketDecoder} found the protocol library). */
+/**
+ * A Sun SPOT frame in words (only loaded once {@link PacketDecoder} found the protocol library); the decoding and its
+ * fallbacks are {@link FrameText}'s.
+ */
 final class SunSpotText {
 
     private SunSpotText() {
     }
 
     static String of(byte[] bytes) {
-        SunSpotFrame f;
-        try {
-            f = SunSpotCodec.decode(bytes, 0, bytes.length);
-        } catch (SunSpotProtocolException e) {
-            return "";
-        }
-        String head = "Sun SPOT " + f.source() + ": ";
-        try {
-            return head + payload(SunSpotPayloads.decode(f.payload()));
-        } catch (SunSpotProtocolException e) {
-            return head + "payload not understood (" + e.getMessage() + ")";
-        }
+        return FrameText.<SunSpotFrame, SunSpotPayload, SunSpotProtocolException>of(bytes,
+                b -> SunSpotCodec.decode(b, 0, b.length), f -> "Sun SPOT " + f.source() + ": ",
+                f -> SunSpotPayloads.decode(f.payload()), SunSpotText::payload);
     }
 
     private static String payload(SunSpotPayload p) {
