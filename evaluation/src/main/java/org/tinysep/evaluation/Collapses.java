@@ -23,7 +23,7 @@ final class Collapses {
 
     /** @return the at-home, awake intervals of {@code [from, to)} within the labelled span */
     static List<Interval> candidates(List<Label> labels, LocalDateTime from, LocalDateTime to) {
-        List<Label> valid = labels.stream().filter(l -> l.end().isAfter(l.start())).toList();
+        List<Label> valid = labels.stream().filter(Label::isProper).toList();
         LocalDateTime first = valid.stream().map(Label::start).min(LocalDateTime::compareTo).orElse(to);
         LocalDateTime last = valid.stream().map(Label::end).max(LocalDateTime::compareTo).orElse(from);
         LocalDateTime start = first.isAfter(from) ? first : from;
