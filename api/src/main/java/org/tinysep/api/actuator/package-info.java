@@ -1,8 +1,10 @@
 /**
- * Hardware-abstraction interfaces of actuators: simple and dimmable light, heater, speaker.
+ * Hardware-abstraction interfaces of actuators: simple and dimmable light, heater, speaker. 2.0: the three percent
+ * actuators share {@link org.tinysep.api.actuator.PercentActuator} ({@code level()}, {@code setLevel(Percent)}) in
+ * place of 1.0's {@code brightness()/setBrightness}, {@code potency()/setPotency}, {@code volume()/setVolume}.
  */
 @Export
-@Version("1.0.0")
+@Version("2.0.0")
 package org.tinysep.api.actuator;
 
 import org.osgi.annotation.bundle.Export;

@@ -10,7 +10,6 @@ import java.util.TreeSet;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.BiConsumer;
 import java.util.function.Consumer;
-import java.util.function.Function;
 import java.util.function.IntFunction;
 import java.util.function.Supplier;
 import org.junit.runner.RunWith;
@@ -21,6 +20,7 @@ import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.api.actuator.PercentActuator;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Parameter;
@@ -110,9 +110,9 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
      * @param control makes the node's status and command payload, e.g. {@code HeaterControl::new}
      * @param connect connects a listener to the provider that accepts each value heard
      */
-    protected <P> void assertPercentActuator(AmicaNodeType type, int address, String device, Class<P> provider,
-            IntFunction<AmicaPayload> control, String key, int code, BiConsumer<P, Consumer<Percent>> connect,
-            BiConsumer<P, Percent> set, Function<P, Optional<Percent>> value) throws Exception {
+    protected <P extends PercentActuator> void assertPercentActuator(AmicaNodeType type, int address, String device,
+            Class<P> provider, IntFunction<AmicaPayload> control, String key, int code,
+            BiConsumer<P, Consumer<Percent>> connect) throws Exception {
         try (AmicaNode node = node(1, address, type)) {
             P actuator = announce(node, device, provider, type.typeName());
             Device abstraction = device(device, node.id());
@@ -124,13 +124,13 @@ public abstract class AmicaTestSupport extends TinySepTestSupport {
             node.send(control.apply(25));
             awaitEquals("status reports", List.of(Percent.of(10), Percent.of(25)), () -> List.copyOf(heard));
 
-            set.accept(actuator, Percent.of(40));
+            actuator.setLevel(Percent.of(40));
             expectCommand(node, 5, code, 0, 40);
-            assertEquals("unchanged before the node confirms", Optional.of(Percent.of(25)), value.apply(actuator));
+            assertEquals("unchanged before the node confirms", Optional.of(Percent.of(25)), actuator.level());
             assertEquals("40%", parameter(abstraction, "pending"));
             node.send(control.apply(40));
             awaitEquals("confirmed", List.of(Percent.of(10), Percent.of(25), Percent.of(40)), () -> List.copyOf(heard));
-            assertEquals(Optional.of(Percent.of(40)), value.apply(actuator));
+            assertEquals(Optional.of(Percent.of(40)), actuator.level());
             assertEquals("", parameter(abstraction, "pending"));
 
             shell("tinysep:set " + abstraction.uid() + " " + key + " 70");

@@ -52,7 +52,7 @@ final class Lights {
                 continue;
             }
             if (p instanceof DimmableLightProvider d) {
-                d.setBrightness(brightness);
+                d.setLevel(brightness);
             } else if (p instanceof SimpleLightProvider s) {
                 s.switchLight(true);
             }
@@ -80,7 +80,7 @@ final class Lights {
                 continue;
             }
             if (p instanceof DimmableLightProvider d) {
-                d.setBrightness(Percent.ZERO);
+                d.setLevel(Percent.ZERO);
             } else if (p instanceof SimpleLightProvider s) {
                 s.switchLight(false);
             }
@@ -92,7 +92,7 @@ final class Lights {
 
     private static boolean isOn(Provider<?> p) {
         if (p instanceof DimmableLightProvider d) {
-            return d.brightness().map(b -> b.value() > 0).orElse(false);
+            return d.level().map(b -> b.value() > 0).orElse(false);
         }
         return p instanceof SimpleLightProvider s && s.isOn().orElse(false);
     }

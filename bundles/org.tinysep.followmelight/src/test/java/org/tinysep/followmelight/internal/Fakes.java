@@ -75,12 +75,12 @@ final class Fakes {
         }
 
         @Override
-        public Optional<Percent> brightness() {
+        public Optional<Percent> level() {
             return reported();
         }
 
         @Override
-        public void setBrightness(Percent b) {
+        public void setLevel(Percent b) {
             asked(b);
         }
     }

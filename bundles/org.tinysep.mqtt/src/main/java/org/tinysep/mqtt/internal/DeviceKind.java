@@ -3,6 +3,7 @@ package org.tinysep.mqtt.internal;
 import java.util.Optional;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.actuator.HeaterProvider;
+import org.tinysep.api.actuator.PercentActuator;
 import org.tinysep.api.actuator.SimpleLightProvider;
 import org.tinysep.api.actuator.SpeakerProvider;
 import org.tinysep.api.sensor.DoorProvider;
@@ -67,9 +68,7 @@ enum DeviceKind {
             }
             case BRIGHTNESS -> percent(((LightBrightnessProvider) p).brightness());
             case LIGHT -> ((SimpleLightProvider) p).isOn().orElse(null);
-            case DIMMABLE_LIGHT -> percent(((DimmableLightProvider) p).brightness());
-            case HEATER -> percent(((HeaterProvider) p).potency());
-            case SPEAKER -> percent(((SpeakerProvider) p).volume());
+            case DIMMABLE_LIGHT, HEATER, SPEAKER -> percent(((PercentActuator) p).level());
         };
     }
 

@@ -9,6 +9,7 @@ import java.util.function.ToIntFunction;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaProtocolException;
+import org.tinysep.api.actuator.PercentActuator;
 import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
@@ -25,7 +26,7 @@ import org.tinysep.device.support.Uids;
 
 /**
  * Abstracts one AmICA percent-actuator node. Its status payload of type {@code P} reports the value (a
- * percentage); {@link #request(Percent)} sends the same payload with the new value and returns at once. Thesis
+ * percentage); {@link #setLevel(Percent)} sends the same payload with the new value and returns at once. Thesis
  * actuator model: the value, its listeners and the event log change only when the node's next status report
  * confirms it; until then the request is shown as the read-only parameter {@code pending}. A request is given
  * up only when a report arrives {@link #PATIENCE} or more after it and still disagrees.
@@ -34,7 +35,7 @@ import org.tinysep.device.support.Uids;
  * @param <L> the listener type of the provider interface
  */
 public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends AbstractDevice
-        implements BusRadioAmicaListener {
+        implements BusRadioAmicaListener, PercentActuator {
 
     /** An AmICA actuator node reports its value every 10 s (thesis 3.9.1, docs/protocols/amica.md). */
     public static final Duration REPORT_INTERVAL = Duration.ofSeconds(10);
@@ -117,8 +118,9 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         setting.report(reported, at).ifPresent(v -> listeners.fire(l -> teller.tell(l, v, at)));
     }
 
-    /** Sends the command for {@code value}; the value changes when the node confirms it. */
-    protected final void request(Percent value) {
+    /** Sends the command for {@code value}; the level changes when the node confirms it. */
+    @Override
+    public final void setLevel(Percent value) {
         if (value == null) {
             throw new IllegalArgumentException(quantity + " must not be null");
         }
@@ -128,8 +130,9 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         }
     }
 
-    /** @return the value the node last reported, empty before its first report */
-    protected final Optional<Percent> value() {
+    /** @return the level the node last reported, empty before its first report */
+    @Override
+    public final Optional<Percent> level() {
         return setting.value();
     }
 
@@ -161,7 +164,7 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         if (!quantity.equals(key)) {
             throw unknownParameter(key);
         }
-        request(ParameterValues.percent(quantity, value));
+        setLevel(ParameterValues.percent(quantity, value));
     }
 
     @Override

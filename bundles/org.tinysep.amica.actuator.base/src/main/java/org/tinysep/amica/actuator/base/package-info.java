@@ -6,7 +6,7 @@
  * Actuator bundles do not import this package at run time: bnd copies the classes into each of them
  * ({@code -conditionalpackage: org.tinysep.device.support,org.tinysep.amica.actuator.base}).
  */
-@Version("2.0.0")
+@Version("3.0.0")
 package org.tinysep.amica.actuator.base;
 
 import org.osgi.annotation.versioning.Version;

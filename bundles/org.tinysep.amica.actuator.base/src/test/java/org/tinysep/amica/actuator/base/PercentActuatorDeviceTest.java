@@ -38,14 +38,6 @@ class PercentActuatorDeviceTest {
             super(context, bus, "Heater", NodeType.HEATER, "potency", HeaterControl.class, HeaterControl::percent,
                     HeaterControl::new, Heater.class, (listener, self, value, at) -> listener.changed(value, at));
         }
-
-        void setPotency(Percent value) {
-            request(value);
-        }
-
-        Optional<Percent> potency() {
-            return value();
-        }
     }
 
     interface PotencyListener {
@@ -72,7 +64,7 @@ class PercentActuatorDeviceTest {
 
     @Test
     void statusReportsBecomePotencyChangesAndOtherPayloadsAreIgnored() {
-        assertEquals(Optional.empty(), device.potency());
+        assertEquals(Optional.empty(), device.level());
         receive(new HeaterControl(30), 0);
         receive(new HeaterControl(30), 10);
         receive(new LightControl(90), 11);
@@ -81,25 +73,25 @@ class PercentActuatorDeviceTest {
         receive(new HeaterControl(75), 20);
 
         assertEquals(List.of("30%@0", "75%@20"), heard);
-        assertEquals(Optional.of(Percent.of(75)), device.potency());
+        assertEquals(Optional.of(Percent.of(75)), device.level());
         assertEquals(DeviceStatus.State.ONLINE, device.status().state());
         assertEquals(0, bus.sent.size());
         assertEquals("Heater 1.21", device.name());
     }
 
     @Test
-    void setPotencySendsTheExactCommandAndWaitsForTheNodesNextStatus() {
+    void setLevelSendsTheExactCommandAndWaitsForTheNodesNextStatus() {
         receive(new HeaterControl(0), 0);
-        device.setPotency(Percent.of(40));
+        device.setLevel(Percent.of(40));
 
         assertEquals(1, bus.sent.size());
         assertArrayEquals(new byte[] {5, 8, 0, 40}, bus.sent.get(0));
-        assertEquals(Optional.of(Percent.of(0)), device.potency(), "unchanged before the node confirms");
+        assertEquals(Optional.of(Percent.of(0)), device.level(), "unchanged before the node confirms");
         assertEquals("40%", parameter("pending"));
         assertEquals(List.of("0%@0"), heard);
 
         receive(new HeaterControl(40), 10);
-        assertEquals(Optional.of(Percent.of(40)), device.potency());
+        assertEquals(Optional.of(Percent.of(40)), device.level());
         assertEquals(List.of("0%@0", "40%@10"), heard);
         assertEquals("", parameter("pending"));
         assertEquals(List.of("potency 0%", "potency 40% requested", "potency 40% (confirmed)"),
@@ -115,7 +107,7 @@ class PercentActuatorDeviceTest {
                     () -> device.setParameter("potency", bad));
             assertEquals("potency must be a whole percentage 0..100, was '" + bad + "'", e.getMessage());
         }
-        assertThrows(IllegalArgumentException.class, () -> device.setPotency(null));
+        assertThrows(IllegalArgumentException.class, () -> device.setLevel(null));
         assertEquals(1, bus.sent.size(), "nothing sent for bad values");
         assertEquals("65%", parameter("pending"));
     }
@@ -123,7 +115,7 @@ class PercentActuatorDeviceTest {
     @Test
     void aCommandTheNodeDoesNotTakeIsGivenUpByAReportTwoIntervalsLater() {
         receive(new HeaterControl(10), 0);
-        device.setPotency(Percent.of(90)); // at T0
+        device.setLevel(Percent.of(90)); // at T0
         receive(new HeaterControl(10), 0);
         receive(new HeaterControl(10), 10);
         receive(new HeaterControl(10), 19);
@@ -138,7 +130,7 @@ class PercentActuatorDeviceTest {
     @Test
     void aBusRadioThatCannotSendIsADeviceStatusNotAnException() {
         bus.failure = new IllegalStateException("bus radio is closed");
-        device.setPotency(Percent.of(50));
+        device.setLevel(Percent.of(50));
         assertEquals(DeviceStatus.State.ERROR, device.status().state());
         assertEquals("", parameter("pending"));
     }

@@ -9,9 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.function.BiConsumer;
 import java.util.function.BiFunction;
-import java.util.function.Function;
 import java.util.function.IntFunction;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.actuator.base.testing.FakeBus;
@@ -29,9 +27,9 @@ import org.tinysep.device.support.testing.TestPlatform;
  * The unit test of one actuator bundle's wiring of {@link PercentActuatorDevice}, written once for the dimmable light,
  * the heater and the speaker (the shared model, confirmation and errors are tested in
  * {@code PercentActuatorDeviceTest}): its own control's reports are its value and reach its listeners, the other
- * AmICA percent controls' are not; its typed setter and its parameter send its control ({@code 5 code 0 A}), the other
- * actuators' parameters are refused. A bundle's test (shared through this module's test jar) names its device, its
- * control and its typed getter and setter, and connects a listener that calls {@link #hear}.
+ * AmICA percent controls' are not; {@code setLevel} and its parameter send its control ({@code 5 code 0 A}), the other
+ * actuators' parameters are refused. A bundle's test (shared through this module's test jar) names its device and its
+ * control, and connects a listener that calls {@link #hear}.
  *
  * @param <D> the bundle's device
  */
@@ -48,8 +46,6 @@ public abstract class PercentActuatorWiringContract<D extends PercentActuatorDev
     private final String label;
     private final String key;
     private final int code;
-    private final Function<D, Optional<Percent>> value;
-    private final BiConsumer<D, Percent> set;
     /** The device under test, on a fake bus of node {@code 1.21}. */
     protected final D device;
 
@@ -60,18 +56,13 @@ public abstract class PercentActuatorWiringContract<D extends PercentActuatorDev
      * @param label      the start of the device's name, e.g. {@code "Heater"}
      * @param key        its value's parameter key, e.g. {@code "potency"}: its control is the one of that key
      * @param code       its control's payload code, the second byte of {@code 5 code 0 A}
-     * @param value      its typed getter, e.g. {@code AmicaHeaterDevice::potency}
-     * @param set        its typed setter, e.g. {@code AmicaHeaterDevice::setPotency}
      */
     protected PercentActuatorWiringContract(String nodeType, String driverName,
-            BiFunction<DriverContext, BusRadioAmicaProvider, D> make, String label, String key, int code,
-            Function<D, Optional<Percent>> value, BiConsumer<D, Percent> set) {
+            BiFunction<DriverContext, BusRadioAmicaProvider, D> make, String label, String key, int code) {
         this.bus = new FakeBus("1.21", nodeType);
         this.label = label;
         this.key = key;
         this.code = code;
-        this.value = value;
-        this.set = set;
         this.device = make.apply(platform.context(driverName), bus);
     }
 
@@ -90,13 +81,13 @@ public abstract class PercentActuatorWiringContract<D extends PercentActuatorDev
         receive(CONTROLS.get(key).apply(75), 3);
 
         assertEquals(List.of("30%@0", "75%@3"), heard);
-        assertEquals(Optional.of(Percent.of(75)), value.apply(device));
+        assertEquals(Optional.of(Percent.of(75)), device.level());
         assertEquals(label + " 1.21", device.name());
     }
 
     @Test
-    void itsSetterAndItsParameterSendItsControl() {
-        set.accept(device, Percent.of(40));
+    void setLevelAndItsParameterSendItsControl() {
+        device.setLevel(Percent.of(40));
         device.setParameter(key, "65");
 
         assertEquals(2, bus.sent.size());

@@ -1,18 +1,16 @@
 package org.tinysep.amica.heater.internal;
 
-import java.util.Optional;
 import org.tinysep.amica.actuator.base.PercentActuatorDevice;
 import org.tinysep.amica.protocol.HeaterControl;
 import org.tinysep.api.actuator.HeaterListener;
 import org.tinysep.api.actuator.HeaterProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.DriverContext;
 
 /**
  * Abstracts one AmICA heater node: Heater Control status payloads (5 8 0 A) report the potency,
- * {@link #setPotency(Percent)} sends Heater Control A. The shared actuator model (a request waits for
+ * {@code setLevel} sends Heater Control A. The shared actuator model (a request waits for
  * the node's next report to confirm it) is {@link PercentActuatorDevice}.
  */
 final class AmicaHeaterDevice extends PercentActuatorDevice<HeaterControl, HeaterListener> implements HeaterProvider {
@@ -20,15 +18,5 @@ final class AmicaHeaterDevice extends PercentActuatorDevice<HeaterControl, Heate
     AmicaHeaterDevice(DriverContext context, BusRadioAmicaProvider bus) {
         super(context, bus, "Heater", NodeType.HEATER, "potency", HeaterControl.class, HeaterControl::percent, HeaterControl::new,
                 HeaterProvider.class, HeaterListener::potencyChanged);
-    }
-
-    @Override
-    public void setPotency(Percent potency) {
-        request(potency);
-    }
-
-    @Override
-    public Optional<Percent> potency() {
-        return value();
     }
 }
