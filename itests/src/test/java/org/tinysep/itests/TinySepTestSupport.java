@@ -274,6 +274,18 @@ public abstract class TinySepTestSupport {
         return text;
     }
 
+    /** @return the UDP port of the Time Controller's synchroniser (service property {@code tinysep.sync.port}) */
+    protected int syncPort() {
+        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
+        awaitService(Driver.class, filter, TIMEOUT);
+        try {
+            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
+                    .getProperty("tinysep.sync.port")).intValue();
+        } catch (Exception e) {
+            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
+        }
+    }
+
     /**
      * Waits for a service and returns it.
      *

@@ -30,7 +30,6 @@ import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.health.NodeHealthSource;
 import org.tinysep.api.health.SensorHealthProvider;
@@ -114,16 +113,6 @@ public class SensorHealthTest extends TinySepTestSupport {
         }
     }
 
-    private int syncPort() {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
-        try {
-            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
-                    .getProperty("tinysep.sync.port")).intValue();
-        } catch (Exception e) {
-            throw new AssertionError(e);
-        }
-    }
 
     private static String parameter(Device device, String key) {
         return device.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()

@@ -2,9 +2,6 @@ package org.tinysep.itests.time;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import org.osgi.framework.ServiceReference;
-import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.Driver;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.itests.TinySepTestSupport;
@@ -13,7 +10,6 @@ import org.tinysep.itests.TinySepTestSupport;
 abstract class TimeTestSupport extends TinySepTestSupport {
 
     static final String TIME_PID = "org.tinysep.timecontroller";
-    static final String SYNC_PORT_PROPERTY = "tinysep.sync.port";
 
     /** @return REAL or EXTERNAL */
     abstract String initialMode();
@@ -30,17 +26,6 @@ abstract class TimeTestSupport extends TinySepTestSupport {
         return Map.copyOf(TestSyncKey.timeConfig(mode));
     }
 
-    /** @return the synchroniser port: the TimeController Driver service property */
-    int syncPort() {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(" + SYNC_PORT_PROPERTY + "=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
-        try {
-            ServiceReference<?> ref = context.getServiceReferences(Driver.class.getName(), filter)[0];
-            return ((Number) ref.getProperty(SYNC_PORT_PROPERTY)).intValue();
-        } catch (Exception e) {
-            throw new AssertionError("no TimeController driver with " + SYNC_PORT_PROPERTY, e);
-        }
-    }
 
     TimeControllerProvider clock() {
         return awaitService(TimeControllerProvider.class, null, TIMEOUT);

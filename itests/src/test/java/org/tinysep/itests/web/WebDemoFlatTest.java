@@ -23,9 +23,8 @@ import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerClass;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.KeepAlive;
-import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.Driver;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.LockStepTestSupport;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.simulator.cli.Run;
 
@@ -61,16 +60,14 @@ public class WebDemoFlatTest extends WebTestSupport {
     @Override
     protected List<Option> options() {
         List<Option> o = super.options();
-        o.addAll(sunSpotBundles(5));
-        o.add(reactorBundle("org.tinysep.simulator", 5));
+        o.addAll(LockStepTestSupport.simulatorBundles());
         return o;
     }
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.timecontroller", TestSyncKey.timeConfig("EXTERNAL"));
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        LockStepTestSupport.putLockStepTime(configs);
         configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000"));
         try {
             Path house = Files.createTempDirectory("tinysep-web-demo-house-").resolve("house.xml");
@@ -105,16 +102,6 @@ public class WebDemoFlatTest extends WebTestSupport {
         return file;
     }
 
-    private int syncPort() {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
-        try {
-            return ((Number) context.getServiceReferences(Driver.class.getName(), filter)[0]
-                    .getProperty("tinysep.sync.port")).intValue();
-        } catch (Exception e) {
-            throw new AssertionError("no TimeController driver with tinysep.sync.port", e);
-        }
-    }
 
     private Path scenarioFile;
 
