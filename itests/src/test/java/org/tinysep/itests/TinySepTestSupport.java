@@ -237,6 +237,13 @@ public abstract class TinySepTestSupport {
         return all;
     }
 
+    /** @return {@code base} (e.g. {@code super.applications()}) and then {@code more}, in a new list */
+    protected static List<String> plus(List<String> base, String... more) {
+        List<String> all = new ArrayList<>(base);
+        all.addAll(List.of(more));
+        return all;
+    }
+
     /** @return provisioning options for every Sun SPOT bundle at {@code startLevel} */
     protected static List<Option> sunSpotBundles(int startLevel) {
         return SUN_SPOT.stream().map(b -> reactorBundle(b, startLevel)).toList();

@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.Test;
@@ -50,9 +49,7 @@ public class AlertEscalationTest extends AalTestSupport {
 
     @Override
     protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.add("org.tinysep.alerts");
-        return all;
+        return plus(super.applications(), "org.tinysep.alerts");
     }
 
     @Override

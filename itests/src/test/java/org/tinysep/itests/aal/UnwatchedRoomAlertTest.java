@@ -9,7 +9,6 @@ import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.Test;
@@ -41,9 +40,7 @@ public class UnwatchedRoomAlertTest extends AalTestSupport {
 
     @Override
     protected List<String> applications() {
-        List<String> apps = new ArrayList<>(super.applications());
-        apps.add("org.tinysep.sensorhealth");
-        return apps;
+        return plus(super.applications(), "org.tinysep.sensorhealth");
     }
 
     @Override

@@ -3,11 +3,7 @@ package org.tinysep.itests.demo;
 import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
-import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -46,7 +42,6 @@ import org.tinysep.simulator.cli.Run;
 @ExamReactorStrategy(PerClass.class)
 public class SimulatedDemoDayTest extends LockStepTestSupport {
 
-    private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
 
     /**
      * Flat Occupancy. demo-day: Anna (asleep at home) wakes 06:45 -> OCCUPIED with her first motion; leaves 08:30
@@ -88,30 +83,10 @@ public class SimulatedDemoDayTest extends LockStepTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
-        configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000")); // the whole day's event log
-        try {
-            Path house = Files.createTempDirectory("tinysep-demo-house-").resolve("house.xml");
-            Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
-            configs.put("org.tinysep.houseinformation", Map.of("file", house.toString()));
-            configs.put("org.tinysep.houseinformation.placement", Map.of("placements", placements()));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        DemoFlat.configure(configs, "tinysep-demo-house-");
         return configs;
     }
 
-    /** {@code address=room} for every node of flat A's nodes.txt except pet collars (as scripts/demo-flat.sh). */
-    private static String placements() throws IOException {
-        List<String> entries = new ArrayList<>();
-        for (String line : Files.readAllLines(FLAT_A.resolve("nodes.txt"))) {
-            String[] f = line.strip().split("\\|", -1);
-            if (line.strip().startsWith("#") || f.length < 5 || (f.length > 5 && f[5].contains("agent="))) {
-                continue;
-            }
-            entries.add(f[2].strip() + "=" + f[4].strip());
-        }
-        return String.join(", ", entries);
-    }
 
     /** Flat A: 7 movement sensors (6 AmICA, 1 Sun SPOT), 4 simple and 2 dimmable lights, all with their consumers. */
     private static boolean connected(Set<String> graph) {

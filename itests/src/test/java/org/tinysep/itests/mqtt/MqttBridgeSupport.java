@@ -1,6 +1,5 @@
 package org.tinysep.itests.mqtt;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.ops4j.pax.exam.Option;
@@ -15,9 +14,7 @@ public abstract class MqttBridgeSupport extends WebTestSupport {
 
     @Override
     protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.addAll(List.of("org.tinysep.alerts", "org.tinysep.sensorhealth", "org.tinysep.mqtt"));
-        return all;
+        return plus(super.applications(), "org.tinysep.alerts", "org.tinysep.sensorhealth", "org.tinysep.mqtt");
     }
 
     @Override

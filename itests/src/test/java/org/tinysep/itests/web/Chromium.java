@@ -152,6 +152,43 @@ public final class Chromium implements AutoCloseable {
         return m.find() ? unquote(m.group(1)) : "undefined";
     }
 
+    /**
+     * The page's weight and time to first render, from the browser's performance entries: {@code pageBytes} and
+     * {@code pageFiles} (the page and its static files), {@code apiBytes} (API answers, not streams),
+     * {@code firstContentfulPaintMs}, {@code eventsShownMs} (the event log page's own mark) and
+     * {@code domContentLoadedMs}.
+     *
+     * @return those figures as JSON text
+     */
+    public String pageMetrics() {
+        return eval("(() => { const n = performance.getEntriesByType('navigation')[0];"
+                + " const r = performance.getEntriesByType('resource');"
+                + " const stat = r.filter(e => !e.name.includes('/api/'));"
+                + " const api = r.filter(e => e.name.includes('/api/') && !e.name.includes('/api/stream/'));"
+                + " const paint = performance.getEntriesByName('first-contentful-paint')[0];"
+                + " const shown = performance.getEntriesByName('events-shown')[0];"
+                + " return {pageBytes: n.transferSize + stat.reduce((s, e) => s + e.transferSize, 0),"
+                + " pageFiles: 1 + stat.length, apiBytes: api.reduce((s, e) => s + e.transferSize, 0),"
+                + " firstContentfulPaintMs: paint ? Math.round(paint.startTime) : null,"
+                + " eventsShownMs: shown ? Math.round(shown.startTime) : null,"
+                + " domContentLoadedMs: Math.round(n.domContentLoadedEventEnd)}; })()");
+    }
+
+    /**
+     * After a failed step of a browser test: saves a screenshot as {@code target/<folder>/failure-<step>.png}.
+     *
+     * @return what to log: where the screenshot is, or that none could be taken
+     */
+    public String failureScreenshot(String folder, String step) {
+        Path file = Path.of("target", folder, "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
+        try {
+            screenshot(file);
+            return "screenshot: " + file;
+        } catch (AssertionError | RuntimeException e) {
+            return "no screenshot could be taken (" + e.getMessage() + ")";
+        }
+    }
+
     /** Waits until {@code condition} (JavaScript) is true in the page, checking every 100 ms. */
     public void waitFor(String condition, Duration timeout, String what) throws InterruptedException {
         long deadline = System.nanoTime() + timeout.toNanos();

@@ -5,7 +5,6 @@ import static org.junit.Assert.assertTrue;
 
 import java.net.http.HttpResponse;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.tinysep.amica.protocol.AmicaNodeType;
@@ -36,10 +35,7 @@ public class WebAlertsTest extends WebTestSupport {
 
     @Override
     protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.add("org.tinysep.alerts");
-        all.add("org.tinysep.sensorhealth");
-        return all;
+        return plus(super.applications(), "org.tinysep.alerts", "org.tinysep.sensorhealth");
     }
 
     /** A movement node promises a report every 2 s: OFFLINE after 3 missed reports (6 s of silence). */

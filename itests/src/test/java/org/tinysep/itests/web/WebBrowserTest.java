@@ -219,13 +219,7 @@ public class WebBrowserTest extends WebTestSupport {
                         WAIT, "the activity plot of the last 7 days");
                 shot(browser, "caregiver");
             } catch (AssertionError | RuntimeException e) {
-                Path file = Path.of("target", "web-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
-                try {
-                    browser.screenshot(file);
-                    log.error("Browser test failed at '{}'; screenshot: {}", step, file);
-                } catch (AssertionError | RuntimeException ignored) {
-                    log.error("Browser test failed at '{}'; no screenshot could be taken", step);
-                }
+                log.error("Browser test failed at '{}'; {}", step, browser.failureScreenshot("web-screenshots", step));
                 throw e;
             }
         }
@@ -233,17 +227,7 @@ public class WebBrowserTest extends WebTestSupport {
 
     /** Logs the event log page's weight and time to first render (written to target/web-metrics.txt too). */
     private void metrics(Chromium browser) throws Exception {
-        String json = browser.eval("(() => { const n = performance.getEntriesByType('navigation')[0];"
-                + " const r = performance.getEntriesByType('resource');"
-                + " const stat = r.filter(e => !e.name.includes('/api/'));"
-                + " const api = r.filter(e => e.name.includes('/api/') && !e.name.includes('/api/stream/'));"
-                + " const paint = performance.getEntriesByName('first-contentful-paint')[0];"
-                + " const shown = performance.getEntriesByName('events-shown')[0];"
-                + " return {pageBytes: n.transferSize + stat.reduce((s, e) => s + e.transferSize, 0),"
-                + " pageFiles: 1 + stat.length, apiBytes: api.reduce((s, e) => s + e.transferSize, 0),"
-                + " firstContentfulPaintMs: paint ? Math.round(paint.startTime) : null,"
-                + " eventsShownMs: shown ? Math.round(shown.startTime) : null,"
-                + " domContentLoadedMs: Math.round(n.domContentLoadedEventEnd)}; })()");
+        String json = browser.pageMetrics();
         log.info("Event log page: {}", json);
         System.out.println("WebBrowserTest: event log page (test flat): " + json);
         Files.createDirectories(Path.of("target"));

@@ -3,7 +3,6 @@ package org.tinysep.itests.web;
 import static org.junit.Assert.assertTrue;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -25,6 +24,7 @@ import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.LockStepTestSupport;
+import org.tinysep.itests.demo.DemoFlat;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.simulator.cli.Run;
 
@@ -44,17 +44,13 @@ import org.tinysep.simulator.cli.Run;
 @ExamReactorStrategy(PerClass.class)
 public class WebDemoFlatTest extends WebTestSupport {
 
-    private static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
     private static final Duration WAIT = Duration.ofSeconds(60);
     /** A window sensor the simulator does not play: it reports a low battery once, then falls silent. */
     private static final String DYING_NODE = "1.21";
 
     @Override
     protected List<String> applications() {
-        List<String> all = new ArrayList<>(super.applications());
-        all.add("org.tinysep.alerts");
-        all.add("org.tinysep.sensorhealth");
-        return all;
+        return plus(super.applications(), "org.tinysep.alerts", "org.tinysep.sensorhealth");
     }
 
     @Override
@@ -68,36 +64,15 @@ public class WebDemoFlatTest extends WebTestSupport {
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
         LockStepTestSupport.putLockStepTime(configs);
-        configs.put("org.tinysep.runtime", Map.of("eventCapacity", "500000"));
-        try {
-            Path house = Files.createTempDirectory("tinysep-web-demo-house-").resolve("house.xml");
-            Files.copy(FLAT_A.resolve("house.xml"), house, StandardCopyOption.REPLACE_EXISTING);
-            configs.put("org.tinysep.houseinformation", Map.of("file", house.toString()));
-            configs.put("org.tinysep.houseinformation.placement", Map.of("placements", placements()));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
+        DemoFlat.configure(configs, "tinysep-web-demo-house-", DYING_NODE + "=Bathroom");
         return configs;
     }
 
-    /** {@code address=room} for every node of flat A except pet collars (as scripts/demo-flat.sh). */
-    private static String placements() throws IOException {
-        List<String> entries = new ArrayList<>();
-        for (String line : Files.readAllLines(FLAT_A.resolve("nodes.txt"))) {
-            String[] f = line.strip().split("\\|", -1);
-            if (line.strip().startsWith("#") || f.length < 5 || (f.length > 5 && f[5].contains("agent="))) {
-                continue;
-            }
-            entries.add(f[2].strip() + "=" + f[4].strip());
-        }
-        entries.add(DYING_NODE + "=Bathroom");
-        return String.join(", ", entries);
-    }
 
     /** demo-day with the Study's motion sensor's battery running empty at 14:30 (so the Study is unmonitored). */
     private static Path scenario() throws IOException {
         Path file = Files.createTempDirectory("tinysep-web-demo-scenario-").resolve("demo-day-battery.txt");
-        String demo = Files.readString(FLAT_A.resolve("..").resolve("..").resolve("scenarios").resolve("demo-day.txt"));
+        String demo = Files.readString(DemoFlat.FLAT_A.resolve("..").resolve("..").resolve("scenarios").resolve("demo-day.txt"));
         Files.writeString(file, demo + "\n14:30 battery study-motion off    # the web console test: the Study unmonitored\n");
         return file;
     }
@@ -189,13 +164,7 @@ public class WebDemoFlatTest extends WebTestSupport {
                         "the activity plot, the open alert with its Acknowledge button, the sensors offline and the low battery");
                 shot(browser, "caregiver", 1250); // the alerts and the sensors below the cards
             } catch (AssertionError | RuntimeException e) {
-                Path file = Path.of("target", "web-demo-screenshots", "failure-" + step.replace(' ', '-') + ".png").toAbsolutePath();
-                try {
-                    browser.screenshot(file);
-                    log.error("Demo flat browser test failed at '{}'; screenshot: {}", step, file);
-                } catch (AssertionError | RuntimeException ignored) {
-                    log.error("Demo flat browser test failed at '{}'; no screenshot could be taken", step);
-                }
+                log.error("Demo flat browser test failed at '{}'; {}", step, browser.failureScreenshot("web-demo-screenshots", step));
                 throw e;
             }
         }
@@ -208,17 +177,7 @@ public class WebDemoFlatTest extends WebTestSupport {
 
     /** The event log page with the demo day's history: weight and time to first render, printed. */
     private void metrics(Chromium browser) {
-        String json = browser.eval("(() => { const n = performance.getEntriesByType('navigation')[0];"
-                + " const r = performance.getEntriesByType('resource');"
-                + " const stat = r.filter(e => !e.name.includes('/api/'));"
-                + " const api = r.filter(e => e.name.includes('/api/') && !e.name.includes('/api/stream/'));"
-                + " const paint = performance.getEntriesByName('first-contentful-paint')[0];"
-                + " const shown = performance.getEntriesByName('events-shown')[0];"
-                + " return {pageBytes: n.transferSize + stat.reduce((s, e) => s + e.transferSize, 0),"
-                + " pageFiles: 1 + stat.length, apiBytes: api.reduce((s, e) => s + e.transferSize, 0),"
-                + " firstContentfulPaintMs: paint ? Math.round(paint.startTime) : null,"
-                + " eventsShownMs: shown ? Math.round(shown.startTime) : null,"
-                + " domContentLoadedMs: Math.round(n.domContentLoadedEventEnd)}; })()");
+        String json = browser.pageMetrics();
         System.out.println("WebDemoFlatTest: event log page (demo flat): " + json);
         log.info("Event log page on the demo flat: {}", json);
         assertTrue(json, json.contains("\"firstContentfulPaintMs\":"));
