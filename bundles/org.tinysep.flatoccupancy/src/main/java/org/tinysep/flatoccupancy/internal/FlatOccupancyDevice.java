@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
+import java.util.function.Supplier;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
@@ -112,44 +114,22 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         if (first && !present) {
             return;
         }
-        Optional<Occupancy> change;
-        Optional<Instant> wentBack;
-        Instant now = now();
-        synchronized (logic) {
-            wentBack = logic.rebase(now);
-            change = source.kind().holdsPerson() ? logic.holdsPerson(source.deviceUid(), present, first, at)
-                    : first ? Optional.empty() : logic.indoorActivity(at);
-        }
-        clockWentBack(wentBack, now);
+        Optional<Occupancy> change = step(now(), l -> source.kind().holdsPerson()
+                ? l.holdsPerson(source.deviceUid(), present, first, at)
+                : first ? Optional.empty() : l.indoorActivity(at));
         announce(change, at, source.kind().name().toLowerCase() + " " + source.deviceUid() + " "
                 + (present ? "on" : "off"));
     }
 
     /** Indoor activity other than motion (an inner door, a window, a contact). */
     private void activity(Instant at, String what) {
-        Optional<Occupancy> change;
-        Optional<Instant> wentBack;
-        Instant now = now();
-        synchronized (logic) {
-            wentBack = logic.rebase(now);
-            change = logic.indoorActivity(at);
-        }
-        clockWentBack(wentBack, now);
-        announce(change, at, what);
+        announce(step(now(), l -> l.indoorActivity(at)), at, what);
     }
 
     @Override
     public void movementReported(MovementProvider source, MovementEvent movement) {
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
-            Optional<Occupancy> change;
-            Optional<Instant> wentBack;
-            Instant now = now();
-            synchronized (logic) {
-                wentBack = logic.rebase(now); // the platform's time: a late report is no clock step
-                change = logic.motion(movement.at());
-            }
-            clockWentBack(wentBack, now);
-            announce(change, movement.at(), "motion from " + source.deviceUid());
+            announce(step(now(), l -> l.motion(movement.at())), movement.at(), "motion from " + source.deviceUid());
         }
     }
 
@@ -168,14 +148,8 @@ final class FlatOccupancyDevice extends WholeFlatDevice
             }
             return;
         }
-        Optional<Occupancy> change;
-        Optional<Instant> wentBack;
-        Instant now = now();
-        synchronized (logic) {
-            wentBack = logic.rebase(now);
-            change = state == OpenState.OPEN ? logic.outerDoorOpened(at) : logic.outerDoorClosed(at);
-        }
-        clockWentBack(wentBack, now);
+        Optional<Occupancy> change = step(now(),
+                l -> state == OpenState.OPEN ? l.outerDoorOpened(at) : l.outerDoorClosed(at));
         if (state == OpenState.CLOSED) {
             saveBackup(); // a pending leave check survives a crash
         }
@@ -190,14 +164,25 @@ final class FlatOccupancyDevice extends WholeFlatDevice
 
     /** Advances the algorithm's clock; called every second by the driver. */
     void tick(Instant now) {
+        announce(step(now, l -> l.tick(now)), now,
+                "no indoor activity for " + leaveTimeout.toSeconds() + " s after the door closed");
+    }
+
+    /**
+     * One step of the algorithm at the platform's time {@code now} (not the report's: a late report is no clock
+     * step): re-bases the logic's times first if the clock went back, and says so.
+     *
+     * @return the decision's change, if any
+     */
+    private Optional<Occupancy> step(Instant now, Function<OccupancyLogic, Optional<Occupancy>> step) {
         Optional<Occupancy> change;
         Optional<Instant> wentBack;
         synchronized (logic) {
             wentBack = logic.rebase(now);
-            change = logic.tick(now);
+            change = step.apply(logic);
         }
         clockWentBack(wentBack, now);
-        announce(change, now, "no indoor activity for " + leaveTimeout.toSeconds() + " s after the door closed");
+        return change;
     }
 
     private void announce(Optional<Occupancy> change, Instant at, String reason) {
@@ -277,7 +262,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
     }
 
     /** Where the device reads the rooms that cannot be watched now (the driver's Sensor Health, optional). */
-    void unmonitored(java.util.function.Supplier<String> rooms) {
+    void unmonitored(Supplier<String> rooms) {
         unmonitored = rooms;
     }
 
