@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.testing.MutableClock;
 
 /** The log commands' output is a contract (integration tests parse it), and so are their options. */
 class HistoryCommandsTest {

@@ -19,6 +19,7 @@ import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.LogQuery;
 import org.tinysep.api.log.PacketEntry;
+import org.tinysep.device.support.testing.MutableClock;
 
 /** The log services keep their history across a restart (a new service object on the same folder). */
 class LogServicesHistoryTest {

@@ -3,15 +3,14 @@ package org.tinysep.web.api.internal;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.time.Clock;
 import java.time.Duration;
 import java.time.Instant;
-import java.time.ZoneOffset;
 import org.junit.jupiter.api.Test;
+import org.tinysep.device.support.testing.MutableClock;
 
 class LoginLimiterTest {
 
-    private final MutableClock clock = new MutableClock();
+    private final MutableClock clock = new MutableClock(Instant.parse("2026-11-25T12:00:00Z"));
 
     @Test
     void aClientIsStoppedAfterTooManyFailuresUntilTheWindowHasPassed() {
@@ -44,28 +43,5 @@ class LoginLimiterTest {
         limiter.succeeded("a");
         limiter.failed("a");
         assertEquals(Duration.ZERO, limiter.waitFor("a"));
-    }
-
-    static final class MutableClock extends Clock {
-        private Instant now = Instant.parse("2026-11-25T12:00:00Z");
-
-        void advance(Duration d) {
-            now = now.plus(d);
-        }
-
-        @Override
-        public Instant instant() {
-            return now;
-        }
-
-        @Override
-        public java.time.ZoneId getZone() {
-            return ZoneOffset.UTC;
-        }
-
-        @Override
-        public Clock withZone(java.time.ZoneId zone) {
-            return this;
-        }
     }
 }

@@ -5,12 +5,14 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.time.Instant;
 import org.junit.jupiter.api.Test;
+import org.tinysep.device.support.testing.MutableClock;
 import org.tinysep.web.api.internal.Sessions.Session;
 
 class SessionsTest {
 
-    private final LoginLimiterTest.MutableClock clock = new LoginLimiterTest.MutableClock();
+    private final MutableClock clock = new MutableClock(Instant.parse("2026-11-25T12:00:00Z"));
 
     @Test
     void aSessionEndsAfterItsIdleTimeOrOnLogout() {

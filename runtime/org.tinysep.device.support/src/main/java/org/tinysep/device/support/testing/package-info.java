@@ -1,5 +1,8 @@
-/** Test doubles of bus devices for the unit tests of abstraction devices; never part of a deployed bundle. */
-@Version("1.2.0")
+/**
+ * Test doubles of bus devices for the unit tests of abstraction devices, and a {@link
+ * org.tinysep.device.support.testing.MutableClock} (1.3.0); never part of a deployed bundle.
+ */
+@Version("1.3.0")
 package org.tinysep.device.support.testing;
 
 import org.osgi.annotation.versioning.Version;
