@@ -13,11 +13,11 @@ import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.api.service.HouseInformationListener;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
+import org.tinysep.device.support.testing.FakeHouse;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
@@ -172,46 +172,6 @@ class InactivityDeviceTest {
     }
 
     static HouseInformationProvider house(Room... rooms) {
-        class House extends Fakes.Base<HouseInformationListener> implements HouseInformationProvider {
-            House() {
-                super("house");
-            }
-
-            @Override
-            public List<Room> rooms() {
-                return List.of(rooms);
-            }
-
-            @Override
-            public Optional<Room> room(String uid) {
-                return rooms().stream().filter(r -> r.uid().equals(uid)).findFirst();
-            }
-
-            @Override
-            public Room addRoom(String name, String type) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public Room updateRoom(String uid, String name, String type) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public void link(String roomUid, String otherRoomUid) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public void unlink(String roomUid, String otherRoomUid) {
-                throw new UnsupportedOperationException();
-            }
-
-            @Override
-            public boolean removeRoom(String uid) {
-                throw new UnsupportedOperationException();
-            }
-        }
-        return new House();
+        return new FakeHouse(rooms);
     }
 }

@@ -13,6 +13,7 @@ import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.Room;
+import org.tinysep.device.support.testing.FakeHouse;
 
 /** A device's backup (docs/backup.md): what the snapshot holds and how a saved one is applied. */
 class DeviceBackupTest {

@@ -10,6 +10,7 @@ import java.time.Instant;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.Room;
+import org.tinysep.device.support.testing.FakeHouse;
 
 /** The {@code room} parameter every placeable device has. */
 class RoomParameterTest {

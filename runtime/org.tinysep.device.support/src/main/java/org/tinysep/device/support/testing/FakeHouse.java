@@ -1,4 +1,4 @@
-package org.tinysep.device.support;
+package org.tinysep.device.support.testing;
 
 import java.time.Instant;
 import java.util.ArrayList;
@@ -7,18 +7,28 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import org.tinysep.api.device.Connection;
 import org.tinysep.api.service.HouseInformationListener;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
 
-/** An in-memory fake of the HouseInformationProvider contract (no links, no persistence). */
-final class FakeHouse implements HouseInformationProvider {
+/**
+ * An in-memory House Information for unit tests (no links, no persistence): {@link #add}, {@link #updateRoom} and
+ * {@link #removeRoom} change the rooms and tell the listeners; adding a room by name and linking are unsupported.
+ */
+public final class FakeHouse extends FakeProvider<HouseInformationListener> implements HouseInformationProvider {
 
     private final Map<String, Room> rooms = new LinkedHashMap<>();
-    private final Listeners<HouseInformationListener> listeners = new Listeners<>("house");
 
-    Room add(String uid, String name) {
+    /** @param initial the rooms the house starts with (no listener is told about them) */
+    public FakeHouse(Room... initial) {
+        super("house");
+        for (Room r : initial) {
+            rooms.put(r.uid(), r);
+        }
+    }
+
+    /** Adds a room of type {@code Room} and tells the listeners. */
+    public Room add(String uid, String name) {
         Room r = new Room(uid, name, "Room", Set.of());
         rooms.put(uid, r);
         changed();
@@ -27,17 +37,7 @@ final class FakeHouse implements HouseInformationProvider {
 
     private void changed() {
         List<Room> all = rooms();
-        listeners.fire(l -> l.houseChanged(this, all, Instant.EPOCH));
-    }
-
-    @Override
-    public String deviceUid() {
-        return "house";
-    }
-
-    @Override
-    public Connection connect(HouseInformationListener listener) {
-        return listeners.add(listener);
+        List.copyOf(listeners).forEach(l -> l.houseChanged(this, all, Instant.EPOCH));
     }
 
     @Override
