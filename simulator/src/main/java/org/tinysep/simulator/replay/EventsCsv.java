@@ -34,33 +34,25 @@ public final class EventsCsv {
     }
 
     static List<SensorEvent> parse(List<String> lines, String name) throws ReplayFormatException {
-        if (lines.isEmpty() || !stripBom(lines.get(0)).strip().equals(HEADER)) {
-            throw new ReplayFormatException(name, 1, "expected the header '" + HEADER + "'");
-        }
         List<SensorEvent> events = new ArrayList<>();
-        LocalDateTime previous = null;
-        for (int i = 1; i < lines.size(); i++) {
-            if (lines.get(i).isBlank()) {
-                continue;
-            }
-            String[] f = Csv.fields(lines.get(i), 5, HEADER, name, i + 1);
-            LocalDateTime time = Csv.time(f[0], name, i + 1);
+        Csv.rows(lines, HEADER, name, (f, line) -> {
+            LocalDateTime time = Csv.time(f[0], name, line);
+            LocalDateTime previous = events.isEmpty() ? null : events.get(events.size() - 1).time();
             if (previous != null && time.isBefore(previous)) {
-                throw new ReplayFormatException(name, i + 1, "time " + f[0] + " is earlier than the row before ("
+                throw new ReplayFormatException(name, line, "time " + f[0] + " is earlier than the row before ("
                         + previous + "); rows must be in time order");
             }
             if (f[1].isEmpty()) {
-                throw new ReplayFormatException(name, i + 1, "sensor name is empty");
+                throw new ReplayFormatException(name, line, "sensor name is empty");
             }
             Kind kind;
             try {
                 kind = Kind.parse(f[3]);
             } catch (IllegalArgumentException e) {
-                throw new ReplayFormatException(name, i + 1, e.getMessage());
+                throw new ReplayFormatException(name, line, e.getMessage());
             }
-            events.add(new SensorEvent(time, f[1], f[2], kind, value(f[4], name, i + 1)));
-            previous = time;
-        }
+            events.add(new SensorEvent(time, f[1], f[2], kind, value(f[4], name, line)));
+        });
         return events;
     }
 
@@ -73,9 +65,7 @@ public final class EventsCsv {
      * @throws IllegalArgumentException if events are out of time order or a name cannot be written unquoted
      */
     public static void write(List<SensorEvent> events, Path file) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
-            w.write(HEADER);
-            w.write('\n');
+        try (BufferedWriter w = Csv.writer(file, HEADER)) {
             LocalDateTime previous = null;
             for (SensorEvent e : events) {
                 if (previous != null && e.time().isBefore(previous)) {
@@ -97,9 +87,5 @@ public final class EventsCsv {
             default:
                 throw new ReplayFormatException(name, line, "bad value '" + v + "', expected ON, OFF, OPEN or CLOSE");
         }
-    }
-
-    static String stripBom(String s) {
-        return s.startsWith("\uFEFF") ? s.substring(1) : s;
     }
 }

@@ -32,20 +32,13 @@ public final class LabelsCsv {
     }
 
     static List<Label> parse(List<String> lines, String name) throws ReplayFormatException {
-        if (lines.isEmpty() || !EventsCsv.stripBom(lines.get(0)).strip().equals(HEADER)) {
-            throw new ReplayFormatException(name, 1, "expected the header '" + HEADER + "'");
-        }
         List<Label> labels = new ArrayList<>();
-        for (int i = 1; i < lines.size(); i++) {
-            if (lines.get(i).isBlank()) {
-                continue;
-            }
-            String[] f = Csv.fields(lines.get(i), 4, HEADER, name, i + 1);
+        Csv.rows(lines, HEADER, name, (f, line) -> {
             if (f[2].isEmpty()) {
-                throw new ReplayFormatException(name, i + 1, "activity is empty");
+                throw new ReplayFormatException(name, line, "activity is empty");
             }
-            labels.add(new Label(Csv.time(f[0], name, i + 1), Csv.time(f[1], name, i + 1), f[2], f[3]));
-        }
+            labels.add(new Label(Csv.time(f[0], name, line), Csv.time(f[1], name, line), f[2], f[3]));
+        });
         return labels;
     }
 
@@ -56,9 +49,7 @@ public final class LabelsCsv {
      * @throws IllegalArgumentException if a name cannot be written unquoted
      */
     public static void write(List<Label> labels, Path file) throws IOException {
-        try (BufferedWriter w = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
-            w.write(HEADER);
-            w.write('\n');
+        try (BufferedWriter w = Csv.writer(file, HEADER)) {
             for (Label l : labels) {
                 w.write(Csv.format(l.start()) + "," + Csv.format(l.end()) + ","
                         + Csv.check(l.activity(), "activity") + ","

@@ -29,7 +29,7 @@ final class MappingParser {
 
     SensorMapping parse(List<String> lines) throws ReplayFormatException {
         for (line = 1; line <= lines.size(); line++) {
-            String text = EventsCsv.stripBom(lines.get(line - 1)).strip();
+            String text = Csv.stripBom(lines.get(line - 1)).strip();
             if (text.isEmpty() || text.startsWith("#")) {
                 continue;
             }
