@@ -4,12 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailDelivery.Outcome;
 import org.tinysep.api.service.MailManagerProvider;
@@ -19,41 +16,29 @@ import org.tinysep.api.service.MailManagerProvider;
  * {@code delivery(id)} / {@code deliveries()} tell what became of it (sent, retrying, failed, only logged), against
  * a real SMTP server ({@link RefusingSmtpServer}).
  */
-class DeliveryOutcomeTest {
-
-    @TempDir
-    Path spool;
-    private final MailHarness h = new MailHarness();
-
-    @AfterEach
-    void tearDown() {
-        h.close();
-    }
+class DeliveryOutcomeTest extends RefusingServerFixture {
 
     @Test
     void eachMessageSaysWhetherItWasSentIsRetriedOrFailed() throws Exception {
-        try (RefusingSmtpServer server = new RefusingSmtpServer()) {
-            Map<String, Object> c = MailHarness.smtp(server.port(), spool);
-            c.put("retryInitialSeconds", 60);
-            c.put("retryMaxSeconds", 60);
-            MailManagerProvider mail = h.start(c).provider();
-            assertEquals(List.of("carer@care.test", "family@kin.test"), mail.recipients());
+        config.put("retryInitialSeconds", 60);
+        config.put("retryMaxSeconds", 60);
+        MailManagerProvider mail = h.start(config).provider();
+        assertEquals(List.of("carer@care.test", "family@kin.test"), mail.recipients());
 
-            String sent = mail.sendTo(List.of("second@care.test"), "escalated", "body");
-            String failed = mail.sendTo(List.of("nobody@care.test"), "to nobody", "body");
-            String retrying = mail.sendTo(List.of("full@care.test"), "to a full mailbox", "body");
-            MailHarness.await("three outcomes", () -> outcome(mail, sent) == Outcome.SENT
-                    && outcome(mail, failed) == Outcome.FAILED && outcome(mail, retrying) == Outcome.RETRYING);
-            assertEquals(List.of("second@care.test"), server.acceptedRecipients, "only to the given address");
-            MailDelivery f = mail.delivery(failed).orElseThrow();
-            assertTrue(f.detail().contains("NOT delivered to nobody@care.test") && f.detail().contains("550"),
-                    f.detail());
-            MailDelivery r = mail.delivery(retrying).orElseThrow();
-            assertTrue(r.detail().contains("delivery failed temporarily") && r.detail().contains("552"), r.detail());
-            assertEquals(List.of("full@care.test"), r.to());
-            assertEquals(List.of(sent, failed, retrying), mail.deliveries().stream().map(MailDelivery::id).toList());
-            assertThrows(IllegalArgumentException.class, () -> mail.sendTo(List.of("not an address"), "s", "b"));
-        }
+        String sent = mail.sendTo(List.of("second@care.test"), "escalated", "body");
+        String failed = mail.sendTo(List.of("nobody@care.test"), "to nobody", "body");
+        String retrying = mail.sendTo(List.of("full@care.test"), "to a full mailbox", "body");
+        MailHarness.await("three outcomes", () -> outcome(mail, sent) == Outcome.SENT
+                && outcome(mail, failed) == Outcome.FAILED && outcome(mail, retrying) == Outcome.RETRYING);
+        assertEquals(List.of("second@care.test"), server.acceptedRecipients, "only to the given address");
+        MailDelivery f = mail.delivery(failed).orElseThrow();
+        assertTrue(f.detail().contains("NOT delivered to nobody@care.test") && f.detail().contains("550"),
+                f.detail());
+        MailDelivery r = mail.delivery(retrying).orElseThrow();
+        assertTrue(r.detail().contains("delivery failed temporarily") && r.detail().contains("552"), r.detail());
+        assertEquals(List.of("full@care.test"), r.to());
+        assertEquals(List.of(sent, failed, retrying), mail.deliveries().stream().map(MailDelivery::id).toList());
+        assertThrows(IllegalArgumentException.class, () -> mail.sendTo(List.of("not an address"), "s", "b"));
     }
 
     @Test

@@ -10,12 +10,14 @@ import java.time.Duration;
 import java.time.Instant;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
 import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
 import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
 import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.junit.jupiter.api.Test;
+import org.tinysep.mqtt.board.loadtest.MessageCallback;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 
 /**
@@ -38,14 +40,15 @@ class BoardBrokerTest {
             o.setUserName("care"); // the test support makes one user
             o.setPassword("b0ard-pass".getBytes(StandardCharsets.UTF_8));
             o.setWill("tinysep/17/status", new MqttMessage("offline".getBytes(StandardCharsets.UTF_8), 1, true, null));
-            Callback callback = new Callback();
-            flat.setCallback(callback);
+            BlockingQueue<String> acks = new LinkedBlockingQueue<>(); // every message as "topic payload"
+            flat.setCallback(new MessageCallback((topic, m) -> acks.add(topic + " "
+                    + new String(m.getPayload(), StandardCharsets.UTF_8))));
             flat.connect(o).waitForCompletion(20_000);
-            BlockingQueue<String> acks = callback.messages;
             flat.subscribe("tinysep/17/command/alert/+/ack", 1).waitForCompletion(20_000);
 
             publish(flat, "tinysep/17/status", "online");
-            publish(flat, "tinysep/17/platform", BoardTest.platform(Instant.now()));
+            // started now: a fixed start date would make the flat SILENT (no daily summary for 26 h) from a day after it
+            publish(flat, "tinysep/17/platform", BoardTest.platform(Instant.now(), Instant.now()));
             publish(flat, "tinysep/17/alert/3", BoardTest.alert(3, "OPEN", 1));
             Conditions.await("the board to show flat 17's open alert", LIMIT,
                     () -> central.json().contains("\"state\":\"OPEN\"") && central.json().contains("\"status\":\"ONLINE\""),

@@ -32,7 +32,12 @@ class BoardTest {
     }
 
     static String platform(Instant heartbeat) {
-        return "{\"flat\":\"17\",\"version\":\"0.1.0\",\"startedAt\":\"2026-11-25T08:00:00Z\",\"heartbeatAt\":\""
+        return platform(Instant.parse("2026-11-25T08:00:00Z"), heartbeat);
+    }
+
+    /** A flat's platform message; started is also the board's reference for the daily summary until one comes. */
+    static String platform(Instant started, Instant heartbeat) {
+        return "{\"flat\":\"17\",\"version\":\"0.1.0\",\"startedAt\":\"" + started + "\",\"heartbeatAt\":\""
                 + heartbeat + "\",\"heartbeatSeconds\":60}";
     }
 

@@ -9,13 +9,10 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.eclipse.paho.mqttv5.client.MqttActionListener;
 import org.eclipse.paho.mqttv5.client.IMqttToken;
 import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
-import org.eclipse.paho.mqttv5.client.MqttCallback;
 import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
-import org.eclipse.paho.mqttv5.client.MqttDisconnectResponse;
 import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
 import org.eclipse.paho.mqttv5.common.MqttException;
 import org.eclipse.paho.mqttv5.common.MqttMessage;
-import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
 
 /**
  * One light simulated flat: its own MQTT connection (client id = flat id, Last Will {@code status offline}) publishing
@@ -23,7 +20,7 @@ import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
  * answering the board's acknowledgement like the bridge + alert service do (ACKNOWLEDGED, then CLEARED and the
  * emptied retained topic).
  */
-final class SimFlat implements MqttCallback {
+final class SimFlat {
 
     /** Shared counters of all flats of this process. */
     static final class Stats {
@@ -54,7 +51,7 @@ final class SimFlat implements MqttCallback {
         this.rates = rates;
         this.stats = stats;
         this.client = new MqttAsyncClient(url, id, new MemoryPersistence());
-        client.setCallback(this);
+        client.setCallback(new MessageCallback(this::acknowledge));
     }
 
     void start(ScheduledExecutorService ex) throws MqttException {
@@ -97,8 +94,7 @@ final class SimFlat implements MqttCallback {
         send(wire.alert(alertId), wire.alertJson(alertId, "OPEN", Instant.now(), null, null, seq.incrementAndGet()), true, true);
     }
 
-    @Override
-    public void messageArrived(String topic, MqttMessage message) {
+    private void acknowledge(String topic, MqttMessage message) {
         // tinysep/<flat>/command/alert/<id>/ack {"by":"…"}: the flat's alert service takes it, the bridge reports it
         String[] l = topic.split("/");
         long alertId = Long.parseLong(l[4]);
@@ -146,25 +142,5 @@ final class SimFlat implements MqttCallback {
         } catch (MqttException e) {
             stats.failed.incrementAndGet();
         }
-    }
-
-    @Override
-    public void disconnected(MqttDisconnectResponse response) {
-    }
-
-    @Override
-    public void mqttErrorOccurred(MqttException exception) {
-    }
-
-    @Override
-    public void deliveryComplete(IMqttToken token) {
-    }
-
-    @Override
-    public void connectComplete(boolean reconnect, String serverURI) {
-    }
-
-    @Override
-    public void authPacketArrived(int reasonCode, MqttProperties properties) {
     }
 }
