@@ -15,6 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
+import java.util.List;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
 import org.osgi.framework.Bundle;
@@ -71,6 +72,21 @@ final class TestDistribution {
     void stop() {
         if (launcher != null) {
             launcher.stop(Duration.ofSeconds(30));
+        }
+    }
+
+    /** Stops and starts again; fails with the start report when anything failed to start. @return the report */
+    StartReport restart() throws Exception {
+        stop();
+        StartReport report = start();
+        assertTrue(report.failures().isEmpty(), () -> String.join("\n", report.lines()));
+        return report;
+    }
+
+    /** @return the jars of {@code bundles/5-apps} in this copy (the applications the drivers list is seeded from) */
+    List<Path> apps() throws IOException {
+        try (Stream<Path> jars = Files.list(home.resolve("bundles/5-apps"))) {
+            return jars.toList();
         }
     }
 
