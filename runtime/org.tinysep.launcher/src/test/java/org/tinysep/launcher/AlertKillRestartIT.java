@@ -34,16 +34,7 @@ class AlertKillRestartIT {
             AmicaSender.Node bath = BathroomFlat.bathroomNode(sender);
             try (PlatformProcess p = PlatformProcess.start(home)) {
                 bath.keepAlive();
-                // motion until the flat is OCCUPIED and watched (placement is applied in the background)
-                TestDistribution.await(WAIT, () -> {
-                    try {
-                        bath.motion(true);
-                        Thread.sleep(500);
-                    } catch (IOException | InterruptedException e) {
-                        throw new IllegalStateException(e);
-                    }
-                    return p.text("tinysep:devices").contains("state=WATCHING");
-                }, "Inactivity Recognition watching the bathroom");
+                BathroomFlat.moveInBathroom(p, bath, null, WAIT); // until the flat is OCCUPIED and watched
                 TestDistribution.await(WAIT, () -> p.text("tinysep:alerts").contains("alert 1  OPEN"),
                         "alert 1 open");
                 TestDistribution.await(WAIT, () -> read(state).contains("state=OPEN"), "the alert saved");

@@ -3,6 +3,8 @@ package org.tinysep.launcher;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tinysep.launcher.BathroomFlat.inactivity;
+import static org.tinysep.launcher.BathroomFlat.moveInBathroom;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -47,7 +49,7 @@ class KillRestartIT {
             Instant t0;
             try (PlatformProcess p = PlatformProcess.start(home)) {
                 bath.keepAlive();
-                t0 = moveInBathroom(p, bath, null);
+                t0 = moveInBathroom(p, bath, null, WAIT);
                 assertEquals(t0.plus(LIMIT).toString(), parameter(inactivity(p), "deadline"));
                 awaitSaved(home, t0);
                 p.kill();
@@ -75,7 +77,7 @@ class KillRestartIT {
                 assertTrue(p.text("tinysep:devices").contains("occupancy=OCCUPIED"), "flat occupancy restored");
 
                 // 3. she moves again (the alert clears), then the platform dies and stays down past the deadline
-                Instant t1 = moveInBathroom(p, bath, t0);
+                Instant t1 = moveInBathroom(p, bath, t0, WAIT);
                 awaitSaved(home, t1);
                 p.kill();
                 t0 = t1;
@@ -95,24 +97,6 @@ class KillRestartIT {
                 assertTrue(p.text("tinysep:log 300").contains("alert handed to the alert service"));
             }
         }
-    }
-
-    /** Sends motion until Inactivity Recognition has it in the bathroom (placement is applied in the background). */
-    private static Instant moveInBathroom(PlatformProcess p, AmicaSender.Node bath, Instant after) throws Exception {
-        long end = System.nanoTime() + WAIT.toNanos();
-        while (System.nanoTime() < end) {
-            bath.motion(true);
-            Thread.sleep(500);
-            String line = inactivity(p);
-            Matcher m = Pattern.compile("lastActivity=movement by [^,]* in Bathroom at (\\S+Z)").matcher(line);
-            if (m.find() && line.contains("state=WATCHING")) {
-                Instant at = Instant.parse(m.group(1));
-                if (after == null || at.isAfter(after)) {
-                    return at;
-                }
-            }
-        }
-        throw new AssertionError("no bathroom activity seen: " + inactivity(p));
     }
 
     /**
@@ -153,11 +137,6 @@ class KillRestartIT {
             return line.isPresent();
         }, "'" + text + "' in the event log");
         return found[0];
-    }
-
-    private static String inactivity(PlatformProcess p) {
-        return p.text("tinysep:devices").lines().dropWhile(l -> !l.contains(" InactivityRecognition "))
-                .filter(l -> l.strip().startsWith("parameters:")).findFirst().orElse("");
     }
 
     private static String parameter(String line, String key) {
