@@ -14,9 +14,7 @@ import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.osgi.framework.Bundle;
 
 /**
@@ -24,22 +22,11 @@ import org.osgi.framework.Bundle;
  * distribution, the list seeded from {@code bundles/5-apps}, reload/enable/disable, shell installs that survive a
  * restart, a broken file moved aside while the platform keeps its previous list.
  */
-class DriversListIT {
+class DriversListIT extends StateFolderFixture {
 
     private static final Duration WAIT = Duration.ofSeconds(15);
     private static final String WINDOW = "org.tinysep.amica.window";
     private static final String DOOR = "org.tinysep.amica.door";
-
-    @TempDir
-    Path tmp;
-    private TestDistribution dist;
-
-    @AfterEach
-    void stop() {
-        if (dist != null) {
-            dist.stop();
-        }
-    }
 
     private Path list() {
         return tmp.resolve("state/drivers.xml");
@@ -62,7 +49,6 @@ class DriversListIT {
 
     @Test
     void listIsSeededInTheStateFolderAndDrivesTheApplications() throws Exception {
-        dist = new TestDistribution(tmp.resolve("home"), tmp.resolve("state"));
         StartReport report = dist.start();
         assertEquals(report.installed(), report.activeCount(), () -> String.join("\n", report.lines()));
         int apps = appCount();
@@ -77,7 +63,7 @@ class DriversListIT {
         assertTrue(out.contains("stopped " + DOOR), out);
         await(WAIT, () -> !dist.hasDriver("AmicaDoor"), "AmicaDoor driver gone");
         await(WAIT, () -> "DISABLED".equals(fileStatus(DOOR)), "STATUS DISABLED for " + DOOR);
-        restart();
+        dist.restart();
         assertNull(dist.bundle(DOOR), "a disabled entry is not installed at start-up");
         assertTrue(dist.shell("tinysep:drivers").contains("DISABLED"));
         dist.shell("tinysep:drivers enable " + DOOR);
@@ -86,7 +72,6 @@ class DriversListIT {
 
     @Test
     void removedEntryIsUninstalledAndShellInstallSurvivesARestart() throws Exception {
-        dist = new TestDistribution(tmp.resolve("home"), tmp.resolve("state"));
         dist.start();
         await(WAIT, () -> fileStatus(WINDOW) != null, "the list on disk");
         long udpBefore = dist.bundle("org.tinysep.amica.busradio.udp").getBundleId();
@@ -116,7 +101,7 @@ class DriversListIT {
         await(WAIT, () -> dist.hasDriver("AmicaWindow"), "AmicaWindow driver after the shell install");
         await(WAIT, () -> "ACTIVE".equals(fileStatus(WINDOW)), "the shell-installed bundle in the list");
         assertTrue(listText().contains(own.toUri().toString()), listText());
-        restart();
+        dist.restart();
         await(WAIT, () -> dist.hasDriver("AmicaWindow"), "AmicaWindow driver after the restart");
         assertEquals(own.toUri().toString(), dist.bundle(WINDOW).getLocation());
 
@@ -127,7 +112,6 @@ class DriversListIT {
 
     @Test
     void brokenListIsMovedAsideAndThePreviousOneStaysInForce() throws Exception {
-        dist = new TestDistribution(tmp.resolve("home"), tmp.resolve("state"));
         dist.start();
         await(WAIT, () -> "ACTIVE".equals(fileStatus(WINDOW)), "the list on disk");
         Files.writeString(list(), "<DRIVERS_LIST><DRIVER><FILE_PATH>x.jar</FILE_PATH>\n</DRIVERS_LIST>");
@@ -155,14 +139,6 @@ class DriversListIT {
     }
 
     private int appCount() throws java.io.IOException {
-        try (Stream<Path> jars = Files.list(tmp.resolve("home/bundles/5-apps"))) {
-            return (int) jars.count();
-        }
-    }
-
-    private void restart() throws Exception {
-        dist.stop();
-        StartReport report = dist.start();
-        assertTrue(report.failures().isEmpty(), () -> String.join("\n", report.lines()));
+        return dist.apps().size();
     }
 }

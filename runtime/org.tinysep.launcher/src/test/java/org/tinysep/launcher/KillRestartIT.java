@@ -3,33 +3,22 @@ package org.tinysep.launcher;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.tinysep.launcher.BathroomFlat.inactivity;
+import static org.tinysep.launcher.BathroomFlat.moveInBathroom;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.net.DatagramPacket;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
-import java.util.List;
 import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tinysep.amica.protocol.AmicaCodec;
-import org.tinysep.amica.protocol.AmicaFrame;
-import org.tinysep.amica.protocol.AmicaNodeType;
-import org.tinysep.amica.protocol.AmicaPayload;
-import org.tinysep.amica.protocol.AmicaPayloads;
-import org.tinysep.amica.protocol.KeepAlive;
-import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
@@ -52,95 +41,62 @@ class KillRestartIT {
     @Test
     void killMinus9WithAPersonAlreadyQuietRaisesTheAlertAfterTheRestartAtTheRightTime() throws Exception {
         Path home = tmp.resolve("home");
-        new TestDistribution(home, null); // a copy of target/tinysep
-        int port = freeUdpPort();
-        Files.writeString(home.resolve("etc/" + TestDistribution.UDP_PID + ".cfg"),
-                "port=" + port + "\nbindAddress=127.0.0.1\n");
-        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
-                "mode=REAL\nsyncPort=0\nsyncBindAddress=127.0.0.1\n");
-        Files.writeString(home.resolve("etc/org.tinysep.inactivity.cfg"), "roomLimits=Bathroom=1\ntimeZone=UTC\n");
-        Files.writeString(home.resolve("etc/org.tinysep.houseinformation.placement.cfg"), "placements=1.40=Bathroom\n");
-        Files.createDirectories(home.resolve("var"));
-        Files.writeString(home.resolve("var/house.xml"), """
-                <?xml version="1.0" encoding="UTF-8"?>
-                <HOUSE_ROOMS>
-                    <ROOM><UID>b1000000-0000-4000-8000-000000000001</UID><NAME>Hall</NAME><TYPE>Hall</TYPE>
-                        <NEIGHBORS><ROOM_UID>b1000000-0000-4000-8000-000000000002</ROOM_UID></NEIGHBORS></ROOM>
-                    <ROOM><UID>b1000000-0000-4000-8000-000000000002</UID><NAME>Bathroom</NAME><TYPE>Bathroom</TYPE>
-                        <NEIGHBORS><ROOM_UID>b1000000-0000-4000-8000-000000000001</ROOM_UID></NEIGHBORS></ROOM>
-                </HOUSE_ROOMS>
-                """);
-        Node bath = new Node(port);
+        BathroomFlat flat = BathroomFlat.create(home); // a copy of target/tinysep, the flat set up
+        try (AmicaSender sender = flat.sender()) {
+            AmicaSender.Node bath = BathroomFlat.bathroomNode(sender);
 
-        // 1. movement in the bathroom, then quiet; SIGKILL once the state is saved
-        Instant t0;
-        try (PlatformProcess p = PlatformProcess.start(home)) {
-            bath.keepAlive();
-            t0 = moveInBathroom(p, bath, null);
-            assertEquals(t0.plus(LIMIT).toString(), parameter(inactivity(p), "deadline"));
-            awaitSaved(home, t0);
-            p.kill();
-        }
-
-        // 2. restarted at once: the node reports "no motion"; the alert comes at t0 + 1 min, not restart + 1 min
-        try (PlatformProcess p = PlatformProcess.start(home)) {
-            Instant back = Instant.now();
-            bath.keepAlive();
-            bath.motion(false);
-            String line = inactivity(p);
-            if (line.contains("state=WATCHING")) {
-                assertEquals(t0.plus(LIMIT).toString(), parameter(line, "deadline"), "the count goes on: " + line);
+            // 1. movement in the bathroom, then quiet; SIGKILL once the state is saved
+            Instant t0;
+            try (PlatformProcess p = PlatformProcess.start(home)) {
+                bath.keepAlive();
+                t0 = moveInBathroom(p, bath, null, WAIT);
+                assertEquals(t0.plus(LIMIT).toString(), parameter(inactivity(p), "deadline"));
+                awaitSaved(home, t0);
+                p.kill();
             }
-            String alert = awaitEvent(p, "inactivity alert", t0);
-            assertTrue(alert.contains("TinySEP: no activity in Bathroom since " + HH_MM.format(t0)), alert);
-            Instant raised = Instant.parse(alert.split(" \\| ")[1].strip());
-            System.out.printf("last movement %s, shell back after the kill at %s, alert %s s after it was due: %s%n",
-                    t0, back, Duration.between(t0.plus(LIMIT), raised).toMillis() / 1000.0, alert);
-            assertFalse(raised.isBefore(t0.plus(LIMIT)), "not before the limit: " + alert);
-            if (back.isBefore(t0.plus(LIMIT).minusSeconds(5))) {
-                assertTrue(raised.isBefore(t0.plus(LIMIT).plusSeconds(15)), "at the right time: " + alert);
-                assertFalse(alert.contains("late"), alert);
-            }
-            assertTrue(p.text("tinysep:devices").contains("occupancy=OCCUPIED"), "flat occupancy restored");
 
-            // 3. she moves again (the alert clears), then the platform dies and stays down past the deadline
-            Instant t1 = moveInBathroom(p, bath, t0);
-            awaitSaved(home, t1);
-            p.kill();
-            t0 = t1;
-        }
-        Instant due = t0.plus(LIMIT);
-        while (Instant.now().isBefore(due.plusSeconds(5))) {
-            Thread.sleep(500); // the outage itself: nothing runs
-        }
-        try (PlatformProcess p = PlatformProcess.start(home)) {
-            bath.keepAlive();
-            bath.motion(false);
-            String alert = awaitEvent(p, "inactivity alert", due);
-            assertTrue(alert.contains("TinySEP: no activity in Bathroom since " + HH_MM.format(t0)
-                    + " (Inactivity Recognition was not running from "), alert);
-            assertTrue(alert.contains("; this alert is late)"), alert);
-            System.out.println("after an outage past the deadline (due " + due + "): " + alert);
-            assertTrue(p.text("tinysep:log 300").contains("alert handed to the alert service"));
-        }
-    }
-
-    /** Sends motion until Inactivity Recognition has it in the bathroom (placement is applied in the background). */
-    private static Instant moveInBathroom(PlatformProcess p, Node bath, Instant after) throws Exception {
-        long end = System.nanoTime() + WAIT.toNanos();
-        while (System.nanoTime() < end) {
-            bath.motion(true);
-            Thread.sleep(500);
-            String line = inactivity(p);
-            Matcher m = Pattern.compile("lastActivity=movement by [^,]* in Bathroom at (\\S+Z)").matcher(line);
-            if (m.find() && line.contains("state=WATCHING")) {
-                Instant at = Instant.parse(m.group(1));
-                if (after == null || at.isAfter(after)) {
-                    return at;
+            // 2. restarted at once: the node reports "no motion"; the alert comes at t0 + 1 min, not restart + 1 min
+            try (PlatformProcess p = PlatformProcess.start(home)) {
+                Instant back = Instant.now();
+                bath.keepAlive();
+                bath.motion(false);
+                String line = inactivity(p);
+                if (line.contains("state=WATCHING")) {
+                    assertEquals(t0.plus(LIMIT).toString(), parameter(line, "deadline"), "the count goes on: " + line);
                 }
+                String alert = awaitEvent(p, "inactivity alert", t0);
+                assertTrue(alert.contains("TinySEP: no activity in Bathroom since " + HH_MM.format(t0)), alert);
+                Instant raised = Instant.parse(alert.split(" \\| ")[1].strip());
+                System.out.printf("last movement %s, shell back after the kill at %s, alert %s s after it was due: %s%n",
+                        t0, back, Duration.between(t0.plus(LIMIT), raised).toMillis() / 1000.0, alert);
+                assertFalse(raised.isBefore(t0.plus(LIMIT)), "not before the limit: " + alert);
+                if (back.isBefore(t0.plus(LIMIT).minusSeconds(5))) {
+                    assertTrue(raised.isBefore(t0.plus(LIMIT).plusSeconds(15)), "at the right time: " + alert);
+                    assertFalse(alert.contains("late"), alert);
+                }
+                assertTrue(p.text("tinysep:devices").contains("occupancy=OCCUPIED"), "flat occupancy restored");
+
+                // 3. she moves again (the alert clears), then the platform dies and stays down past the deadline
+                Instant t1 = moveInBathroom(p, bath, t0, WAIT);
+                awaitSaved(home, t1);
+                p.kill();
+                t0 = t1;
+            }
+            Instant due = t0.plus(LIMIT);
+            while (Instant.now().isBefore(due.plusSeconds(5))) {
+                Thread.sleep(500); // the outage itself: nothing runs
+            }
+            try (PlatformProcess p = PlatformProcess.start(home)) {
+                bath.keepAlive();
+                bath.motion(false);
+                String alert = awaitEvent(p, "inactivity alert", due);
+                assertTrue(alert.contains("TinySEP: no activity in Bathroom since " + HH_MM.format(t0)
+                        + " (Inactivity Recognition was not running from "), alert);
+                assertTrue(alert.contains("; this alert is late)"), alert);
+                System.out.println("after an outage past the deadline (due " + due + "): " + alert);
+                assertTrue(p.text("tinysep:log 300").contains("alert handed to the alert service"));
             }
         }
-        throw new AssertionError("no bathroom activity seen: " + inactivity(p));
     }
 
     /**
@@ -183,48 +139,8 @@ class KillRestartIT {
         return found[0];
     }
 
-    private static String inactivity(PlatformProcess p) {
-        return p.text("tinysep:devices").lines().dropWhile(l -> !l.contains(" InactivityRecognition "))
-                .filter(l -> l.strip().startsWith("parameters:")).findFirst().orElse("");
-    }
-
     private static String parameter(String line, String key) {
         Matcher m = Pattern.compile("\\b" + key + "=([^,\\s]*)").matcher(line);
         return m.find() ? m.group(1) : "";
-    }
-
-    private static int freeUdpPort() {
-        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
-    }
-
-    /** AmICA movement node 1.40 sending real frames to the UDP bus radio. */
-    private static final class Node {
-        private final InetSocketAddress radio;
-        private final DatagramSocket socket;
-        private int sequence;
-
-        Node(int port) throws IOException {
-            radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), port);
-            socket = new DatagramSocket(0, InetAddress.getLoopbackAddress());
-        }
-
-        void keepAlive() throws IOException {
-            send(new KeepAlive(120, 2900, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)),
-                    4242));
-        }
-
-        void motion(boolean detected) throws IOException {
-            send(new MotionDetection(detected));
-        }
-
-        private void send(AmicaPayload payload) throws IOException {
-            byte[] b = AmicaCodec.encode(new AmicaFrame(1, 40, AmicaCodec.PLATFORM_ADDRESS, sequence++ & 0xFF,
-                    AmicaPayloads.encode(payload)));
-            socket.send(new DatagramPacket(b, b.length, radio));
-        }
     }
 }

@@ -2,7 +2,6 @@ package org.tinysep.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
@@ -28,12 +27,7 @@ class ReadyIT {
     @Test
     void framesSentRightAfterTheBannerAreNotLost() throws Exception {
         Path home = tmp.resolve("home");
-        new TestDistribution(home, null);
-        int port = AmicaSender.freeUdpPort();
-        Files.writeString(home.resolve("etc/" + TestDistribution.UDP_PID + ".cfg"),
-                "port=" + port + "\nbindAddress=127.0.0.1\n");
-        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
-                "mode=REAL\nsyncPort=0\nsyncBindAddress=127.0.0.1\n");
+        int port = new TestDistribution(home, null).realTimeAmicaRadio();
         try (PlatformProcess p = PlatformProcess.launch(home, home, List.of()); AmicaSender sender = new AmicaSender(port)) {
             String banner = p.awaitLine("bundles active", Duration.ofSeconds(120));
             for (int node = 1; node <= NODES; node++) {

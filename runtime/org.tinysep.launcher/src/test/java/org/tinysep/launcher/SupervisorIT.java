@@ -39,9 +39,7 @@ class SupervisorIT {
     @Test
     void aHungPlatformIsRestartedAndTheRestartIsLoggedAndMailed() throws Exception {
         Path home = tmp.resolve("home");
-        new TestDistribution(home, null);
-        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
-                "mode=REAL\nsyncPort=0\nsyncBindAddress=127.0.0.1\n");
+        new TestDistribution(home, null).realTime();
         try (SmtpSink smtp = new SmtpSink().start()) {
             Files.writeString(home.resolve("etc/org.tinysep.mailmanager.cfg"), "host=127.0.0.1\nport=" + smtp.port()
                     + "\nsecurity=NONE\nfrom=tinysep@localhost\nrecipients=carer@example.org\n");

@@ -15,6 +15,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Arrays;
+import java.util.List;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
 import org.osgi.framework.Bundle;
@@ -40,6 +41,26 @@ final class TestDistribution {
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
     }
 
+    /** Runs the time controller in real time (synchroniser on port 0), as process tests want it. @return this */
+    TestDistribution realTime() throws IOException {
+        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
+                "mode=REAL\nsyncPort=0\nsyncBindAddress=127.0.0.1\n");
+        return this;
+    }
+
+    /**
+     * For tests that play AmICA nodes over UDP ({@link AmicaSender}) to the distribution run as a process: the UDP bus
+     * radio on a free port of 127.0.0.1 (port 0 would hide it from the test), the time controller in real time.
+     *
+     * @return the bus radio's port
+     */
+    int realTimeAmicaRadio() throws IOException {
+        int port = AmicaSender.freeUdpPort();
+        Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=" + port + "\nbindAddress=127.0.0.1\n");
+        realTime();
+        return port;
+    }
+
     StartReport start() throws Exception {
         LoggingDefaults.apply();
         launcher = new Launcher(var == null ? new Options(true, home, false) : new Options(true, home, var, false));
@@ -51,6 +72,21 @@ final class TestDistribution {
     void stop() {
         if (launcher != null) {
             launcher.stop(Duration.ofSeconds(30));
+        }
+    }
+
+    /** Stops and starts again; fails with the start report when anything failed to start. @return the report */
+    StartReport restart() throws Exception {
+        stop();
+        StartReport report = start();
+        assertTrue(report.failures().isEmpty(), () -> String.join("\n", report.lines()));
+        return report;
+    }
+
+    /** @return the jars of {@code bundles/5-apps} in this copy (the applications the drivers list is seeded from) */
+    List<Path> apps() throws IOException {
+        try (Stream<Path> jars = Files.list(home.resolve("bundles/5-apps"))) {
+            return jars.toList();
         }
     }
 

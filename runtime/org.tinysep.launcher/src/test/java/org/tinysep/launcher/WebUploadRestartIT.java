@@ -22,10 +22,7 @@ import java.util.jar.JarOutputStream;
 import java.util.jar.Manifest;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.stream.Stream;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.osgi.framework.Version;
 
 /**
@@ -34,28 +31,17 @@ import org.osgi.framework.Version;
  * older 5-apps copy. When the distribution itself later brings a newer version, that one wins (never run an older
  * copy than the distribution's).
  */
-class WebUploadRestartIT {
+class WebUploadRestartIT extends StateFolderFixture {
 
     private static final Duration WAIT = Duration.ofSeconds(30);
     private static final String WINDOW = "org.tinysep.amica.window";
     private static final String PASSWORD = "installer-secret-1";
 
-    @TempDir
-    Path tmp;
-    private TestDistribution dist;
     private final HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10)).build();
     private String base;
 
-    @AfterEach
-    void stop() {
-        if (dist != null) {
-            dist.stop();
-        }
-    }
-
     @Test
     void anUploadedUpdateOfA5AppsBundleWinsAtTheNextStartUntilTheDistributionBringsANewerOne() throws Exception {
-        dist = new TestDistribution(tmp.resolve("home"), tmp.resolve("state"));
         base = "http://127.0.0.1:" + freePort();
         Files.writeString(tmp.resolve("home/etc/org.apache.felix.http.cfg"), "org.apache.felix.http.host=127.0.0.1\n"
                 + "org.osgi.service.http.port=" + base.substring(base.lastIndexOf(':') + 1) + "\n");
@@ -76,7 +62,7 @@ class WebUploadRestartIT {
         assertTrue(r.body().contains("\"action\":\"updated\""), r.body());
         assertEquals(uploaded, dist.bundle(WINDOW).getVersion());
 
-        restart();
+        dist.restart();
         assertEquals(uploaded, dist.bundle(WINDOW).getVersion(), "the upload, not the older 5-apps copy, after a restart");
         assertTrue(r.body().contains("Kept: from the next start on the platform loads this upload"), r.body());
         await(WAIT, () -> dist.hasDriver("AmicaWindow"), "the AmicaWindow driver of the uploaded bundle");
@@ -88,7 +74,7 @@ class WebUploadRestartIT {
         byte[] next = withVersion(Files.readAllBytes(shipped), newer);
         Files.delete(shipped);
         Files.write(shipped.resolveSibling(WINDOW + "-" + newer + ".jar"), next);
-        restart();
+        dist.restart();
         assertEquals(newer, dist.bundle(WINDOW).getVersion(), "the newer distribution's copy wins over an older upload");
         await(WAIT, () -> dist.hasDriver("AmicaWindow"), "the AmicaWindow driver of the distribution's bundle");
         assertTrue(Files.readString(tmp.resolve("state/drivers.xml")).contains("bundles/5-apps/" + WINDOW + "-" + newer
@@ -96,9 +82,8 @@ class WebUploadRestartIT {
     }
 
     private Path appJar() throws IOException {
-        try (Stream<Path> jars = Files.list(tmp.resolve("home/bundles/5-apps"))) {
-            return jars.filter(p -> p.getFileName().toString().startsWith(WINDOW + "-")).findFirst().orElseThrow();
-        }
+        return dist.apps().stream().filter(p -> p.getFileName().toString().startsWith(WINDOW + "-")).findFirst()
+                .orElseThrow();
     }
 
     /** Sets the installer's password in the shell, logs in over HTTP. @return the cookie and the CSRF token */
@@ -130,12 +115,6 @@ class WebUploadRestartIT {
         Matcher m = Pattern.compile("\"csrf\":\"([^\"]+)\"").matcher(r.body());
         assertTrue(m.find(), r.body());
         return new String[] {cookie.substring(0, cookie.indexOf(';')), m.group(1)};
-    }
-
-    private void restart() throws Exception {
-        dist.stop();
-        StartReport report = dist.start();
-        assertTrue(report.failures().isEmpty(), () -> String.join("\n", report.lines()));
     }
 
     private static Manifest manifest(byte[] jar) throws IOException {
