@@ -11,7 +11,6 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
-import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
@@ -58,10 +57,6 @@ abstract class AalTestSupport extends TinySepTestSupport {
     Instant tomorrow() {
         return awaitService(TimeControllerProvider.class, null, TIMEOUT).now().truncatedTo(ChronoUnit.SECONDS)
                 .plusSeconds(86_400);
-    }
-
-    AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
-        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
     }
 
     /**
