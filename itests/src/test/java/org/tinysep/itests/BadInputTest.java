@@ -38,8 +38,6 @@ import org.tinysep.api.sensor.MovementProvider;
 @ExamReactorStrategy(PerClass.class)
 public class BadInputTest extends TinySepTestSupport {
 
-    private static final String BUS = "BusRadioAmicaUdp";
-
     @Test
     public void garbageIsCountedPerReasonAndChangesNoDevice() throws Exception {
         try (AmicaNode node = awakeNode(1, 17, MOVEMENT); AmicaNode stranger = node(1, 99, MOVEMENT)) {

@@ -31,8 +31,6 @@ import org.tinysep.api.service.Occupancy;
 @ExamReactorStrategy(PerMethod.class)
 public class ThesisScenariosTest extends ThesisSliceTestSupport {
 
-    private static final String BUS = "BusRadioAmicaUdp";
-
     @Test
     public void fig33MovementThenDoorNodeBuildTheThesisGraph() throws Exception {
         try (AmicaNode movement = node(1, 17, MOVEMENT); AmicaNode door = node(1, 20, DOOR)) {

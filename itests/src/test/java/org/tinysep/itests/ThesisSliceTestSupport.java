@@ -29,7 +29,7 @@ abstract class ThesisSliceTestSupport extends TinySepTestSupport {
     /** The whole graph of thesis Fig 3.3: movement node 1.17 and door node 1.20 feeding Flat Occupancy. */
     static final Set<String> FIG_33 = union(MOVEMENT_ONLY, DOOR_PART);
 
-    static Set<String> union(Set<String> a, Set<String> b) {
+    private static Set<String> union(Set<String> a, Set<String> b) {
         Set<String> u = new TreeSet<>(a);
         u.addAll(b);
         return u;

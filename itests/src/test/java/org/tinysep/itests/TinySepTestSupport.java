@@ -67,6 +67,8 @@ public abstract class TinySepTestSupport {
     public static final String UDP_PID = "org.tinysep.amica.busradio.udp";
     /** ConfigAdmin pid of the Sun SPOT bus radio (keys {@code udpPort}, {@code udpBindAddress}, …). */
     public static final String SUN_SPOT_PID = "org.tinysep.sunspot.busradio";
+    /** Driver name (and device type) of the AmICA UDP bus radio, whose port {@link #udpPortOf(String)} tells. */
+    protected static final String BUS = "BusRadioAmicaUdp";
     /** Driver service property carrying the UDP bus radio's bound port. */
     public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
     /** The drivers of thesis Fig 3.3 (and the codec they share): the first vertical slice. */
@@ -300,7 +302,7 @@ public abstract class TinySepTestSupport {
 
     /** @return a simulated AmICA node that talks to the running UDP bus radio ({@code BusRadioAmicaUdp}) */
     protected AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
-        return new AmicaNode(netgroup, address, udpPortOf("BusRadioAmicaUdp"), types);
+        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
     }
 
     /**

@@ -30,7 +30,6 @@ import org.tinysep.testsupport.mail.SmtpSink;
  */
 abstract class AalTestSupport extends TinySepTestSupport {
 
-    static final String BUS = "BusRadioAmicaUdp";
     /** Inactivity Recognition reading days in UTC, for tests that check times of day ({@code HH:mm} in mails). */
     static final Map<String, String> INACTIVITY_UTC = Map.of("timeZone", "UTC");
 

@@ -36,8 +36,6 @@ import org.tinysep.itests.TinySepTestSupport;
 @ExamReactorStrategy(PerClass.class) // both inherited by the test classes
 public abstract class AmicaTestSupport extends TinySepTestSupport {
 
-    static final String BUS = "BusRadioAmicaUdp";
-
     /**
      * Sends the node's keep-alive and waits for its abstraction: the Device service of {@code deviceType} and the
      * provider of {@code type}, which must carry the node's own type {@code nodeType} only.

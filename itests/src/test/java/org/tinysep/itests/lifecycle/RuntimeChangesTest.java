@@ -37,8 +37,6 @@ import org.tinysep.itests.Topology;
 @ExamReactorStrategy(PerMethod.class)
 public class RuntimeChangesTest extends TinySepTestSupport {
 
-    private static final String BUS = "BusRadioAmicaUdp";
-
     /** AmICA Door and Window are not provisioned: the tests bring them in. */
     @Override
     protected List<String> applications() {
