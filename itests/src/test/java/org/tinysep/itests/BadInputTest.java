@@ -38,14 +38,9 @@ import org.tinysep.api.sensor.MovementProvider;
 @ExamReactorStrategy(PerClass.class)
 public class BadInputTest extends TinySepTestSupport {
 
-    private static final String BUS = "BusRadioAmicaUdp";
-
     @Test
     public void garbageIsCountedPerReasonAndChangesNoDevice() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode node = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode stranger = new AmicaNode(1, 99, port, MOVEMENT)) {
-            node.keepAlive();
+        try (AmicaNode node = awakeNode(1, 17, MOVEMENT); AmicaNode stranger = node(1, 99, MOVEMENT)) {
             // every connection the node leads to, not only Flat Occupancy's: they are made one after another, and a
             // snapshot taken in between made this test fail under load
             await(TIMEOUT, () -> Topology.of(context).containsAll(Set.of(

@@ -33,7 +33,7 @@ import org.tinysep.api.service.Occupancy;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerMethod.class)
-public class RuntimeHardwareTest extends TinySepTestSupport {
+public class RuntimeHardwareTest extends ThesisSliceTestSupport {
 
     private static final String SPOT = "0014.4F01.0000.7E11";
 
@@ -47,37 +47,10 @@ public class RuntimeHardwareTest extends TinySepTestSupport {
         }
     }
 
-    /** Exactly the drivers the thesis loads for this scenario (Fig 3.3): no other device may join the graph. */
-    @Override
-    protected List<String> applications() {
-        return FIRST_SLICE;
-    }
-
-    private void expectTopology(Set<String> expected) {
-        Set<String> want = new TreeSet<>(expected);
-        try {
-            await(TIMEOUT, () -> Topology.of(context).equals(want), "device graph " + want);
-        } catch (AssertionError timeout) {
-            assertEquals("device graph", want, Topology.of(context));
-        }
-    }
-
     @Test
     public void fig36SunSpotInstalledThroughTheShellJoinsTheRunningFlat() throws Exception {
-        int amicaPort = udpPortOf("BusRadioAmicaUdp");
-        try (AmicaNode movement = new AmicaNode(1, 17, amicaPort, MOVEMENT);
-                AmicaNode door = new AmicaNode(1, 20, amicaPort, DOOR)) {
-            movement.keepAlive();
-            door.keepAlive();
-            Set<String> amicaFlat = Set.of(
-                    "BusRadioAmicaUdp@1.17", "AmicaMovement@1.17",
-                    "AmicaMovement@1.17 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.17",
-                    "BusRadioAmicaUdp@1.20", "AmicaDoor@1.20",
-                    "AmicaDoor@1.20 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.20",
-                    "FlatOccupancy",
-                    "FlatOccupancy <- MovementProvider of AmicaMovement@1.17",
-                    "FlatOccupancy <- DoorProvider of AmicaDoor@1.20");
-            expectTopology(amicaFlat);
+        try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode door = awakeNode(1, 20, DOOR)) {
+            expectTopology(FIG_33);
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
             String flatUid = flat.deviceUid();
             Bundle flatBundle = FrameworkUtil.getBundle(flat.getClass());
@@ -105,7 +78,7 @@ public class RuntimeHardwareTest extends TinySepTestSupport {
             byte[] frame = SunSpotFrames.motion(SPOT); // a separate class: loaded only now that the codec is installed
             try (DatagramSocket spot = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
                 spot.send(new DatagramPacket(frame, frame.length, InetAddress.getLoopbackAddress(), spotPort));
-                Set<String> withSpot = new TreeSet<>(amicaFlat);
+                Set<String> withSpot = new TreeSet<>(FIG_33);
                 withSpot.add("BusRadioSunSpot@" + SPOT);
                 withSpot.add("SunSpotMovement@" + SPOT);
                 withSpot.add("SunSpotMovement@" + SPOT + " <- BusRadioSunSpotProvider of BusRadioSunSpot@" + SPOT);

@@ -29,58 +29,18 @@ import org.tinysep.api.service.Occupancy;
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerMethod.class)
-public class ThesisScenariosTest extends TinySepTestSupport {
-
-    private static final String BUS = "BusRadioAmicaUdp";
-
-    /** The graph of thesis Fig 3.3 with the movement node only. */
-    private static final Set<String> MOVEMENT_ONLY = Set.of(
-            "BusRadioAmicaUdp@1.17",
-            "AmicaMovement@1.17",
-            "AmicaMovement@1.17 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.17",
-            "FlatOccupancy",
-            "FlatOccupancy <- MovementProvider of AmicaMovement@1.17");
-
-    /** The door half of Fig 3.3 (its bus device, AmicaDoor, Flat Occupancy's door connection). */
-    private static final Set<String> DOOR_PART = Set.of(
-            "BusRadioAmicaUdp@1.20",
-            "AmicaDoor@1.20",
-            "AmicaDoor@1.20 <- BusRadioAmicaProvider of BusRadioAmicaUdp@1.20",
-            "FlatOccupancy <- DoorProvider of AmicaDoor@1.20");
-
-    private static Set<String> union(Set<String> a, Set<String> b) {
-        Set<String> u = new TreeSet<>(a);
-        u.addAll(b);
-        return u;
-    }
-
-    /** Exactly the drivers the thesis loads for this scenario (Fig 3.3): no other device may join the graph. */
-    @Override
-    protected List<String> applications() {
-        return FIRST_SLICE;
-    }
-
-    private void expectTopology(Set<String> expected) {
-        Set<String> want = new TreeSet<>(expected);
-        try {
-            await(TIMEOUT, () -> Topology.of(context).equals(want), "device graph " + want);
-        } catch (AssertionError timeout) {
-            assertEquals("device graph", want, Topology.of(context)); // shows the difference
-        }
-    }
+public class ThesisScenariosTest extends ThesisSliceTestSupport {
 
     @Test
     public void fig33MovementThenDoorNodeBuildTheThesisGraph() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode door = new AmicaNode(1, 20, port, DOOR)) {
+        try (AmicaNode movement = node(1, 17, MOVEMENT); AmicaNode door = node(1, 20, DOOR)) {
             assertEquals(Set.of(), Topology.of(context));
 
             movement.keepAlive();
             expectTopology(MOVEMENT_ONLY);
 
             door.keepAlive();
-            expectTopology(union(MOVEMENT_ONLY, DOOR_PART)); // AmicaMovement ignored the door node
+            expectTopology(FIG_33); // AmicaMovement ignored the door node
 
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
             List<Occupancy> heard = new CopyOnWriteArrayList<>();
@@ -97,12 +57,8 @@ public class ThesisScenariosTest extends TinySepTestSupport {
 
     @Test
     public void fig34RemovingTheMovementBusDeviceRemovesAmicaMovementButKeepsFlatOccupancy() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode door = new AmicaNode(1, 20, port, DOOR)) {
-            movement.keepAlive();
-            door.keepAlive();
-            expectTopology(union(MOVEMENT_ONLY, DOOR_PART));
+        try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode door = awakeNode(1, 20, DOOR)) {
+            expectTopology(FIG_33);
             String flatUid = Topology.uid(context, "FlatOccupancy", null);
 
             shell("tinysep:remove " + Topology.uid(context, BUS, "1.17"));
@@ -114,18 +70,14 @@ public class ThesisScenariosTest extends TinySepTestSupport {
 
             movement.motion(true); // not a keep-alive: an unknown node again, so nothing is created
             movement.keepAlive(); // switched on again: picked up anew
-            expectTopology(union(MOVEMENT_ONLY, DOOR_PART));
+            expectTopology(FIG_33);
         }
     }
 
     @Test
     public void removingADriverRemovesEachOfItsDevicesOneByOneEachAnnounced() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode door = new AmicaNode(1, 20, port, DOOR)) {
-            movement.keepAlive();
-            door.keepAlive();
-            expectTopology(union(MOVEMENT_ONLY, DOOR_PART));
+        try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode door = awakeNode(1, 20, DOOR)) {
+            expectTopology(FIG_33);
             Set<String> uids = Set.of(Topology.uid(context, BUS, "1.17"), Topology.uid(context, BUS, "1.20"),
                     Topology.uid(context, "AmicaMovement", "1.17"), Topology.uid(context, "AmicaDoor", "1.20"),
                     Topology.uid(context, "FlatOccupancy", null));

@@ -1,5 +1,6 @@
 package org.tinysep.itests;
 
+import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.fail;
 import static org.ops4j.pax.exam.CoreOptions.bundle;
 import static org.ops4j.pax.exam.CoreOptions.cleanCaches;
@@ -23,6 +24,8 @@ import java.util.Hashtable;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.function.BooleanSupplier;
 import java.util.stream.Stream;
 import javax.inject.Inject;
@@ -39,6 +42,7 @@ import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.util.tracker.ServiceTracker;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
 
@@ -63,6 +67,8 @@ public abstract class TinySepTestSupport {
     public static final String UDP_PID = "org.tinysep.amica.busradio.udp";
     /** ConfigAdmin pid of the Sun SPOT bus radio (keys {@code udpPort}, {@code udpBindAddress}, …). */
     public static final String SUN_SPOT_PID = "org.tinysep.sunspot.busradio";
+    /** Driver name (and device type) of the AmICA UDP bus radio, whose port {@link #udpPortOf(String)} tells. */
+    protected static final String BUS = "BusRadioAmicaUdp";
     /** Driver service property carrying the UDP bus radio's bound port. */
     public static final String UDP_PORT_PROPERTY = "tinysep.udp.port";
     /** The drivers of thesis Fig 3.3 (and the codec they share): the first vertical slice. */
@@ -279,6 +285,39 @@ public abstract class TinySepTestSupport {
         String text = bytes.toString(StandardCharsets.UTF_8);
         log.info("g! {}\n{}", commandLine, text);
         return text;
+    }
+
+    /**
+     * Waits until the device graph ({@link Topology#of(BundleContext)}) is exactly {@code expected}; on timeout fails
+     * with an equality assertion, so the report shows the missing and extra lines.
+     */
+    protected void expectTopology(Set<String> expected) {
+        Set<String> want = new TreeSet<>(expected);
+        try {
+            await(TIMEOUT, () -> Topology.of(context).equals(want), "device graph " + want);
+        } catch (AssertionError timeout) {
+            assertEquals("device graph", want, Topology.of(context)); // shows the difference
+        }
+    }
+
+    /** @return a simulated AmICA node that talks to the running UDP bus radio ({@code BusRadioAmicaUdp}) */
+    protected AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
+        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
+    }
+
+    /**
+     * A {@link #node(int, int, AmicaNodeType...)} that has sent its keep-alive, so the platform picks it up: the
+     * usual first step of a test that needs the node's devices.
+     */
+    protected AmicaNode awakeNode(int netgroup, int address, AmicaNodeType... types) throws IOException {
+        AmicaNode node = node(netgroup, address, types);
+        try {
+            node.keepAlive();
+        } catch (IOException | RuntimeException e) {
+            node.close();
+            throw e;
+        }
+        return node;
     }
 
     /** @return the UDP port of the Time Controller's synchroniser (service property {@code tinysep.sync.port}) */

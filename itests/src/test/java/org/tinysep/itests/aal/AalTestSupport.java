@@ -8,18 +8,21 @@ import java.nio.file.Files;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
-import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.itests.TinySepTestSupport;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * AAL service tests: the Time Controller in EXTERNAL (virtual, lock-step) mode on a free port, House Information on
@@ -27,7 +30,8 @@ import org.tinysep.itests.TinySepTestSupport;
  */
 abstract class AalTestSupport extends TinySepTestSupport {
 
-    static final String BUS = "BusRadioAmicaUdp";
+    /** Inactivity Recognition reading days in UTC, for tests that check times of day ({@code HH:mm} in mails). */
+    static final Map<String, String> INACTIVITY_UTC = Map.of("timeZone", "UTC");
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
@@ -43,25 +47,37 @@ abstract class AalTestSupport extends TinySepTestSupport {
     }
 
     /** @return a lock-step synchroniser on the Time Controller's port */
-    AalSync sync() throws IOException {
-        String filter = "(&(" + DeviceProperties.DRIVER_NAME + "=TimeController)(tinysep.sync.port=*))";
-        awaitService(Driver.class, filter, TIMEOUT);
+    SyncPeer sync() throws IOException {
+        SyncPeer sync = new SyncPeer(syncPort());
         try {
-            ServiceReference<?> ref = context.getServiceReferences(Driver.class.getName(), filter)[0];
-            return new AalSync(((Number) ref.getProperty("tinysep.sync.port")).intValue());
-        } catch (InvalidSyntaxException e) {
-            throw new IllegalStateException(e);
+            return sync.hello();
+        } catch (IOException | RuntimeException | Error e) {
+            sync.close();
+            throw e;
         }
+    }
+
+    /**
+     * Points the Mail Manager at a test SMTP server (no TLS, short timeouts and retries, a fresh spool folder) with
+     * one recipient, and waits until it is configured: idle and mailing that recipient.
+     *
+     * @return the Mail Manager
+     */
+    MailManagerProvider mailTo(SmtpSink sink, String recipient) throws IOException {
+        configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
+                "security", "NONE", "from", "tinysep@home.test", "recipients", recipient,
+                "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
+                "spoolDir", Files.createTempDirectory("tinysep-aal-spool").toString()));
+        MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
+        await(TIMEOUT, () -> mail.status() == MailStatus.IDLE && mail.recipients().equals(List.of(recipient)),
+                "the Mail Manager configured");
+        return mail;
     }
 
     /** @return a whole second a day ahead of the platform clock: the start of a test's virtual time */
     Instant tomorrow() {
         return awaitService(TimeControllerProvider.class, null, TIMEOUT).now().truncatedTo(ChronoUnit.SECONDS)
                 .plusSeconds(86_400);
-    }
-
-    AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws IOException {
-        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
     }
 
     /**
@@ -97,6 +113,15 @@ abstract class AalTestSupport extends TinySepTestSupport {
         }, "the device manager to know " + d.uid());
         await(TIMEOUT, () -> hasRoom(d.uid()), d.name() + " placed in " + roomName);
         return d;
+    }
+
+    /**
+     * {@link #place} in a room named like its type ({@code Bathroom}, {@code Kitchen}, …), adding the room first
+     * unless the house has it: the usual set-up of one sensor per room.
+     */
+    Device placeIn(AmicaNode node, String deviceType, String room) throws IOException {
+        room(room, room);
+        return place(node, deviceType, room);
     }
 
     private boolean hasRoom(String deviceUid) {

@@ -5,7 +5,6 @@ import static org.junit.Assert.assertFalse;
 import static org.junit.Assert.assertTrue;
 import static org.tinysep.amica.protocol.AmicaNodeType.MOVEMENT;
 
-import java.nio.file.Files;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
@@ -26,10 +25,9 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailDelivery;
-import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
@@ -55,7 +53,7 @@ public class AlertEscalationTest extends AalTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        configs.put("org.tinysep.inactivity", INACTIVITY_UTC);
         configs.put("org.tinysep.alerts", Map.of("contacts", FIRST + ", " + SECOND + ", " + THIRD,
                 "repeatMinutes", "10", "escalateMinutes", "15", "summaryTime", "", "timeZone", "UTC"));
         return configs;
@@ -64,24 +62,17 @@ public class AlertEscalationTest extends AalTestSupport {
     /** A collapse in the bathroom: the alert raised at t + 45 min, its first message to the first contact. */
     private final class Flat implements AutoCloseable {
         final SmtpSink sink = new SmtpSink().start();
-        final AalSync sync = sync();
+        final SyncPeer sync = sync();
         final AmicaNode bath = node(1, 40, MOVEMENT);
         final Instant t = tomorrow();
         AlertService alerts;
         InactivityRecognitionProvider inactivity;
 
         Flat() throws Exception {
-            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
-                    "security", "NONE", "from", "tinysep@home.test", "recipients", CARER,
-                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
-                    "spoolDir", Files.createTempDirectory("tinysep-alerts-spool").toString()));
-            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
-            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE && mail.recipients().equals(List.of(CARER)),
-                    "the Mail Manager configured");
+            mailTo(sink, CARER);
             alerts = awaitService(AlertService.class, null, TIMEOUT);
             sync.tickDone(t);
-            room("Bathroom", "Bathroom");
-            place(bath, "AmicaMovement", "Bathroom");
+            placeIn(bath, "AmicaMovement", "Bathroom");
             inactivity = awaitService(InactivityRecognitionProvider.class, null, TIMEOUT);
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
             bath.motion(true);

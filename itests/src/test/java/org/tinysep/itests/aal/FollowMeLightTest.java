@@ -18,6 +18,7 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * Follow Me Light end to end in virtual time: real AmICA movement and light nodes over UDP, placed in the bedroom
@@ -31,78 +32,97 @@ public class FollowMeLightTest extends AalTestSupport {
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.followmelight", Map.of("graceSeconds", "60", "brightness", "80"));
-        return configs;
+        return replacing(super.initialConfigurations(), "org.tinysep.followmelight",
+                Map.of("graceSeconds", "60", "brightness", "80"));
+    }
+
+    /**
+     * The flat of both tests, in virtual time from {@link #t}: a Bedroom and a Hall, each with a sensor and a light
+     * (the hall's movement sensor 1.42 and the bedroom's simple light 1.51; the bedroom sensor and the hall light
+     * vary), all placed; {@link #followMe()} waits until Follow Me Light has both lights. Closes its nodes.
+     */
+    private final class BedroomAndHall implements AutoCloseable {
+        final SyncPeer sync = sync();
+        final AmicaNode bedSensor;
+        final AmicaNode hallSensor = node(1, 42, MOVEMENT);
+        final AmicaNode bedLight = node(1, 51, SIMPLE_LIGHT);
+        final AmicaNode hallLight;
+        final Instant t = tomorrow();
+
+        BedroomAndHall(AmicaNode bedSensor, String bedSensorType, AmicaNode hallLight, String hallLightType)
+                throws Exception {
+            this.bedSensor = bedSensor;
+            this.hallLight = hallLight;
+            sync.tickDone(t);
+            room("Bedroom", "Bedroom");
+            room("Hall", "Hall");
+            place(bedSensor, bedSensorType, "Bedroom");
+            place(hallSensor, "AmicaMovement", "Hall");
+            place(bedLight, "AmicaSimpleLight", "Bedroom");
+            place(hallLight, hallLightType, "Hall");
+        }
+
+        /** @return Follow Me Light's device, once both lights are connected */
+        Device followMe() {
+            Device followMe = awaitService(Device.class, "(tinysep.driver.name=FollowMeLight)", TIMEOUT);
+            await(TIMEOUT, () -> parameter(followMe, "lights").equals("2"), "both lights connected");
+            return followMe;
+        }
+
+        @Override
+        public void close() throws Exception {
+            try (SyncPeer s = sync; AmicaNode a = bedSensor; AmicaNode b = hallSensor; AmicaNode c = bedLight;
+                    AmicaNode d = hallLight) {
+                // closes all, in reverse order, like the tests' try-with-resources did
+            }
+        }
     }
 
     @Test
     public void theLightsFollowAWalkFromTheBedroomToTheHall() throws Exception {
-        try (AalSync sync = sync();
-                AmicaNode bedSensor = node(1, 41, MOVEMENT);
-                AmicaNode hallSensor = node(1, 42, MOVEMENT);
-                AmicaNode bedLight = node(1, 51, SIMPLE_LIGHT);
-                AmicaNode hallLight = node(1, 52, DIMMABLE_LIGHT)) {
-            Instant t = tomorrow();
-            sync.tickDone(t);
-            room("Bedroom", "Bedroom");
-            room("Hall", "Hall");
-            place(bedSensor, "AmicaMovement", "Bedroom");
-            place(hallSensor, "AmicaMovement", "Hall");
-            place(bedLight, "AmicaSimpleLight", "Bedroom");
-            place(hallLight, "AmicaDimmableLight", "Hall");
-            bedLight.send(new LightControl(0));
-            hallLight.send(new LightControl(0));
-            Device followMe = awaitService(Device.class, "(tinysep.driver.name=FollowMeLight)", TIMEOUT);
-            await(TIMEOUT, () -> parameter(followMe, "lights").equals("2"), "both lights connected");
+        try (BedroomAndHall home = new BedroomAndHall(node(1, 41, MOVEMENT), "AmicaMovement",
+                node(1, 52, DIMMABLE_LIGHT), "AmicaDimmableLight")) {
+            SyncPeer sync = home.sync;
+            Instant t = home.t;
+            home.bedLight.send(new LightControl(0));
+            home.hallLight.send(new LightControl(0));
+            Device followMe = home.followMe();
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
 
-            bedSensor.motion(true);
-            expectCommand(bedLight, 5, 2, 0, 100);
+            home.bedSensor.motion(true);
+            expectCommand(home.bedLight, 5, 2, 0, 100);
             assertEquals(Occupancy.OCCUPIED, flat.occupancy());
 
             sync.tickDone(t.plusSeconds(30));
-            hallSensor.motion(true);
-            expectCommand(hallLight, 5, 2, 0, 80);
+            home.hallSensor.motion(true);
+            expectCommand(home.hallLight, 5, 2, 0, 80);
 
             sync.tickDone(t.plusSeconds(59));
             sync.tickDone(t.plusSeconds(60));
-            expectCommand(bedLight, 5, 2, 0, 0);
+            expectCommand(home.bedLight, 5, 2, 0, 0);
             sync.tickDone(t.plusSeconds(89));
             sync.tickDone(t.plusSeconds(90));
-            expectCommand(hallLight, 5, 2, 0, 0);
+            expectCommand(home.hallLight, 5, 2, 0, 0);
             assertEquals("", parameter(followMe, "litRooms"));
         }
     }
 
     @Test
     public void aPetMovesTheLightsOnlyWhileAPersonIsHome() throws Exception {
-        try (AalSync sync = sync();
-                AmicaNode collar = node(2, 7, PET_COLLAR);
-                AmicaNode hallSensor = node(1, 42, MOVEMENT);
-                AmicaNode bedLight = node(1, 51, SIMPLE_LIGHT);
-                AmicaNode hallLight = node(1, 52, SIMPLE_LIGHT)) {
-            Instant t = tomorrow();
-            sync.tickDone(t);
-            room("Bedroom", "Bedroom");
-            room("Hall", "Hall");
-            place(collar, "AmicaPetMovement", "Bedroom");
-            place(hallSensor, "AmicaMovement", "Hall");
-            place(bedLight, "AmicaSimpleLight", "Bedroom");
-            place(hallLight, "AmicaSimpleLight", "Hall");
-            Device followMe = awaitService(Device.class, "(tinysep.driver.name=FollowMeLight)", TIMEOUT);
-            await(TIMEOUT, () -> parameter(followMe, "lights").equals("2"), "both lights connected");
+        try (BedroomAndHall home = new BedroomAndHall(node(2, 7, PET_COLLAR), "AmicaPetMovement",
+                node(1, 52, SIMPLE_LIGHT), "AmicaSimpleLight")) {
+            Device followMe = home.followMe();
             FlatOccupancyProvider flat = awaitService(FlatOccupancyProvider.class, null, TIMEOUT);
 
-            collar.motion(true); // the pet alone: the flat is not occupied, nothing happens
-            sync.tickDone(t.plusSeconds(10));
-            hallSensor.motion(true); // a person: the same bus radio handles it after the pet's report
-            expectCommand(hallLight, 5, 2, 0, 100);
+            home.bedSensor.motion(true); // the pet alone: the flat is not occupied, nothing happens
+            home.sync.tickDone(home.t.plusSeconds(10));
+            home.hallSensor.motion(true); // a person: the same bus radio handles it after the pet's report
+            expectCommand(home.hallLight, 5, 2, 0, 100);
             assertEquals(Occupancy.OCCUPIED, flat.occupancy());
             assertEquals("the pet's earlier motion lit nothing", "Hall", parameter(followMe, "litRooms"));
 
-            collar.motion(true); // the pet with a person home: its room is lit too
-            expectCommand(bedLight, 5, 2, 0, 100);
+            home.bedSensor.motion(true); // the pet with a person home: its room is lit too
+            expectCommand(home.bedLight, 5, 2, 0, 100);
             assertEquals("Bedroom, Hall", parameter(followMe, "litRooms"));
         }
     }

@@ -4,7 +4,6 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 import static org.tinysep.amica.protocol.AmicaNodeType.MOVEMENT;
 
-import java.nio.file.Files;
 import java.time.Instant;
 import java.time.ZoneOffset;
 import java.time.format.DateTimeFormatter;
@@ -18,10 +17,9 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
-import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
@@ -37,24 +35,16 @@ public class InactivityRecognitionTest extends AalTestSupport {
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
-        return configs;
+        return replacing(super.initialConfigurations(), "org.tinysep.inactivity", INACTIVITY_UTC);
     }
 
     @Test
     public void aCollapseInTheBathroomMailsOnceAndTheNextMovementClearsTheAlert() throws Exception {
-        try (SmtpSink sink = new SmtpSink().start(); AalSync sync = sync(); AmicaNode bath = node(1, 40, MOVEMENT)) {
-            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
-                    "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
-                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
-                    "spoolDir", Files.createTempDirectory("tinysep-aal-spool").toString()));
-            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
-            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
+        try (SmtpSink sink = new SmtpSink().start(); SyncPeer sync = sync(); AmicaNode bath = node(1, 40, MOVEMENT)) {
+            mailTo(sink, "carer@care.test");
             Instant t = tomorrow();
             sync.tickDone(t);
-            room("Bathroom", "Bathroom");
-            place(bath, "AmicaMovement", "Bathroom");
+            placeIn(bath, "AmicaMovement", "Bathroom");
             InactivityRecognitionProvider inactivity = awaitService(InactivityRecognitionProvider.class, null,
                     TIMEOUT);
             Device device = awaitService(Device.class, "(tinysep.device.uid=" + inactivity.deviceUid() + ")",

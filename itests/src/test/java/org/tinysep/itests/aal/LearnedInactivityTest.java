@@ -4,7 +4,6 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 import static org.tinysep.amica.protocol.AmicaNodeType.MOVEMENT;
 
-import java.nio.file.Files;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.temporal.ChronoUnit;
@@ -18,9 +17,8 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.service.InactivityAlert;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
-import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
@@ -35,13 +33,11 @@ public class LearnedInactivityTest extends AalTestSupport {
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC", "detector", "LEARNED",
-                "learnMinDays", "1"));
-        return configs;
+        return replacing(super.initialConfigurations(), "org.tinysep.inactivity",
+                Map.of("timeZone", "UTC", "detector", "LEARNED", "learnMinDays", "1"));
     }
 
-    private AalSync sync;
+    private SyncPeer sync;
     private InactivityRecognitionProvider inactivity;
     private Device device;
 
@@ -52,6 +48,12 @@ public class LearnedInactivityTest extends AalTestSupport {
         await(TIMEOUT, () -> !parameter(device, "lastActivity").equals(before)
                 && parameter(device, "lastActivity").contains("in " + room), "movement in " + room);
         node.motion(false);
+    }
+
+    /** Advances virtual time to {@code at}, then {@link #motion(AmicaNode, String)}: one step of a scripted day. */
+    private void motionAt(Instant at, AmicaNode node, String room) throws Exception {
+        sync.tickDone(at);
+        motion(node, room);
     }
 
     private void setUp() {
@@ -66,32 +68,23 @@ public class LearnedInactivityTest extends AalTestSupport {
 
     @Test
     public void aLearnedLimitShorterThanTheFixedOneAlertsEarlierAndExplainsItself() throws Exception {
-        try (SmtpSink sink = new SmtpSink().start(); AalSync s = sync(); AmicaNode bath = node(1, 41, MOVEMENT);
+        try (SmtpSink sink = new SmtpSink().start(); SyncPeer s = sync(); AmicaNode bath = node(1, 41, MOVEMENT);
                 AmicaNode kitchen = node(1, 42, MOVEMENT)) {
             sync = s;
-            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
-                    "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
-                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
-                    "spoolDir", Files.createTempDirectory("tinysep-learned-spool").toString()));
-            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
-            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
+            mailTo(sink, "carer@care.test");
             Instant day1 = midnight().plus(Duration.ofHours(14));
             sync.tickDone(day1);
-            room("Bathroom", "Bathroom");
-            room("Kitchen", "Kitchen");
-            place(bath, "AmicaMovement", "Bathroom");
-            place(kitchen, "AmicaMovement", "Kitchen");
+            placeIn(bath, "AmicaMovement", "Bathroom");
+            placeIn(kitchen, "AmicaMovement", "Kitchen");
             setUp();
 
             // day 1: 10 quiet minutes after the bathroom, at 14:00
             motion(bath, "Bathroom");
-            sync.tickDone(day1.plus(Duration.ofMinutes(10)));
-            motion(kitchen, "Kitchen");
+            motionAt(day1.plus(Duration.ofMinutes(10)), kitchen, "Kitchen");
 
             // day 2, 14:00: the bathroom, then nothing (a collapse)
             Instant day2 = day1.plus(Duration.ofDays(1));
-            sync.tickDone(day2);
-            motion(bath, "Bathroom");
+            motionAt(day2, bath, "Bathroom");
             await(TIMEOUT, () -> inactivity.state() == InactivityState.WATCHING, "WATCHING");
             String reason = parameter(device, "limitReason");
             assertTrue(reason, reason.startsWith("usually at most 10 min between 13:00 and 16:00 in Bathroom, "
@@ -117,39 +110,31 @@ public class LearnedInactivityTest extends AalTestSupport {
 
     @Test
     public void aNightTripToTheBathroomThatDoesNotEndIsAlertedByTheBathroomsNightLimit() throws Exception {
-        try (AalSync s = sync(); AmicaNode bed = node(1, 51, MOVEMENT); AmicaNode bath = node(1, 52, MOVEMENT);
+        try (SyncPeer s = sync(); AmicaNode bed = node(1, 51, MOVEMENT); AmicaNode bath = node(1, 52, MOVEMENT);
                 AmicaNode kitchen = node(1, 53, MOVEMENT)) {
             sync = s;
             Instant night1 = midnight().minus(Duration.ofHours(1)); // 23:00
             sync.tickDone(night1);
-            room("Bedroom", "Bedroom");
-            room("Bathroom", "Bathroom");
-            room("Kitchen", "Kitchen");
-            place(bed, "AmicaMovement", "Bedroom");
-            place(bath, "AmicaMovement", "Bathroom");
-            place(kitchen, "AmicaMovement", "Kitchen");
+            placeIn(bed, "AmicaMovement", "Bedroom");
+            placeIn(bath, "AmicaMovement", "Bathroom");
+            placeIn(kitchen, "AmicaMovement", "Kitchen");
             setUp();
 
             // night 1: to bed at 23:00, bathroom 03:00 for 8 min, back to bed, up at 07:00
             motion(bed, "Bedroom");
             String asleep = parameter(device, "limitReason");
             assertTrue(asleep, asleep.contains("Bedroom asleep"));
-            sync.tickDone(night1.plus(Duration.ofHours(4)));
-            motion(bath, "Bathroom");
-            sync.tickDone(night1.plus(Duration.ofHours(4)).plus(Duration.ofMinutes(8)));
-            motion(bed, "Bedroom");
-            sync.tickDone(night1.plus(Duration.ofHours(8)));
-            motion(kitchen, "Kitchen");
+            motionAt(night1.plus(Duration.ofHours(4)), bath, "Bathroom");
+            motionAt(night1.plus(Duration.ofHours(4)).plus(Duration.ofMinutes(8)), bed, "Bedroom");
+            motionAt(night1.plus(Duration.ofHours(8)), kitchen, "Kitchen");
 
             // night 2: to bed at 23:00; 03:00 bathroom, and no return
             Instant night2 = night1.plus(Duration.ofDays(1));
-            sync.tickDone(night2);
-            motion(bed, "Bedroom");
+            motionAt(night2, bed, "Bedroom");
             String sleep = parameter(device, "limitReason");
             assertTrue(sleep, sleep.startsWith("usually at most 4 h between 22:00 and 01:00 asleep in Bedroom"));
             Instant up = night2.plus(Duration.ofHours(4));
-            sync.tickDone(up);
-            motion(bath, "Bathroom");
+            motionAt(up, bath, "Bathroom");
             await(TIMEOUT, () -> inactivity.state() == InactivityState.WATCHING, "WATCHING");
             String reason = parameter(device, "limitReason");
             assertTrue(reason, reason.startsWith("usually at most 8 min between 02:00 and 05:00 in Bathroom"));

@@ -20,6 +20,7 @@ import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * A home without a single motion sensor (issue 11): a front door, a bathroom door and a seat mat (replayed, as
@@ -33,14 +34,12 @@ public class NoMotionSensorHomeTest extends AalTestSupport {
 
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
-        Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
-        return configs;
+        return replacing(super.initialConfigurations(), "org.tinysep.inactivity", INACTIVITY_UTC);
     }
 
     @Test
     public void matsAndDoorsKeepTheFlatOccupiedAndACollapseIsAlerted() throws Exception {
-        try (AalSync sync = sync(); AmicaNode front = node(1, 61, DOOR); AmicaNode bathDoor = node(1, 62, DOOR);
+        try (SyncPeer sync = sync(); AmicaNode front = node(1, 61, DOOR); AmicaNode bathDoor = node(1, 62, DOOR);
                 AmicaNode seat = node(1, 63, WINDOW)) {
             Instant t = tomorrow();
             sync.tickDone(t);

@@ -28,6 +28,7 @@ import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * AmICA presence nodes end to end (issue 11): a node announcing a presence type (product-id bits 8..11) becomes an
@@ -45,7 +46,7 @@ public class PresenceNodeHomeTest extends AalTestSupport {
                         Device flatDevice, InactivityRecognitionProvider inactivity, Device detector) {
     }
 
-    private Home arrive(AalSync sync, Instant t, AmicaNode front, AmicaNode matNode, String room, String type)
+    private Home arrive(SyncPeer sync, Instant t, AmicaNode front, AmicaNode matNode, String room, String type)
             throws Exception {
         sync.tickDone(t);
         room("Hall", "Hall");
@@ -74,7 +75,7 @@ public class PresenceNodeHomeTest extends AalTestSupport {
 
     @Test
     public void aSeatMatThatIsOnKeepsTheFlatOccupiedAfterTheOuterDoorClosed() throws Exception {
-        try (AalSync sync = sync(); AmicaNode front = node(1, 71, DOOR); AmicaNode seat = node(1, 72, PRESENCE_SEAT)) {
+        try (SyncPeer sync = sync(); AmicaNode front = node(1, 71, DOOR); AmicaNode seat = node(1, 72, PRESENCE_SEAT)) {
             Home h = arrive(sync, tomorrow(), front, seat, "Living Room", "Living room");
             assertEquals(PresenceKind.SEAT, h.presence().kind());
             shell("tinysep:set " + h.mat().uid() + " name \"Seat (Pressure)\"");
@@ -114,7 +115,7 @@ public class PresenceNodeHomeTest extends AalTestSupport {
 
     @Test
     public void aBedMatTurningOnPutsTheDetectorInTheSleepState() throws Exception {
-        try (AalSync sync = sync(); AmicaNode front = node(1, 73, DOOR); AmicaNode bed = node(1, 74, PRESENCE_BED)) {
+        try (SyncPeer sync = sync(); AmicaNode front = node(1, 73, DOOR); AmicaNode bed = node(1, 74, PRESENCE_BED)) {
             // by day (noon in the platform's zone): only the mat can say that she is in bed, not the night
             Instant noon = tomorrow().atZone(ZoneId.systemDefault()).truncatedTo(ChronoUnit.DAYS).plusDays(1)
                     .plusHours(12).toInstant();

@@ -5,7 +5,6 @@ import static org.tinysep.amica.protocol.AmicaNodeType.DOOR;
 import static org.tinysep.amica.protocol.AmicaNodeType.MOVEMENT;
 import static org.tinysep.amica.protocol.AmicaNodeType.SIMPLE_LIGHT;
 
-import java.nio.file.Files;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -21,6 +20,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
@@ -124,20 +124,15 @@ public class ScriptedDayTest extends VirtualFlatTestSupport {
         Map<String, Map<String, String>> configs = super.initialConfigurations();
         configs.put("org.tinysep.followmelight", Map.of("graceSeconds", "60", "brightness", "100"));
         configs.put("org.tinysep.flatoccupancy", Map.of("leaveTimeoutSeconds", "600", "exitGraceSeconds", "10"));
-        configs.put("org.tinysep.inactivity", Map.of("timeZone", "UTC"));
+        configs.put("org.tinysep.inactivity", INACTIVITY_UTC);
         return configs;
     }
 
     @Test
     public void aNormalDayLightsTheRightRoomsAtTheRightTimesAndMailsNobody() throws Exception {
         List<AutoCloseable> closing = new ArrayList<>();
-        try (SmtpSink sink = new SmtpSink().start(); AalSync sync = sync()) {
-            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
-                    "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
-                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
-                    "spoolDir", Files.createTempDirectory("tinysep-aal-spool").toString()));
-            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
-            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
+        try (SmtpSink sink = new SmtpSink().start(); SyncPeer sync = sync()) {
+            MailManagerProvider mail = mailTo(sink, "carer@care.test");
 
             VirtualFlat flat = virtualFlat(sync, 700); // dense ticks cover the 600 s leave check and the 60 s grace
             closing.add(flat::close);

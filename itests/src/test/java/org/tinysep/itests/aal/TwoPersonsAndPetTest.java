@@ -17,6 +17,7 @@ import org.ops4j.pax.exam.spi.reactors.ExamReactorStrategy;
 import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * Two persons and a pet, in virtual time (Follow Me Light README: multi-person rule, pet rule). With two persons
@@ -80,7 +81,7 @@ public class TwoPersonsAndPetTest extends VirtualFlatTestSupport {
     @Test
     public void eachRoomKeepsItsOwnGraceAndThePetMovesLightsOnlyWithAPersonHome() throws Exception {
         List<AutoCloseable> closing = new ArrayList<>();
-        try (AalSync sync = sync()) {
+        try (SyncPeer sync = sync()) {
             VirtualFlat flat = virtualFlat(sync, 200); // dense ticks cover the 120 s leave check and the 60 s grace
             closing.add(flat::close);
             ROOMS.forEach(r -> room(r, r));

@@ -4,7 +4,6 @@ import static org.junit.Assert.assertEquals;
 import static org.junit.Assert.assertTrue;
 import static org.tinysep.amica.protocol.AmicaNodeType.MOVEMENT;
 
-import java.nio.file.Files;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneOffset;
@@ -22,9 +21,8 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
-import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.api.service.MailStatus;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
@@ -53,20 +51,13 @@ public class UnwatchedRoomAlertTest extends AalTestSupport {
 
     @Test
     public void anAlertWhileTheBathroomSensorIsOfflineSaysTheBathroomCouldNotBeWatched() throws Exception {
-        try (SmtpSink sink = new SmtpSink().start(); AalSync sync = sync(); AmicaNode bath = node(1, 61, MOVEMENT);
+        try (SmtpSink sink = new SmtpSink().start(); SyncPeer sync = sync(); AmicaNode bath = node(1, 61, MOVEMENT);
                 AmicaNode kitchen = node(1, 62, MOVEMENT)) {
-            configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
-                    "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
-                    "connectTimeoutSeconds", "2", "retryInitialSeconds", "1", "retryMaxSeconds", "2",
-                    "spoolDir", Files.createTempDirectory("tinysep-unwatched-spool").toString()));
-            MailManagerProvider mail = awaitService(MailManagerProvider.class, null, TIMEOUT);
-            await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
+            mailTo(sink, "carer@care.test");
             Instant t = tomorrow().plus(Duration.ofHours(10));
             sync.tickDone(t);
-            room("Bathroom", "Bathroom");
-            room("Kitchen", "Kitchen");
-            place(bath, "AmicaMovement", "Bathroom");
-            place(kitchen, "AmicaMovement", "Kitchen");
+            placeIn(bath, "AmicaMovement", "Bathroom");
+            placeIn(kitchen, "AmicaMovement", "Kitchen");
             InactivityRecognitionProvider inactivity = awaitService(InactivityRecognitionProvider.class, null,
                     TIMEOUT);
             SensorHealthProvider health = awaitService(SensorHealthProvider.class, null, TIMEOUT);

@@ -21,6 +21,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * Plays a script of sensor events in virtual time and records what the platform does, each entry stamped
@@ -41,7 +42,7 @@ final class VirtualFlat {
     final List<String> commands = Collections.synchronizedList(new ArrayList<>());
     final List<String> confirmations = Collections.synchronizedList(new ArrayList<>());
 
-    private final AalSync sync;
+    private final SyncPeer sync;
     private final TimeControllerProvider clock;
     private final Instant midnight;
     private final long denseSeconds;
@@ -54,7 +55,7 @@ final class VirtualFlat {
      * @param denseSeconds after every event, TICK every second for this long (covering every grace period and
      *                     leave check the event starts); between such windows, jump straight to the next event
      */
-    VirtualFlat(AalSync sync, TimeControllerProvider clock, Instant midnight, long denseSeconds) throws IOException {
+    VirtualFlat(SyncPeer sync, TimeControllerProvider clock, Instant midnight, long denseSeconds) throws IOException {
         this.sync = sync;
         this.clock = clock;
         this.midnight = midnight;

@@ -10,6 +10,7 @@ import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.PetMovementProvider;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * Builds a {@link VirtualFlat}: places simulated AmICA nodes in rooms and connects the flat's probes to each device
@@ -22,7 +23,7 @@ abstract class VirtualFlatTestSupport extends AalTestSupport {
     static final String INACTIVITY = "InactivityRecognition";
 
     /** Starts the flat's virtual time at midnight of tomorrow (UTC). */
-    VirtualFlat virtualFlat(AalSync sync, long denseSeconds) throws IOException {
+    VirtualFlat virtualFlat(SyncPeer sync, long denseSeconds) throws IOException {
         TimeControllerProvider clock = awaitService(TimeControllerProvider.class, null, TIMEOUT);
         return new VirtualFlat(sync, clock, tomorrow().truncatedTo(ChronoUnit.DAYS), denseSeconds);
     }

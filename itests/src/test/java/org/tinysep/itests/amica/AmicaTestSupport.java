@@ -36,13 +36,6 @@ import org.tinysep.itests.TinySepTestSupport;
 @ExamReactorStrategy(PerClass.class) // both inherited by the test classes
 public abstract class AmicaTestSupport extends TinySepTestSupport {
 
-    static final String BUS = "BusRadioAmicaUdp";
-
-    /** @return a simulated node that talks to the running UDP bus radio */
-    protected AmicaNode node(int netgroup, int address, AmicaNodeType... types) throws Exception {
-        return new AmicaNode(netgroup, address, udpPortOf(BUS), types);
-    }
-
     /**
      * Sends the node's keep-alive and waits for its abstraction: the Device service of {@code deviceType} and the
      * provider of {@code type}, which must carry the node's own type {@code nodeType} only.

@@ -41,8 +41,7 @@ public class CraftedArchiveTest {
         Path home = home();
         Path var = home.resolve("var");
         try (PlatformProcess p = started(home)) {
-            Path zip = home.resolve("config.zip");
-            expect(p, "tinysep:backup " + zip, "wrote ");
+            Path zip = backup(p, home);
             assertEquals("state folder", "rwx------", mode(var));
             String log;
             try (Stream<Path> list = Files.list(home)) { // platform-<n>.log: n counts launches in this JVM
@@ -77,8 +76,7 @@ public class CraftedArchiveTest {
         Path home = home();
         Path var = home.resolve("var");
         try (PlatformProcess p = started(home)) {
-            Path zip = home.resolve("config.zip");
-            expect(p, "tinysep:backup " + zip, "wrote ");
+            Path zip = backup(p, home);
             Map<String, byte[]> archive = read(zip);
 
             // item 4: crafted archives are refused, nothing changes
@@ -158,6 +156,13 @@ public class CraftedArchiveTest {
             p.close();
             throw e;
         }
+    }
+
+    /** Writes a backup with {@code tinysep:backup}; @return the archive, {@code <home>/config.zip} */
+    private static Path backup(PlatformProcess p, Path home) {
+        Path zip = home.resolve("config.zip");
+        expect(p, "tinysep:backup " + zip, "wrote ");
+        return zip;
     }
 
     private static void refused(PlatformProcess p, Path zip, String reason) {

@@ -6,11 +6,6 @@ import static org.junit.Assert.assertTrue;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.net.DatagramPacket;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
@@ -39,6 +34,7 @@ import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 import org.tinysep.itests.TestSyncKey;
 import org.tinysep.itests.TinySepTestSupport;
 import org.tinysep.testsupport.mail.SmtpSink;
@@ -78,42 +74,6 @@ public class SensorHealthTest extends TinySepTestSupport {
         return configs;
     }
 
-    /** A time synchroniser with the tests' key. */
-    private static final class Sync implements AutoCloseable {
-        private final DatagramSocket socket;
-        private final InetSocketAddress platform;
-        private String session;
-        private long seq;
-
-        Sync(int port) throws IOException {
-            socket = new DatagramSocket(0, InetAddress.getLoopbackAddress());
-            socket.setSoTimeout(10_000);
-            platform = new InetSocketAddress(InetAddress.getLoopbackAddress(), port);
-        }
-
-        private String ask(String request) throws IOException {
-            byte[] b = request.getBytes(StandardCharsets.US_ASCII);
-            socket.send(new DatagramPacket(b, b.length, platform));
-            DatagramPacket in = new DatagramPacket(new byte[512], 512);
-            socket.receive(in);
-            return new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII);
-        }
-
-        void tick(Instant at) throws IOException {
-            if (session == null) {
-                session = ask("HELLO").split(" ")[3];
-            }
-            String answer = ask(TestSyncKey.signed(session, "TICK " + (++seq) + " " + at));
-            assertTrue(answer, answer.startsWith("DONE " + seq + " "));
-        }
-
-        @Override
-        public void close() {
-            socket.close();
-        }
-    }
-
-
     private static String parameter(Device device, String key) {
         return device.parameters().stream().filter(p -> p.key().equals(key)).map(Parameter::value).findFirst()
                 .orElse(null);
@@ -131,7 +91,7 @@ public class SensorHealthTest extends TinySepTestSupport {
         TimeControllerProvider clock = awaitService(TimeControllerProvider.class, null, TIMEOUT);
         SensorHealthProvider health = awaitService(SensorHealthProvider.class, null, TIMEOUT);
         shell("tinysep:room-add Bathroom Bathroom");
-        try (SmtpSink sink = new SmtpSink().start(); Sync sync = new Sync(syncPort());
+        try (SmtpSink sink = new SmtpSink().start(); SyncPeer sync = new SyncPeer(syncPort(), 10_000);
                 AmicaNode node = new AmicaNode(1, 1, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT)) {
             configure("org.tinysep.mailmanager", Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()),
                     "security", "NONE", "from", "tinysep@home.test", "recipients", "carer@care.test",
@@ -139,9 +99,9 @@ public class SensorHealthTest extends TinySepTestSupport {
             await(TIMEOUT, () -> mail.status() == MailStatus.IDLE, "the Mail Manager configured");
 
             Instant t = clock.now().truncatedTo(ChronoUnit.SECONDS).plusSeconds(1);
-            sync.tick(t);
+            sync.tickDone(t);
             node.keepAlive();
-            sync.tick(t = t.plusSeconds(1)); // the keep-alive is handled before this tick's DONE
+            sync.tickDone(t = t.plusSeconds(1)); // the keep-alive is handled before this tick's DONE
             NodeHealthSource bus = awaitService(NodeHealthSource.class, "(" + DeviceProperties.NODE_ADDRESS
                     + "=1.1)", TIMEOUT);
             Device busDevice = awaitService(Device.class, "(&(" + DeviceProperties.NODE_ADDRESS + "=1.1)("
@@ -154,10 +114,10 @@ public class SensorHealthTest extends TinySepTestSupport {
 
             // a movement node promises a report every 2 s; 5 missed intervals = 10 s of silence
             for (int s = 1; s < 10; s++) {
-                sync.tick(lastHeard.plusSeconds(s));
+                sync.tickDone(lastHeard.plusSeconds(s));
             }
             assertEquals("still within its intervals", DeviceStatus.State.ONLINE, busDevice.status().state());
-            sync.tick(lastHeard.plusSeconds(10));
+            sync.tickDone(lastHeard.plusSeconds(10));
             assertEquals(DeviceStatus.State.OFFLINE, busDevice.status().state());
             assertTrue(busDevice.status().detail(), busDevice.status().detail().startsWith("silent since "));
             List<String> problems = problems(busDevice.uid());
@@ -167,12 +127,12 @@ public class SensorHealthTest extends TinySepTestSupport {
             String listing = shell("tinysep:devices 1.1");
             assertTrue(listing, listing.contains("[OFFLINE") && listing.contains("linkQuality="));
 
-            sync.tick(lastHeard.plusSeconds(11));
+            sync.tickDone(lastHeard.plusSeconds(11));
             await(TIMEOUT, () -> health.unmonitoredRooms().stream().anyMatch(r -> r.roomName().equals("Bathroom")),
                     "the Bathroom unmonitored");
             assertEquals("no notice before noticeAfterMinutes", 0, sink.messages().size());
-            sync.tick(lastHeard.plusSeconds(71));
-            sync.tick(lastHeard.plusSeconds(72));
+            sync.tickDone(lastHeard.plusSeconds(71));
+            sync.tickDone(lastHeard.plusSeconds(72));
             assertTrue("the offline notice mailed", sink.await(1, TIMEOUT));
             assertEquals("TinySEP notice: sensor offline in Bathroom since " + HH_MM.format(lastHeard),
                     sink.messages().get(0).subject());
@@ -180,27 +140,27 @@ public class SensorHealthTest extends TinySepTestSupport {
                     "This is a notice about the sensors, not an alarm"));
 
             node.motion(false);
-            sync.tick(lastHeard.plusSeconds(73)); // the frame is handled before this DONE
+            sync.tickDone(lastHeard.plusSeconds(73)); // the frame is handled before this DONE
             assertEquals("ONLINE again with the next frame", DeviceStatus.State.ONLINE, busDevice.status().state());
-            sync.tick(lastHeard.plusSeconds(74));
+            sync.tickDone(lastHeard.plusSeconds(74));
             assertTrue("the back-online notice mailed", sink.await(2, TIMEOUT));
             assertEquals("TinySEP notice: sensor back online in Bathroom", sink.messages().get(1).subject());
             assertTrue(health.unmonitoredRooms().isEmpty());
 
             // low battery: two AA cells near empty, reported once before the node dies
             node.send(new KeepAlive(300, 2150, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)), 4242));
-            sync.tick(lastHeard.plusSeconds(75));
+            sync.tickDone(lastHeard.plusSeconds(75));
             assertTrue(bus.health().batteryLow());
             List<String> battery = problems(busDevice.uid()).stream().filter(p -> p.contains("low battery")).toList();
             assertEquals(List.of("AmICA node 1.1 (AmICA node 1.1) reports a low battery: 2150 mV (low below 2200 mV). "
                     + "Replace or recharge it soon, before the node stops reporting."), battery);
             assertTrue(parameter(busDevice, "battery"), parameter(busDevice, "battery").startsWith("2150 mV LOW"));
-            sync.tick(lastHeard.plusSeconds(76));
+            sync.tickDone(lastHeard.plusSeconds(76));
             assertTrue("the low-battery notice mailed", sink.await(3, TIMEOUT));
             assertEquals("TinySEP notice: low battery in Bathroom", sink.messages().get(2).subject());
             node.send(new KeepAlive(302, 2140, 0x0A11, AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)), 4242));
-            sync.tick(lastHeard.plusSeconds(77));
-            sync.tick(lastHeard.plusSeconds(78));
+            sync.tickDone(lastHeard.plusSeconds(77));
+            sync.tickDone(lastHeard.plusSeconds(78));
             assertFalse("reported once", problems(busDevice.uid()).stream().filter(p -> p.contains("low battery"))
                     .count() > 1);
         }

@@ -43,7 +43,6 @@ import org.tinysep.itests.TinySepTestSupport;
 @ExamReactorStrategy(PerClass.class)
 public class UntrustedInputTest extends TinySepTestSupport {
 
-    private static final String BUS = "BusRadioAmicaUdp";
     /** RejectSampler.BURST: rejected frames kept in full before the sampling starts. */
     private static final int KEPT_IN_FULL = 500;
 

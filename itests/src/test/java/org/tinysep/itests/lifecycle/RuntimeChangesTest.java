@@ -13,7 +13,6 @@ import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.TreeSet;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -37,8 +36,6 @@ import org.tinysep.itests.Topology;
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerMethod.class)
 public class RuntimeChangesTest extends TinySepTestSupport {
-
-    private static final String BUS = "BusRadioAmicaUdp";
 
     /** AmICA Door and Window are not provisioned: the tests bring them in. */
     @Override
@@ -132,15 +129,6 @@ public class RuntimeChangesTest extends TinySepTestSupport {
             await(TIMEOUT, () -> !shell("tinysep:drivers").contains("org.tinysep.amica.window"),
                     "the shell uninstall to drop the entry");
             Files.delete(build);
-        }
-    }
-
-    private void expectTopology(Set<String> expected) {
-        Set<String> want = new TreeSet<>(expected);
-        try {
-            await(TIMEOUT, () -> Topology.of(context).equals(want), "device graph " + want);
-        } catch (AssertionError timeout) {
-            assertEquals("device graph", want, Topology.of(context));
         }
     }
 

@@ -45,7 +45,6 @@ import org.tinysep.itests.Topology;
 public class LogHistoryTest extends TinySepTestSupport {
 
     private static final Path VAR = Path.of("target", "itest-var", "LogHistoryTest").toAbsolutePath();
-    private static final String BUS = "BusRadioAmicaUdp";
 
     @Override
     protected List<String> applications() {

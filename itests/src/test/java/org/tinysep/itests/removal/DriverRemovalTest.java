@@ -116,13 +116,8 @@ public class DriverRemovalTest extends RemovalTestSupport {
 
     @Test
     public void stoppingTheBusRadioMakesEveryDeviceThatNeededItRemoveItself() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode door = new AmicaNode(1, 20, port, DOOR);
-                AmicaNode light = new AmicaNode(1, 30, port, SIMPLE_LIGHT)) {
-            movement.keepAlive();
-            door.keepAlive();
-            light.keepAlive();
+        try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode door = awakeNode(1, 20, DOOR);
+                AmicaNode light = awakeNode(1, 30, SIMPLE_LIGHT)) {
             Set<String> flat = Set.of("AmicaMovement@1.17", "AmicaDoor@1.20", "AmicaSimpleLight@1.30",
                     "FlatOccupancy", "InactivityRecognition", "FollowMeLight", "HouseInformation", "MailManager");
             expectGraph(flat, Set.of());
@@ -161,13 +156,9 @@ public class DriverRemovalTest extends RemovalTestSupport {
                     e -> e.kind() == EventKind.DRIVER_REMOVED).size() - 1);
 
             radio.start();
-            int newPort = udpPortOf(BUS);
-            try (AmicaNode movement2 = new AmicaNode(1, 17, newPort, MOVEMENT);
-                    AmicaNode door2 = new AmicaNode(1, 20, newPort, DOOR);
-                    AmicaNode light2 = new AmicaNode(1, 30, newPort, SIMPLE_LIGHT)) {
-                movement2.keepAlive();
-                door2.keepAlive();
-                light2.keepAlive();
+            // the radio's new port: awakeNode asks the restarted driver
+            try (AmicaNode movement2 = awakeNode(1, 17, MOVEMENT); AmicaNode door2 = awakeNode(1, 20, DOOR);
+                    AmicaNode light2 = awakeNode(1, 30, SIMPLE_LIGHT)) {
                 expectGraph(flat, Set.of()); // rebuilt by the nodes' next keep-alives (to the radio's new port)
             }
         }

@@ -35,11 +35,7 @@ public class OptionalConnectionTest extends RemovalTestSupport {
 
     @Test
     public void losingAnOptionalProviderKeepsTheDeviceWhichReconnectsWhenItReturns() throws Exception {
-        int port = udpPortOf(BUS);
-        try (AmicaNode movement = new AmicaNode(1, 17, port, MOVEMENT);
-                AmicaNode light = new AmicaNode(1, 30, port, SIMPLE_LIGHT)) {
-            movement.keepAlive();
-            light.keepAlive();
+        try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode light = awakeNode(1, 30, SIMPLE_LIGHT)) {
             Set<String> full = Set.of(
                     INACTIVITY + " <- MovementProvider of " + MOV,
                     INACTIVITY + " <- FlatOccupancyProvider of FlatOccupancy (optional)",

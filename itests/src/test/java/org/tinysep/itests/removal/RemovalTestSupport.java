@@ -23,8 +23,6 @@ import org.tinysep.itests.Topology;
  */
 abstract class RemovalTestSupport extends TinySepTestSupport {
 
-    static final String BUS = "BusRadioAmicaUdp";
-
     @Override
     protected List<String> applications() {
         List<String> apps = new ArrayList<>(FIRST_SLICE);

@@ -19,6 +19,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * A component ticking in virtual time through the support library's PlatformTicker: Flat Occupancy's 600 s leave

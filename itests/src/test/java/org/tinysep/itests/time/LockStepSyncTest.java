@@ -20,6 +20,7 @@ import org.tinysep.api.device.Driver;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * The thesis's time synchroniser protocol (5.4.3) over real UDP: each TICK runs every listener before its DONE

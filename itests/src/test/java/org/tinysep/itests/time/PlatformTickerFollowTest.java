@@ -20,6 +20,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.itests.AmicaNode;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * The support library's PlatformTicker (inside Flat Occupancy) follows the Time Controller as it comes and goes:

@@ -16,6 +16,7 @@ import org.ops4j.pax.exam.spi.reactors.PerMethod;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * Issue 17.5: after the synchroniser has gone the platform does not stay frozen. In EXTERNAL mode with a short

@@ -24,6 +24,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerListener;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.itests.SyncPeer;
 
 /**
  * The clock switches between REAL and EXTERNAL at runtime, by ConfigAdmin, device parameter and shell command,

@@ -88,8 +88,7 @@ public class WebAlertsTest extends WebTestSupport {
         await(TIMEOUT, () -> call("GET", "/api/caregiver/sensors", null, caregiver, false).body()
                 .startsWith("{\"sensorHealth\":true"), "the console to see the sensor health service");
         shell("tinysep:room-add Bathroom Bathroom");
-        try (AmicaNode node = new AmicaNode(1, 21, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT)) {
-            node.keepAlive();
+        try (AmicaNode node = awakeNode(1, 21, AmicaNodeType.MOVEMENT)) {
             String movement = awaitDevice(caregiver, "AmicaMovement", "1.21");
             shell("tinysep:set " + movement + " room Bathroom");
             // two AA cells near empty (the bus radio's lowBatteryMillivolts is 2200)

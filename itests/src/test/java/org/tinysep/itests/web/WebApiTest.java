@@ -105,8 +105,7 @@ public class WebApiTest extends WebTestSupport {
     @Test
     public void aBadParameterIs400WithTheDevicesMessage() throws Exception {
         Login login = login("installer", INSTALLER_PASSWORD);
-        try (AmicaNode door = new AmicaNode(1, 20, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
-            door.keepAlive();
+        try (AmicaNode door = awakeNode(1, 20, AmicaNodeType.DOOR)) {
             String uid = awaitDevice(login, "AmicaDoor", "1.20");
             HttpResponse<String> bad = call("PUT", "/api/devices/" + uid + "/parameters/kind", "{\"value\":\"SIDEWAYS\"}", login, true);
             assertEquals(bad.body(), 400, bad.statusCode());
@@ -125,8 +124,7 @@ public class WebApiTest extends WebTestSupport {
     @Test
     public void aUdpFrameShowsUpInTheLiveEventStream() throws Exception {
         Login login = login("installer", INSTALLER_PASSWORD);
-        try (AmicaNode movement = new AmicaNode(1, 17, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT)) {
-            movement.keepAlive();
+        try (AmicaNode movement = awakeNode(1, 17, AmicaNodeType.MOVEMENT)) {
             String uid = awaitDevice(login, "AmicaMovement", "1.17");
             HttpRequest request = HttpRequest.newBuilder(URI.create(base() + "/api/stream/events"))
                     .header("Cookie", login.cookie()).GET().build();
@@ -165,8 +163,7 @@ public class WebApiTest extends WebTestSupport {
     @Test
     public void userGivenTextIsEscapedAndLogsCanBeSearched() throws Exception {
         Login login = login("installer", INSTALLER_PASSWORD);
-        try (AmicaNode door = new AmicaNode(1, 21, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
-            door.keepAlive();
+        try (AmicaNode door = awakeNode(1, 21, AmicaNodeType.DOOR)) {
             String uid = awaitDevice(login, "AmicaDoor", "1.21");
             String evil = "<script>alert(1)</script>";
             HttpResponse<String> renamed = call("PUT", "/api/devices/" + uid + "/parameters/name",
@@ -197,8 +194,7 @@ public class WebApiTest extends WebTestSupport {
         assertEquals(added.body(), 200, added.statusCode());
         String roomUid = field(added.body(), "uid");
         assertEquals(400, call("POST", "/api/rooms", "{\"name\":\" \",\"type\":\"Kitchen\"}", login, true).statusCode());
-        try (AmicaNode movement = new AmicaNode(1, 30, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT)) {
-            movement.keepAlive();
+        try (AmicaNode movement = awakeNode(1, 30, AmicaNodeType.MOVEMENT)) {
             String uid = awaitDevice(login, "AmicaMovement", "1.30");
             HttpResponse<String> placed = call("PUT", "/api/devices/" + uid + "/parameters/room", "{\"value\":\"" + roomUid + "\"}", login, true);
             assertEquals(placed.body(), 200, placed.statusCode());

@@ -71,8 +71,9 @@ public class WebBrowserTest extends WebTestSupport {
             front.door(false);
             String step = "login page";
             try {
-                browser.navigate(base + "/");
-                browser.waitFor("location.pathname === '/login.html' && document.readyState === 'complete'", WAIT, "the login page");
+                open(browser, base + "/",
+                        "location.pathname === '/login.html' && document.readyState === 'complete'",
+                        "the login page");
                 shot(browser, "login");
                 step = "wrong password";
                 browser.eval("(document.getElementById('password').value = 'wrong-password', document.getElementById('submit').click(), 1)");
@@ -101,8 +102,9 @@ public class WebBrowserTest extends WebTestSupport {
 
                 step = "devices";
                 browser.eval("Tiny.api('PUT', 'devices/" + cookerUid + "/parameters/name', {value: " + Chromium.quote(XSS) + "}).then(() => 1)");
-                browser.navigate(base + "/devices.html");
-                browser.waitFor("document.querySelectorAll('#devices tr[data-uid]').length >= 6", WAIT, "the devices list");
+                open(browser, base + "/devices.html",
+                        "document.querySelectorAll('#devices tr[data-uid]').length >= 6",
+                        "the devices list");
                 browser.waitFor("Array.from(document.querySelectorAll('#devices a')).some(a => a.textContent === " + Chromium.quote(XSS) + ")",
                         WAIT, "the device named with HTML, shown as text");
                 assertEquals("no element made from a device name", "0", browser.eval("document.querySelectorAll('#main img, #main script').length"));
@@ -137,9 +139,9 @@ public class WebBrowserTest extends WebTestSupport {
                 step = "drivers upload";
                 Path jar = Files.createTempDirectory("tinysep-upload-").resolve("window-driver.jar");
                 Files.write(jar, reactorJar(WINDOW));
-                browser.navigate(base + "/drivers.html");
-                browser.waitFor("document.querySelectorAll('#applications tr[data-bsn]').length >= 5 && !document.getElementById('upload').hidden",
-                        WAIT, "the drivers list with its upload form");
+                open(browser, base + "/drivers.html",
+                        "document.querySelectorAll('#applications tr[data-bsn]').length >= 5 && !document.getElementById('upload').hidden",
+                        "the drivers list with its upload form");
                 assertEquals("false", browser.eval("document.querySelector('#applications tr[data-bsn=\"" + WINDOW + "\"]') !== null"));
                 assertEquals("Pax Exam's probe is infrastructure, not an application", "0",
                         browser.eval("document.querySelectorAll('#applications tr[data-bsn^=\"PAXEXAM\"]').length"));
@@ -153,9 +155,9 @@ public class WebBrowserTest extends WebTestSupport {
                 shot(browser, "drivers");
 
                 step = "house plan";
-                browser.navigate(base + "/house.html");
-                browser.waitFor("document.querySelectorAll('#rooms tr[data-uid]').length === 3 && !document.getElementById('add-room').hidden",
-                        WAIT, "the house plan's rooms");
+                open(browser, base + "/house.html",
+                        "document.querySelectorAll('#rooms tr[data-uid]').length === 3 && !document.getElementById('add-room').hidden",
+                        "the house plan's rooms");
                 browser.eval("(document.getElementById('new-name').value = " + Chromium.quote(XSS) + ", document.getElementById('new-type').value = 'Hall',"
                         + " document.getElementById('add').click(), 1)");
                 browser.waitFor("Array.from(document.querySelectorAll('#rooms input.room-name')).some(i => i.value === " + Chromium.quote(XSS) + ")",
@@ -171,15 +173,15 @@ public class WebBrowserTest extends WebTestSupport {
                 shot(browser, "house");
 
                 step = "connection graph";
-                browser.navigate(base + "/graph.html");
-                browser.waitFor("document.querySelectorAll('#graph .node').length >= 6 && document.querySelectorAll('#graph path.edge.vital').length >= 3",
-                        WAIT, "the connection graph with its vital connections");
+                open(browser, base + "/graph.html",
+                        "document.querySelectorAll('#graph .node').length >= 6 && document.querySelectorAll('#graph path.edge.vital').length >= 3",
+                        "the connection graph with its vital connections");
                 shot(browser, "graph");
 
                 step = "packet log";
-                browser.navigate(base + "/packets.html");
-                browser.waitFor("Array.from(document.querySelectorAll('#packets tr')).some(r => r.textContent.includes('node 1.18'))",
-                        WAIT, "the packets of node 1.18 in the packet log");
+                open(browser, base + "/packets.html",
+                        "Array.from(document.querySelectorAll('#packets tr')).some(r => r.textContent.includes('node 1.18'))",
+                        "the packets of node 1.18 in the packet log");
                 browser.waitFor("Array.from(document.querySelectorAll('#packets tr[data-node=\"1.18\"] td.decoded')).some(d => d.textContent.endsWith('motion detected'))",
                         WAIT, "node 1.18's motion decoded");
                 shot(browser, "packets");
@@ -190,9 +192,9 @@ public class WebBrowserTest extends WebTestSupport {
 
                 step = "caregiver view";
                 cooker.motion(true);
-                browser.navigate(base + "/caregiver.html");
-                browser.waitFor("document.querySelectorAll('#rooms tr').length === 4 && document.getElementById('occupancy').textContent !== '…'",
-                        WAIT, "the caregiver view");
+                open(browser, base + "/caregiver.html",
+                        "document.querySelectorAll('#rooms tr').length === 4 && document.getElementById('occupancy').textContent !== '…'",
+                        "the caregiver view");
                 browser.waitFor("document.getElementById('last-activity').textContent === 'Kitchen' || document.getElementById('last-activity').textContent === 'Living room'",
                         WAIT, "the last activity's room");
                 browser.waitFor("document.querySelectorAll('#timeline-svg rect.slot').length > 0 && document.querySelectorAll('#timeline-svg .room-label').length === 4",
@@ -233,6 +235,12 @@ public class WebBrowserTest extends WebTestSupport {
         Files.createDirectories(Path.of("target"));
         Files.writeString(Path.of("target", "web-metrics.txt"), json + "\n");
         assertTrue(json, json.contains("\"firstContentfulPaintMs\":"));
+    }
+
+    /** Opens {@code url} in the browser and waits (at most {@link #WAIT}) until {@code ready}: the page shown. */
+    private static void open(Chromium browser, String url, String ready, String what) throws Exception {
+        browser.navigate(url);
+        browser.waitFor(ready, WAIT, what);
     }
 
     /** A screenshot for looking at (target/ only: the pictures in docs/ come from WebDemoFlatTest's demo flat). */

@@ -176,8 +176,7 @@ public class WebConsoleApiTest extends WebTestSupport {
         Login installer = login("installer", INSTALLER_PASSWORD);
         Login caregiver = login("caregiver", CAREGIVER_PASSWORD);
         String kitchen = field(call("POST", "/api/rooms", "{\"name\":\"Kitchen\",\"type\":\"Kitchen\"}", installer, true).body(), "uid");
-        try (AmicaNode door = new AmicaNode(1, 40, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.DOOR)) {
-            door.keepAlive();
+        try (AmicaNode door = awakeNode(1, 40, AmicaNodeType.DOOR)) {
             String uid = awaitDevice(installer, "AmicaDoor", "1.40");
             String device = call("GET", "/api/devices/" + uid, null, caregiver, false).body();
             assertTrue(device, device.contains("\"options\":[\"OUTER\",\"INNER\"]"));

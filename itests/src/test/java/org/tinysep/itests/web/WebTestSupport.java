@@ -68,16 +68,29 @@ public abstract class WebTestSupport extends TinySepTestSupport {
     protected HttpResponse<String> upload(String path, byte[] bytes, String contentType, Login login, boolean csrf) {
         HttpRequest.Builder b = HttpRequest.newBuilder(URI.create(base() + path)).timeout(Duration.ofSeconds(60))
                 .header("Content-Type", contentType).POST(HttpRequest.BodyPublishers.ofByteArray(bytes));
+        HttpResponse<String> r = exchange(as(b, login, csrf));
+        log.info("POST {} ({} bytes) -> {} {}", path, bytes.length, r.statusCode(), r.body());
+        return r;
+    }
+
+    /** @return {@code b} with the login's session cookie (if any) and, with {@code csrf}, its CSRF header */
+    private static HttpRequest.Builder as(HttpRequest.Builder b, Login login, boolean csrf) {
         if (login != null) {
             b.header("Cookie", login.cookie());
             if (csrf) {
                 b.header("X-CSRF-Token", login.csrf());
             }
         }
+        return b;
+    }
+
+    /**
+     * Sends the request and reads the answer as text: the one place {@link #call} and {@link #upload} talk to the
+     * console; an I/O failure becomes unchecked, an interruption an assertion error.
+     */
+    private HttpResponse<String> exchange(HttpRequest.Builder request) {
         try {
-            HttpResponse<String> r = http.send(b.build(), HttpResponse.BodyHandlers.ofString());
-            log.info("POST {} ({} bytes) -> {} {}", path, bytes.length, r.statusCode(), r.body());
-            return r;
+            return http.send(request.build(), HttpResponse.BodyHandlers.ofString());
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         } catch (InterruptedException e) {
@@ -137,27 +150,15 @@ public abstract class WebTestSupport extends TinySepTestSupport {
 
     /** Calls the console: {@code body} as JSON; with {@code csrf}, the login's CSRF header on changes. */
     protected HttpResponse<String> call(String method, String path, String body, Login login, boolean csrf) {
-        HttpRequest.Builder b = HttpRequest.newBuilder(URI.create(base() + path)).timeout(Duration.ofSeconds(30));
-        if (login != null) {
-            b.header("Cookie", login.cookie());
-            if (csrf) {
-                b.header("X-CSRF-Token", login.csrf());
-            }
-        }
+        HttpRequest.Builder b = as(HttpRequest.newBuilder(URI.create(base() + path)).timeout(Duration.ofSeconds(30)),
+                login, csrf);
         if (body != null) {
             b.header("Content-Type", "application/json");
         }
         b.method(method, body == null ? HttpRequest.BodyPublishers.noBody() : HttpRequest.BodyPublishers.ofString(body));
-        try {
-            HttpResponse<String> r = http.send(b.build(), HttpResponse.BodyHandlers.ofString());
-            log.info("{} {} -> {} {}", method, path, r.statusCode(), r.body().length() > 300 ? r.body().substring(0, 300) + "…" : r.body());
-            return r;
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new AssertionError(e);
-        }
+        HttpResponse<String> r = exchange(b);
+        log.info("{} {} -> {} {}", method, path, r.statusCode(), r.body().length() > 300 ? r.body().substring(0, 300) + "…" : r.body());
+        return r;
     }
 
     private HttpResponse<String> send(String method, String url, String body, String cookie, String csrf) {
