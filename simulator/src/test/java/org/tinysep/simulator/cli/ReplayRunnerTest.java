@@ -52,70 +52,51 @@ class ReplayRunnerTest {
 
     @Test
     void changesOnlySendsEveryChangeInOrderAndSkipsQuietSeconds() throws Exception {
-        Path file = Files.writeString(dir.resolve("events.csv"), EVENTS);
-        try (DatagramSocket radio = new DatagramSocket(0, InetAddress.getLoopbackAddress());
-                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
-            Future<List<String>> received = collect(radio);
-            ReplayResult r = Run.replay(args(file, radio, peer, "changes"));
-            List<String> frames = received.get();
+        Played played = play("changes");
 
-            assertEquals(6, r.sent());
-            Replay replay = r.replay();
-            assertEquals(Replay.LEAD_SECONDS + 304 + Replay.TAIL_SECONDS,
-                    replay.untilSecond() - replay.fromSecond());
-            List<Instant> ticks = peer.ticks();
-            assertTrue(ticks.size() < 200, "quiet seconds are skipped: " + ticks.size() + " ticks");
-            for (int i = 1; i < ticks.size(); i++) {
-                long step = ticks.get(i).getEpochSecond() - ticks.get(i - 1).getEpochSecond();
-                assertTrue(step >= 1 && step <= ReplayRunner.QUIET_STEP, "tick step " + step + " at " + i);
-            }
-            assertTrue(ticks.contains(Instant.ofEpochSecond(replay.virtualSecond(LocalDateTime.parse("2011-11-28T10:00:31")))),
-                    "the door's closing second is played");
-
-            Map<String, List<String>> byNode = byNode(frames);
-            assertEquals("keep-alive", byNode.get("1.100").get(0), "the PIR announces itself first");
-            assertEquals("keep-alive", byNode.get("1.101").get(0), "the door announces itself first");
-            assertEquals(List.of("motion=true", "motion=false", "motion=true", "motion=false"),
-                    byNode.get("1.100").stream().filter(f -> !f.equals("keep-alive")).toList());
-            assertEquals(List.of("open=true", "open=false"),
-                    byNode.get("1.101").stream().filter(f -> !f.equals("keep-alive")).toList());
+        assertEquals(6, played.result().sent());
+        Replay replay = played.result().replay();
+        assertEquals(Replay.LEAD_SECONDS + 304 + Replay.TAIL_SECONDS,
+                replay.untilSecond() - replay.fromSecond());
+        List<Instant> ticks = played.ticks();
+        assertTrue(ticks.size() < 200, "quiet seconds are skipped: " + ticks.size() + " ticks");
+        for (int i = 1; i < ticks.size(); i++) {
+            long step = ticks.get(i).getEpochSecond() - ticks.get(i - 1).getEpochSecond();
+            assertTrue(step >= 1 && step <= ReplayRunner.QUIET_STEP, "tick step " + step + " at " + i);
         }
+        assertTrue(ticks.contains(Instant.ofEpochSecond(replay.virtualSecond(LocalDateTime.parse("2011-11-28T10:00:31")))),
+                "the door's closing second is played");
+
+        Map<String, List<String>> byNode = byNode(played.frames());
+        assertEquals("keep-alive", byNode.get("1.100").get(0), "the PIR announces itself first");
+        assertEquals("keep-alive", byNode.get("1.101").get(0), "the door announces itself first");
+        assertEquals(List.of("motion=true", "motion=false", "motion=true", "motion=false"),
+                byNode.get("1.100").stream().filter(f -> !f.equals("keep-alive")).toList());
+        assertEquals(List.of("open=true", "open=false"),
+                byNode.get("1.101").stream().filter(f -> !f.equals("keep-alive")).toList());
     }
 
     @Test
     void fullRateRepeatsTheStateEverySecondItIsDue() throws Exception {
-        Path file = Files.writeString(dir.resolve("events.csv"), EVENTS);
-        try (DatagramSocket radio = new DatagramSocket(0, InetAddress.getLoopbackAddress());
-                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
-            Future<List<String>> received = collect(radio);
-            ReplayResult r = Run.replay(args(file, radio, peer, "full"));
-            long seconds = r.replay().untilSecond() - r.replay().fromSecond();
-            assertEquals(seconds, peer.ticks().size(), "every second is played");
-            Map<String, List<String>> byNode = byNode(received.get());
-            long doorReports = byNode.get("1.101").stream().filter(f -> f.startsWith("open=")).count();
-            long pirReports = byNode.get("1.100").stream().filter(f -> f.startsWith("motion=")).count();
-            assertEquals(seconds + 2, doorReports, "a reed switch reports every second, plus its 2 changes");
-            assertEquals(seconds / 2 + 4, pirReports, "a PIR reports every 2 s, plus its 4 changes");
-        }
+        Played played = play("full");
+        long seconds = played.result().replay().untilSecond() - played.result().replay().fromSecond();
+        assertEquals(seconds, played.ticks().size(), "every second is played");
+        Map<String, List<String>> byNode = byNode(played.frames());
+        long doorReports = byNode.get("1.101").stream().filter(f -> f.startsWith("open=")).count();
+        long pirReports = byNode.get("1.100").stream().filter(f -> f.startsWith("motion=")).count();
+        assertEquals(seconds + 2, doorReports, "a reed switch reports every second, plus its 2 changes");
+        assertEquals(seconds / 2 + 4, pirReports, "a PIR reports every 2 s, plus its 4 changes");
     }
 
     /** The evaluation harness: a collapse deletes the 12 h after it, and the replay must still play them (quiet). */
     @Test
     void endPlaysOnQuietlyUntilTheGivenRecordedTime() throws Exception {
-        Path file = Files.writeString(dir.resolve("events.csv"), EVENTS);
-        try (DatagramSocket radio = new DatagramSocket(0, InetAddress.getLoopbackAddress());
-                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
-            Future<List<String>> received = collect(radio);
-            List<String> args = new java.util.ArrayList<>(List.of(args(file, radio, peer, "changes")));
-            args.addAll(List.of("--end", "2011-11-28T22:05:04"));
-            ReplayResult r = Run.replay(args.toArray(String[]::new));
-            received.get();
-            long end = r.replay().virtualSecond(LocalDateTime.parse("2011-11-28T22:05:04"));
-            Instant last = peer.ticks().get(peer.ticks().size() - 1);
-            assertEquals(6, r.sent());
-            assertTrue(last.getEpochSecond() >= end - ReplayRunner.QUIET_STEP && last.getEpochSecond() < end,
-                    "played on to 12 h after the last event: last tick " + last + ", end " + Instant.ofEpochSecond(end));
-        }
+        Played played = play("changes", "--end", "2011-11-28T22:05:04");
+        long end = played.result().replay().virtualSecond(LocalDateTime.parse("2011-11-28T22:05:04"));
+        Instant last = played.ticks().get(played.ticks().size() - 1);
+        assertEquals(6, played.result().sent());
+        assertTrue(last.getEpochSecond() >= end - ReplayRunner.QUIET_STEP && last.getEpochSecond() < end,
+                "played on to 12 h after the last event: last tick " + last + ", end " + Instant.ofEpochSecond(end));
         assertThrows(IllegalArgumentException.class, () -> Options.parse(new String[] {"--end", "tomorrow"}));
     }
 
@@ -124,6 +105,23 @@ class ReplayRunnerTest {
         Exception e = assertThrows(java.io.IOException.class,
                 () -> Run.replay("--replay", dir.resolve("nope.csv").toString(), "--lockstep"));
         assertTrue(e.getMessage().contains("nope.csv"), e.getMessage());
+    }
+
+    /** What one lock-step replay of {@link #EVENTS} did: its result, the frames the radio got, the synchroniser's ticks. */
+    private record Played(ReplayResult result, List<String> frames, List<Instant> ticks) {
+    }
+
+    /** Replays {@link #EVENTS} at {@code rate} (and {@code more} options) to a radio socket and a synchroniser peer. */
+    private Played play(String rate, String... more) throws Exception {
+        Path file = Files.writeString(dir.resolve("events.csv"), EVENTS);
+        try (DatagramSocket radio = new DatagramSocket(0, InetAddress.getLoopbackAddress());
+                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL")) {
+            Future<List<String>> received = collect(radio);
+            List<String> args = new ArrayList<>(List.of(args(file, radio, peer, rate)));
+            args.addAll(List.of(more));
+            ReplayResult r = Run.replay(args.toArray(String[]::new));
+            return new Played(r, received.get(), peer.ticks());
+        }
     }
 
     private static String[] args(Path file, DatagramSocket radio, FakeSynchroniserPeer peer, String rate) {
