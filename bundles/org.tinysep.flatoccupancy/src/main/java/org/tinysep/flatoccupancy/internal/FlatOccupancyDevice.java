@@ -47,7 +47,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
      * Sensor Health's unmonitored rooms in words, e.g. "Bathroom (no sensor heard since 2026-11-25T09:12:00Z)";
      * empty without Sensor Health.
      */
-    private volatile java.util.function.Supplier<String> unmonitored = () -> "";
+    private volatile Supplier<String> unmonitored = () -> "";
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
