@@ -23,12 +23,12 @@ public final class CoreSweep {
 
     public static void main(String[] args) throws Exception {
         Path repo = Path.of(System.getProperty("tinysep.repo", "."));
-        Home home = Home.load(args[0], repo.resolve("../shared/data/ordonez").normalize(),
+        Home home = Home.load(args[0], repo.resolve("data/ordonez"),
                 repo.resolve("evaluation/target/core"));
         String variant = System.getProperty("variant", "");
         if (!variant.isEmpty()) {
             Home other = Home.load(args[0].equalsIgnoreCase("A") ? "B" : "A",
-                    repo.resolve("../shared/data/ordonez").normalize(), repo.resolve("evaluation/target/core"));
+                    repo.resolve("data/ordonez"), repo.resolve("evaluation/target/core"));
             home = Variants.apply(variant, home, other);
         }
         String split = args.length > 1 ? args[1] : "half";

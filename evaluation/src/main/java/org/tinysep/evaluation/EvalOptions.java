@@ -30,7 +30,8 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
             usage: ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S]
                    [--warmup-hours H] [--parallel P] [--batch B] [--days D] [--split half|cvK] [--detectors LEARNED,THESIS]
                    [--away-labels REGEX] [--sleep-labels REGEX] [--no-readme]
-              A, B          Ordonez Home A / B (default A), converted from ../shared/data/ordonez
+              A, B          Ordonez Home A / B (default A), converted from data/ordonez (in the repository;
+                            --ordonez DIR reads another copy)
               --collapses   injected collapses per detector (default 200)
               --seed        seed of the collapse draw (default 1)
               --warmup-hours  recorded hours replayed before each collapse (default 6)
@@ -59,7 +60,7 @@ record EvalOptions(String home, int collapses, long seed, int warmupHours, int p
         String away = LabelWords.AWAY;
         String sleep = LabelWords.SLEEP;
         Path readme = repo.resolve("evaluation/README.md");
-        Path ordonez = repo.resolve("../shared/data/ordonez").normalize();
+        Path ordonez = repo.resolve("data/ordonez");
         Path dist = repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
         Path work = repo.resolve("evaluation/target/work");
         for (int i = 0; i < args.length; i++) {

@@ -12,7 +12,7 @@ final class Report {
 
     static final String CITATION = "Data: F. J. Ordóñez, P. de Toledo, A. Sanchis, \"Activity Recognition Using Hybrid "
             + "Generative/Discriminative Models on Home Environments Using Binary Sensors\", *Sensors* 2013, 13, "
-            + "5460–5477; UCI data set 271, CC BY 4.0, no commercial use (../shared/data/ordonez/PROVENANCE.md).";
+            + "5460–5477; UCI data set 271, CC BY 4.0, no commercial use (data/ordonez/PROVENANCE.md).";
 
     private Report() {
     }

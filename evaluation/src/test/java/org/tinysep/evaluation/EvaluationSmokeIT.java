@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.tinysep.testsupport.repo.RepoFiles;
 
 /**
  * CI smoke test of the harness (issue 11): Ordonez Home A cut to its first two days, two collapses, both detectors,
@@ -16,13 +17,12 @@ import org.junit.jupiter.api.Test;
  */
 class EvaluationSmokeIT {
 
-    private static final Path REPO = Path.of("..");
+    private static final Path REPO = RepoFiles.root();
 
     @Test
     void shortWindowOfOrdonezAReportsBothDetectors() throws Exception {
-        Path ordonez = REPO.resolve("../shared/data/ordonez");
-        assertTrue(Files.isRegularFile(ordonez.resolve("OrdonezA_Sensors.txt")),
-                "the Ordonez data is expected at " + ordonez.toAbsolutePath() + " (../shared beside the clone)");
+        Path ordonez = RepoFiles.require("data", "ordonez");
+        assertTrue(Files.isRegularFile(ordonez.resolve("OrdonezA_Sensors.txt")), "the repository's copy of Ordonez A");
         String dist = System.getProperty("tinysep.dist", REPO.resolve("runtime/org.tinysep.launcher/target/tinysep")
                 .toString());
         EvalOptions o = EvalOptions.parse(new String[] {"A", "--days", "2", "--collapses", "2", "--batch", "2",

@@ -39,6 +39,7 @@ import org.tinysep.simulator.replay.NodeSpec;
 import org.tinysep.simulator.replay.OrdonezReader;
 import org.tinysep.simulator.replay.ReplayPlan;
 import org.tinysep.simulator.replay.SensorEvent;
+import org.tinysep.testsupport.repo.RepoFiles;
 
 /**
  * Issue 5, test item 2: Ordonez Home A (Ordóñez, de Toledo, Sanchis, Sensors 2013, 13, 5460–5477; UCI data set 271)
@@ -52,7 +53,8 @@ import org.tinysep.simulator.replay.SensorEvent;
 @ExamReactorStrategy(PerClass.class)
 public class OrdonezReplayTest extends LockStepTestSupport {
 
-    private static final Path DATA = Path.of("..", "..", "shared", "data", "ordonez");
+    /** The repository's copy (data/ordonez/PROVENANCE.md); RepoFiles refuses any path outside the clone. */
+    private static final Path DATA = RepoFiles.require("data", "ordonez");
     private static final Path SENSORS = DATA.resolve("OrdonezA_Sensors.txt");
     private static final Path LABELS = DATA.resolve("OrdonezA_ADLs.txt");
     private static final Path HOUSE = Path.of("..", "simulator", "src", "main", "resources", "replay", "ordonez-a.house.xml");
@@ -74,7 +76,7 @@ public class OrdonezReplayTest extends LockStepTestSupport {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         } catch (Exception e) {
-            throw new IllegalStateException("cannot read " + SENSORS.toAbsolutePath() + " (../shared beside the clone?)", e);
+            throw new IllegalStateException("cannot read " + SENSORS.toAbsolutePath() + " (see data/ordonez/PROVENANCE.md)", e);
         }
         return configs;
     }
