@@ -44,6 +44,7 @@ class BuildInputsStayInRepoTest {
         write("README.md", "see ../shared/reference/tinysep-thesis.txt");
         write("simulator/target/classes/Y.java", "Path.of(\"../../shared\")");
         write("data/x/notes.txt", "copied from /work/shared/data/x");
+        write("var/house.xml", "<file>/work/main/var/house.xml</file>");
 
         List<String> found = OutsideReferences.scan(tmp).stream().map(l -> l.substring(0, l.indexOf(" — "))).toList();
 

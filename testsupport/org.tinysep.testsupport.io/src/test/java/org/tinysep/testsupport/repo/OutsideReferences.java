@@ -29,6 +29,7 @@ final class OutsideReferences {
      */
     static final Map<String, String> ALLOWED = Map.of(
             "data/", "the recorded data itself (data/*/PROVENANCE.md)",
+            "var/", "the state folder ./run.sh writes (git-ignored): the platform's own files, not build inputs",
             "testsupport/org.tinysep.testsupport.io/src/test/java/org/tinysep/testsupport/repo/",
             "this check and its tests, which name the references they refuse");
 
@@ -36,7 +37,7 @@ final class OutsideReferences {
             "mapping", "json", "yml", "yaml");
     /** Text data counts as an input only under a module's {@code src/} (test resources, flats, scenarios). */
     private static final Set<String> INPUTS_UNDER_SRC = Set.of("txt", "csv");
-    private static final Set<String> SKIPPED_DIRS = Set.of("target", "node_modules");
+    private static final Set<String> SKIPPED_DIRS = Set.of("target", "node_modules", "felix-cache");
 
     private static final Pattern MACHINE = Pattern.compile("(?<![\\w.])/work/");
     private static final Pattern SHARED = Pattern.compile("\\.\\.(?:[\\s/\\\\\",]|\"\\)\\.resolve\\(\")*shared\\b");
