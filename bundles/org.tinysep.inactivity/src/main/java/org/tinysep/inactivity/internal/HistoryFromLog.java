@@ -1,5 +1,6 @@
 package org.tinysep.inactivity.internal;
 
+import java.io.IOException;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -37,6 +38,7 @@ final class HistoryFromLog {
 
     private final HistoryLearner learner;
     private final List<Raw> pending = new ArrayList<>();
+    private boolean loaded;
 
     HistoryFromLog(HistoryLearner learner) {
         this.learner = learner;
@@ -53,7 +55,66 @@ final class HistoryFromLog {
      * @return a sentence for the event log: what was read
      */
     String load(EventLog log, Instant now, int days) {
-        LogHistory<EventEntry> h = log.query(new LogQuery(now.minus(Duration.ofDays(days)), null, Set.of(),
+        return load(log, now, days, null);
+    }
+
+    /**
+     * As {@link #load(EventLog, Instant, int)}, but first from the detector's own memory (issue 25, item 6: the
+     * event log rotates, and a flood of other entries rotated all it learned from away): what the memory holds is
+     * learned from, and the event log is read only after the time it was saved, to fill what it lacks.
+     *
+     * @param log    the event log, or null when there is none
+     * @param memory the detector's own memory, or null
+     */
+    String load(EventLog log, Instant now, int days, LearnedMemory memory) {
+        Instant from = now.minus(Duration.ofDays(days));
+        String remembered = "";
+        if (memory != null) {
+            try {
+                LearnedMemory.Content c = memory.load();
+                if (c != null) {
+                    learner.remember(c.memory());
+                    synchronized (this) {
+                        pending.addAll(c.pending());
+                    }
+                    from = c.covered() == null ? from : c.covered().plusNanos(1);
+                    remembered = "learning from its own memory (" + c.memory().sightings().size() + " activities, "
+                            + (c.damaged() > 0 ? c.damaged() + " damaged lines skipped, " : "") + "saved at "
+                            + c.covered() + ") and ";
+                }
+            } catch (IOException | RuntimeException e) {
+                remembered = "its own memory " + memory.file() + " could not be read (" + e.getMessage()
+                        + "); learning from ";
+            }
+        }
+        String said = log == null ? "live activity only (no event log)" : readLog(log, from);
+        synchronized (this) {
+            loaded = true;
+        }
+        learner.loaded();
+        return (remembered.isEmpty() ? "learning from " : remembered) + said;
+    }
+
+    /**
+     * Saves what the learner remembers (and the logged activities still waiting for their device) atomically in
+     * {@code memory}, as covering the history up to {@code now}; nothing before {@link #load} finished.
+     *
+     * @return whether it was saved
+     */
+    boolean save(LearnedMemory memory, Instant now) throws IOException {
+        List<Raw> waiting;
+        synchronized (this) {
+            if (!loaded) {
+                return false;
+            }
+            waiting = List.copyOf(pending);
+        }
+        memory.save(learner.memory(), waiting, now);
+        return true;
+    }
+
+    private String readLog(EventLog log, Instant from) {
+        LogHistory<EventEntry> h = log.query(new LogQuery(from, null, Set.of(),
                 Set.of(EventKind.DEVICE_EVENT.name()), MAX_ENTRIES));
         int activities = 0;
         int occupancy = 0;
@@ -69,10 +130,8 @@ final class HistoryFromLog {
                 }
             }
         }
-        learner.loaded();
-        return "learning from the event log's history since " + now.minus(Duration.ofDays(days)) + ": "
-                + activities + " activity entries, " + occupancy + " occupancy changes"
-                + (h.damagedLines() > 0 ? ", " + h.damagedLines() + " damaged lines skipped" : "");
+        return "the event log's history since " + from + ": " + activities + " activity entries, " + occupancy
+                + " occupancy changes" + (h.damagedLines() > 0 ? ", " + h.damagedLines() + " damaged lines skipped" : "");
     }
 
     /**

@@ -2,8 +2,9 @@ package org.tinysep.inactivity.internal;
 
 import java.time.Duration;
 import java.time.ZoneId;
-import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
@@ -55,7 +56,8 @@ public final class InactivityDriver extends AbstractDriver {
     private LimitPolicy policy;
     private HistoryLearner learner;
     private HistoryFromLog fromLog;
-    private ExecutorService loader;
+    private LearnedMemory memory;
+    private ScheduledExecutorService loader;
     private UnmonitoredRooms unmonitored;
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
@@ -86,8 +88,12 @@ public final class InactivityDriver extends AbstractDriver {
         ticker = new PlatformTicker(bundleContext, "inactivity", now -> wiring.current().forEach(d -> d.tick(now)));
         if (fromLog != null) {
             int days = learner.settings().historyDays();
-            loader = Executors.newSingleThreadExecutor(r -> new Thread(r, "inactivity-history"));
+            java.nio.file.Path folder = org.tinysep.device.support.StateFolder.resolveOrDataArea(null, bundleContext,
+                    "inactivity");
+            memory = folder == null ? null : new LearnedMemory(folder.resolve("learned-history.txt"));
+            loader = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "inactivity-history"));
             loader.execute(() -> loadHistory(days));
+            loader.scheduleWithFixedDelay(this::saveMemory, SAVE_MINUTES, SAVE_MINUTES, TimeUnit.MINUTES);
         }
     }
 
@@ -117,14 +123,24 @@ public final class InactivityDriver extends AbstractDriver {
         return LimitPolicy.learned(new LearnedLimits(learner));
     }
 
-    private void loadHistory(int days) {
-        EventLog log = eventLog;
-        if (log == null) {
-            LOG.info("no event log: learning starts from live activity only");
+    /** The learner's own memory is saved this often (and when the driver stops): issue 25, item 6. */
+    static final long SAVE_MINUTES = 10;
+
+    private void saveMemory() {
+        if (memory == null) {
             return;
         }
         try {
-            String said = fromLog.load(log, context().now(), days);
+            fromLog.save(memory, context().now());
+        } catch (java.io.IOException | RuntimeException e) {
+            LOG.warn("Could not save what the learned detector remembers in {}: {}", memory.file(), e.toString());
+        }
+    }
+
+    private void loadHistory(int days) {
+        EventLog log = eventLog;
+        try {
+            String said = fromLog.load(log, context().now(), days, memory);
             LOG.info("{}", said);
             context().event(EventKind.DEVICE_EVENT, said);
         } catch (RuntimeException e) {
@@ -138,6 +154,7 @@ public final class InactivityDriver extends AbstractDriver {
     void deactivate() {
         if (loader != null) {
             loader.shutdownNow();
+            saveMemory(); // nothing when the history was not loaded yet
         }
         ticker.close();
         wiring.close();

@@ -49,6 +49,27 @@ public final class HealthWords {
                 + time(silentSince) + "); ONLINE";
     }
 
+    /** The PROBLEM entry when a node starts flapping: its silence limit is widened (a "monitoring reduced" signal). */
+    public static String flapping(String node, int silences, Duration normal, Duration widened) {
+        return "Monitoring reduced: " + node + " went silent and came back " + silences + " times within an hour "
+                + "(it is OFFLINE after " + span(normal) + " without a report). So that it does not fill the event "
+                + "log, it now counts as OFFLINE only after " + span(widened) + " of silence, while this goes on; a "
+                + "node that really stops is noticed that much later. Does it only report changes, is it at the edge "
+                + "of radio range, or is its battery weak? Check its placement and battery.";
+    }
+
+    /** The hourly summary while a node keeps flapping. */
+    public static String stillFlapping(String node, int silences, Duration widened) {
+        return node + " is still flapping: " + silences + " silences in the last hour; it counts as OFFLINE only "
+                + "after " + span(widened) + " of silence.";
+    }
+
+    /** The entry when a node stops flapping. */
+    public static String flappingEnded(String node, Duration normal) {
+        return node + " no longer flaps (fewer than " + FlapDamper.FLAP_LIMIT + " silences in the last hour); it "
+                + "counts as OFFLINE after " + span(normal) + " of silence again.";
+    }
+
     /** The PROBLEM entry of a low battery. */
     public static String lowBattery(String node, int millivolts, int threshold) {
         return node + " reports a low battery: " + millivolts + " mV (low below " + threshold

@@ -28,6 +28,8 @@ public final class NodeWatch {
     private long sequenceGaps;
     private long lastHeardNanos = System.nanoTime();
     private long realGuardNanos;
+    private int configuredMissed;
+    private final FlapDamper damper = new FlapDamper();
 
     /**
      * @param interval  the node's report interval (silence is counted in these)
@@ -70,6 +72,10 @@ public final class NodeWatch {
         if (firstHeard == null) {
             firstHeard = at;
         }
+        long silence = lastHeard == null ? 0 : at.toEpochMilli() - lastHeard.toEpochMilli();
+        if (configuredMissed > 0 && silence >= interval.toMillis() * configuredMissed) {
+            damper.silenceEnded(at, silence); // a gap the normal limit counts as silence, declared or not (flapping)
+        }
         lastHeard = at;
         silenceBase = at;
         lastHeardNanos = System.nanoTime();
@@ -95,15 +101,17 @@ public final class NodeWatch {
     }
 
     /**
-     * Checks for silence on a platform tick.
+     * Checks for silence on a platform tick. A flapping node's limit is widened ({@link #missedIntervals}).
      *
      * @param missedIntervals how many report intervals without a frame make the node silent
      * @return true when the node went silent just now (then {@link #silentSince()} is its last frame time)
      */
     public synchronized boolean checkSilence(Instant now, int missedIntervals) {
+        configuredMissed = Math.max(1, missedIntervals);
         if (silentSince != null || silenceBase == null) {
             return false;
         }
+        missedIntervals = damper.missed(configuredMissed, interval, now);
         if (now.isBefore(silenceBase)) { // the clock went back (end of a simulation): count from now
             silenceBase = now;
             return false;
@@ -126,6 +134,26 @@ public final class NodeWatch {
         this.lastHeard = lastHeard;
         this.silenceBase = lastHeard;
         this.silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
+    }
+
+    /**
+     * @return the report intervals without a frame that make the node silent now: {@code configured}, or more
+     *         while it flaps (went silent and came back {@value FlapDamper#FLAP_LIMIT} or more times within an hour:
+     *         twice its longest such silence, at most an hour)
+     */
+    public synchronized int missedIntervals(int configured, Instant now) {
+        return damper.missed(Math.max(1, configured), interval, now);
+    }
+
+    /**
+     * Call on each platform tick after {@link #checkSilence}.
+     *
+     * @param node the node in words, e.g. {@code AmICA node 1.17 (Kitchen movement)}
+     * @return the event-log text when the node starts flapping (begins {@code Monitoring reduced: }), an hourly
+     *         summary while it goes on, or when it ends; else null
+     */
+    public synchronized String flapping(String node, Instant now) {
+        return configuredMissed == 0 ? null : damper.notice(node, configuredMissed, interval, now);
     }
 
     public synchronized boolean silent() {

@@ -83,4 +83,30 @@ class NodeWatchTest {
         w.heard(T0.plusSeconds(6), 0); // out of order or restart: not counted as loss
         assertEquals(5, w.sequenceGaps());
     }
+
+    /** Issue 25, item 6: three silences within an hour widen the limit to twice the longest; steady reports undo it. */
+    @Test
+    void aFlappingNodesSilenceLimitIsWidenedAndComesBack() {
+        NodeWatch w = new NodeWatch(Duration.ofSeconds(2), 0.5, null);
+        w.heard(T0, -1);
+        int declared = 0;
+        Instant t = T0;
+        for (int s = 1; s <= 3600; s++) {
+            t = T0.plusSeconds(s);
+            if (s % 40 == 0) {
+                w.heard(t, -1);
+            }
+            declared += w.checkSilence(t, 3) ? 1 : 0;
+        }
+        assertEquals(3, declared, "OFFLINE three times, then damped");
+        assertEquals(40, w.missedIntervals(3, t), "twice the longest silence (40 s) in 2 s intervals");
+        String notice = w.flapping("Node 7", t);
+        assertTrue(notice.startsWith("Monitoring reduced: Node 7 went silent and came back "), notice);
+        assertNull(w.flapping("Node 7", t.plusSeconds(1)), "one notice, then at most one line an hour");
+        for (int s = 1; s <= 3601; s++) {
+            w.heard(t.plusSeconds(s), -1);
+        }
+        assertEquals(3, w.missedIntervals(3, t.plusSeconds(3601)), "an hour without a silence: the normal limit");
+        assertTrue(w.flapping("Node 7", t.plusSeconds(3601)).startsWith("Node 7 no longer flaps"));
+    }
 }

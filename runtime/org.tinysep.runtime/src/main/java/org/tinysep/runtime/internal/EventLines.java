@@ -10,7 +10,7 @@ import org.tinysep.api.log.EventKind;
 final class EventLines extends LineCodec<EventEntry> {
 
     EventLines() {
-        super(EventEntry::sequence, EventEntry::time);
+        super(EventEntry::sequence, EventEntry::time, EventEntry::origin);
     }
 
     @Override

@@ -15,14 +15,17 @@ abstract class LineCodec<E> {
 
     private final ToLongFunction<E> sequence;
     private final Function<E, Instant> time;
+    private final Function<E, String> origin;
 
     /**
      * @param sequence the entry's sequence number
      * @param time     the entry's time
+     * @param origin   the entry's origin (what {@link OriginShare} keeps a share of)
      */
-    LineCodec(ToLongFunction<E> sequence, Function<E, Instant> time) {
+    LineCodec(ToLongFunction<E> sequence, Function<E, Instant> time, Function<E, String> origin) {
         this.sequence = sequence;
         this.time = time;
+        this.origin = origin;
     }
 
     /** @return the line for {@code entry}, without a line terminator */
@@ -40,5 +43,9 @@ abstract class LineCodec<E> {
 
     final Instant time(E entry) {
         return time.apply(entry);
+    }
+
+    final String origin(E entry) {
+        return origin.apply(entry);
     }
 }

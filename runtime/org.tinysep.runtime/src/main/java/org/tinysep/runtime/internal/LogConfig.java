@@ -34,8 +34,12 @@ final class LogConfig {
         int files = Capacity.read("logMaxFiles", config::logMaxFiles, 2, 10_000, LogSettings.DEFAULT_MAX_FILES);
         int days = Capacity.read("logRetentionDays", config::logRetentionDays, 0, 36_500, 30);
         int sync = Capacity.read("logSyncMillis", config::logSyncMillis, 10, 3_600_000, 2000);
+        int perOrigin = Capacity.read("logKeepPerOrigin", config::logKeepPerOrigin, 0, 10_000,
+                LogSettings.DEFAULT_KEEP_PER_ORIGIN);
+        int origins = Capacity.read("logKeepOrigins", config::logKeepOrigins, 1, 100_000,
+                LogSettings.DEFAULT_KEEP_ORIGINS);
         return new LogSettings(folder, Math.max(1024, kb * 1024), files, Duration.ofDays(days),
-                Duration.ofMillis(sync));
+                Duration.ofMillis(sync), perOrigin, origins);
     }
 
     static Path folder(String configured, BundleContext context) {

@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.time.Clock;
+import java.time.Instant;
 import java.util.List;
 
 /**
@@ -25,6 +26,7 @@ final class LogFileWriter<E> implements AutoCloseable {
     private final LineCodec<E> codec;
     private final LogSettings settings;
     private final Clock clock;
+    private final OriginHistory<E> kept;
     private Path current;
     private FileOutputStream file;
     private OutputStream out;
@@ -32,11 +34,14 @@ final class LogFileWriter<E> implements AutoCloseable {
     private boolean dirty;
     private long bytesWritten;
 
-    LogFileWriter(LogFolder folder, LineCodec<E> codec, LogSettings settings, Clock clock) throws IOException {
+    /** @param kept the entries kept per origin: told of every entry written, saved before files are pruned */
+    LogFileWriter(LogFolder folder, LineCodec<E> codec, LogSettings settings, Clock clock, OriginHistory<E> kept)
+            throws IOException {
         this.folder = folder;
         this.codec = codec;
         this.settings = settings;
         this.clock = clock;
+        this.kept = kept;
         org.tinysep.device.support.AtomicFiles.createPrivateDirectories(folder.folder());
         List<Path> files = folder.files();
         if (!files.isEmpty()) {
@@ -56,6 +61,7 @@ final class LogFileWriter<E> implements AutoCloseable {
                 rotate(codec.sequence(e));
             }
             out.write(line);
+            kept.written(e);
             size += line.length;
             bytesWritten += line.length;
         }
@@ -73,10 +79,14 @@ final class LogFileWriter<E> implements AutoCloseable {
         }
     }
 
-    /** Deletes files beyond the size bound and the retention. */
+    /**
+     * Deletes files beyond the size bound and the retention, after saving the entries kept per origin (so what
+     * the deleted files held of each origin's newest entries stays on disk).
+     */
     void prune() {
-        folder.prune(settings.maxFiles(), settings.maxAge().isZero() ? null
-                : clock.instant().minus(settings.maxAge()), current);
+        Instant cutoff = settings.maxAge().isZero() ? null : clock.instant().minus(settings.maxAge());
+        kept.save(cutoff);
+        folder.prune(settings.maxFiles(), cutoff, current);
     }
 
     /** @return the bytes written by this writer, for measurements */
@@ -97,6 +107,12 @@ final class LogFileWriter<E> implements AutoCloseable {
             out = null;
             file = null;
         }
+    }
+
+    /** Closes the file and saves the entries kept per origin. */
+    void closeAndSave() throws IOException {
+        close();
+        kept.save(null);
     }
 
     private void rotate(long firstSequence) throws IOException {

@@ -41,6 +41,17 @@ final class LogFolder {
         return folder.resolve(String.format("%s-%020d.log", prefix, firstSequence));
     }
 
+    /** @return the file of the entries kept per origin beside the rotating files ({@link OriginShare}) */
+    Path perOriginFile() {
+        return folder.resolve(prefix + "-per-origin.log");
+    }
+
+    /** @return the sequence of the first entry of one of {@link #files()}, from its name */
+    static long firstSequence(Path file) {
+        String name = file.getFileName().toString();
+        return Long.parseLong(name.substring(name.length() - 24, name.length() - 4));
+    }
+
     /** @return this log's files, oldest first; empty when the folder does not exist */
     List<Path> files() {
         List<Path> out = new ArrayList<>();

@@ -26,8 +26,11 @@ final class LogReader<E> {
 
     private static final Logger LOG = LoggerFactory.getLogger(LogReader.class);
 
-    /** What a scan found. */
-    record Result<E>(List<E> entries, long matched, long damaged, long lastSequence) {
+    /**
+     * What a scan found; {@code firstSequence} is the smallest sequence read ({@link Long#MAX_VALUE} when none), so
+     * that older entries kept elsewhere ({@link OriginShare}) can be added without doubles.
+     */
+    record Result<E>(List<E> entries, long matched, long damaged, long firstSequence, long lastSequence) {
     }
 
     private final LogFolder folder;
@@ -43,11 +46,13 @@ final class LogReader<E> {
         Deque<E> kept = new ArrayDeque<>();
         long[] matched = {0};
         long[] last = {0};
+        long[] first = {Long.MAX_VALUE};
         long damaged = 0;
         List<Path> files = folder.files();
         for (int i = 0; i < files.size(); i++) {
             damaged += read(files.get(i), i == files.size() - 1, e -> {
                 last[0] = Math.max(last[0], codec.sequence(e));
+                first[0] = Math.min(first[0], codec.sequence(e));
                 if (filter.test(e)) {
                     matched[0]++;
                     kept.addLast(e);
@@ -57,7 +62,7 @@ final class LogReader<E> {
                 }
             });
         }
-        return new Result<>(new ArrayList<>(kept), matched[0], damaged, last[0]);
+        return new Result<>(new ArrayList<>(kept), matched[0], damaged, first[0], last[0]);
     }
 
     /** @return the newest {@code limit} entries, reading only as many files (newest first) as needed */
@@ -66,6 +71,7 @@ final class LogReader<E> {
         Deque<E> kept = new ArrayDeque<>();
         long damaged = 0;
         long last = 0;
+        long first = Long.MAX_VALUE;
         for (int i = files.size() - 1; i >= 0 && kept.size() < limit; i--) {
             List<E> inFile = new ArrayList<>();
             damaged += read(files.get(i), i == files.size() - 1, inFile::add);
@@ -74,9 +80,10 @@ final class LogReader<E> {
             }
             for (E e : inFile) {
                 last = Math.max(last, codec.sequence(e));
+                first = Math.min(first, codec.sequence(e));
             }
         }
-        return new Result<>(new ArrayList<>(kept), kept.size(), damaged, last);
+        return new Result<>(new ArrayList<>(kept), kept.size(), damaged, first, last);
     }
 
     /** @return the number of damaged lines in {@code file}; every good entry goes to {@code sink} in file order */

@@ -11,7 +11,7 @@ import org.tinysep.api.log.PacketEntry;
 final class PacketLines extends LineCodec<PacketEntry> {
 
     PacketLines() {
-        super(PacketEntry::sequence, PacketEntry::time);
+        super(PacketEntry::sequence, PacketEntry::time, PacketEntry::origin);
     }
 
     @Override

@@ -34,6 +34,7 @@ final class PersistentLog<E> implements AutoCloseable {
     private final LineCodec<E> codec;
     private final LogReader<E> reader;
     private final LogFileWriter<E> writer;
+    private final OriginHistory<E> kept;
     private final ScheduledExecutorService thread;
     private final RingDrain<E> drain;
     private final long loadedDamaged;
@@ -45,7 +46,8 @@ final class PersistentLog<E> implements AutoCloseable {
         this.codec = codec;
         this.reader = new LogReader<>(folder, codec);
         this.loadedDamaged = loadedDamaged;
-        this.writer = new LogFileWriter<>(folder, codec, settings, clock);
+        this.kept = OriginHistory.open(folder, codec, settings, clock);
+        this.writer = new LogFileWriter<>(folder, codec, settings, clock, kept);
         this.thread = Executors.newSingleThreadScheduledExecutor(Threads.named("tinysep-" + folder.prefix()
                 + "-writer"));
         this.drain = new RingDrain<>(ring, codec::sequence,
@@ -86,18 +88,30 @@ final class PersistentLog<E> implements AutoCloseable {
         drain.signal();
     }
 
-    /** @return the newest {@code limit} entries matching {@code filter}: the files, then what is not written yet */
+    /**
+     * @return the newest {@code limit} entries matching {@code filter}: those kept per origin from files pruned
+     *         since ({@link OriginHistory}), the files, then what is not written yet
+     */
     LogHistory<E> query(Predicate<E> filter, int limit) {
         LogReader.Result<E> files = reader.query(filter, limit);
-        List<E> all = new ArrayList<>(files.entries());
-        long matched = files.matched();
-        for (E e : ring.after(files.lastSequence(), Integer.MAX_VALUE)) {
+        List<E> unwritten = ring.after(files.lastSequence(), Integer.MAX_VALUE);
+        long floor = Math.min(files.firstSequence(), unwritten.isEmpty() ? Long.MAX_VALUE
+                : codec.sequence(unwritten.get(0)));
+        List<E> all = kept.before(filter, floor);
+        long matched = files.matched() + all.size();
+        all.addAll(files.entries());
+        for (E e : unwritten) {
             if (filter.test(e)) {
                 all.add(e);
                 matched++;
             }
         }
         return new LogHistory<>(all.subList(Math.max(0, all.size() - limit), all.size()), matched, files.damaged());
+    }
+
+    /** @return how many entries are kept per origin beside the files */
+    int keptPerOrigin() {
+        return kept.size();
     }
 
     /** @return bytes written to files so far */
@@ -123,7 +137,7 @@ final class PersistentLog<E> implements AutoCloseable {
         }
         drain.drain(); // the entries recorded after the last scheduled drain
         try {
-            writer.close();
+            writer.closeAndSave();
         } catch (IOException e) {
             LOG.warn("Could not close the log file {}: {}", writer.current(), e.toString());
         }

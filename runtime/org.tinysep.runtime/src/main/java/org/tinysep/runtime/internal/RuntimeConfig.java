@@ -43,4 +43,14 @@ public @interface RuntimeConfig {
     @AttributeDefinition(name = "Log sync interval (ms)", min = "10", max = "3600000",
             description = "How often written log entries are forced to the disk (fsync).")
     int logSyncMillis() default 2000;
+
+    @AttributeDefinition(name = "Entries kept per origin", min = "0", max = "10000",
+            description = "The newest entries of every node (and every other origin) kept beside the rotating "
+                    + "files, so that a flood from other nodes cannot rotate them away. 0: none.")
+    int logKeepPerOrigin() default 20;
+
+    @AttributeDefinition(name = "Origins kept", min = "1", max = "100000",
+            description = "At most this many nodes, and this many other origins, keep their newest entries; a new "
+                    + "one replaces the least recently active of its group.")
+    int logKeepOrigins() default 1000;
 }

@@ -88,7 +88,8 @@ class PersistentLogTest {
 
     @Test
     void rotationKeepsEachFileUnderTheBoundAndAtMostMaxFiles() throws IOException {
-        open(10_000, settings(1024, 4, Duration.ZERO));
+        // no share per origin (OriginShare, FloodHistoryTest): the files alone
+        open(10_000, new LogSettings(dir, 1024, 4, Duration.ZERO, Duration.ofMillis(50), 0, 1));
         append(200); // ~75 bytes a line: ~14 per file, 15 files written, 4 kept
         List<Path> files = files();
         assertEquals(4, files.size(), files.toString());

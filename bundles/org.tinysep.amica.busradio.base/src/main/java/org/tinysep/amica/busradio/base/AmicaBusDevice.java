@@ -201,11 +201,17 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
      */
     public void checkHealth(Instant now) {
         NodePolicy p = policy;
+        String node = "AmICA node " + address + " (" + name() + ")";
         if (watch.checkSilence(now, p.silentAfterIntervals())) {
             Instant since = watch.silentSince();
-            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem("AmICA node " + address
-                    + " (" + name() + ")", since, now, watch.interval(), p.silentAfterIntervals()));
+            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem(node, since, now,
+                    watch.interval(), watch.missedIntervals(p.silentAfterIntervals(), now)));
             status(DeviceStatus.State.OFFLINE, HealthWords.silentDetail(since, watch.interval()));
+        }
+        String flapping = watch.flapping(node, now); // damped: one notice, then at most one line an hour
+        if (flapping != null) {
+            context.reporter().event(flapping.startsWith("Monitoring reduced: ") ? EventKind.PROBLEM
+                    : EventKind.DEVICE_EVENT, uid(), flapping);
         }
     }
 

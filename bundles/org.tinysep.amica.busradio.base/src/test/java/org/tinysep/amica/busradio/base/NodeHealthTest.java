@@ -72,6 +72,52 @@ class NodeHealthTest {
         assertTrue(radio.logs.events().stream().anyMatch(e -> e.message().startsWith("heard again after 70 s")));
     }
 
+    /**
+     * Issue 25, item 6: a change-only movement node (it reports every 60 s, the platform assumes every 2 s) used to
+     * go OFFLINE and ONLINE every minute: 4 entries a minute, ~5,760 a day (2.6 million a month for a home). Now
+     * it is damped: after 3 silences in an hour one "Monitoring reduced" notice, its limit widened, at most one
+     * summary an hour, and the normal limit again once it reports steadily.
+     */
+    @Test
+    void aFlappingNodeIsDampedAndStopsFillingTheEventLog() {
+        radio.nodes.policy(new NodePolicy(3, 2200, 1000));
+        at(T0, keepAlive(3000));
+        AmicaBusDevice<String> node = radio.nodes.find(new AmicaAddress(1, 17));
+        int before = radio.logs.events().size();
+        Instant end = T0.plus(java.time.Duration.ofDays(1));
+        for (Instant t = T0.plusSeconds(1); !t.isAfter(end); t = t.plusSeconds(1)) {
+            if (t.getEpochSecond() % 60 == 0) {
+                at(t, motion());
+            }
+            radio.nodes.checkHealth(t);
+        }
+        List<EventEntry> day = radio.logs.events().subList(before, radio.logs.events().size());
+        long offline = day.stream().filter(e -> e.message().contains("has not been heard since")).count();
+        assertEquals(3, offline, "three flaps, then damped");
+        assertTrue(day.size() <= 3 * 4 + 1 + 24, day.size() + " entries in a day (undamped: ~5,760)");
+        List<String> notices = day.stream().map(EventEntry::message)
+                .filter(m -> m.startsWith("Monitoring reduced: AmICA node 1.17")).toList();
+        assertEquals(1, notices.size(), notices.toString());
+        assertTrue(notices.get(0).contains("went silent and came back 3 times within an hour (it is OFFLINE after "
+                + "6 s without a report)") && notices.get(0).contains("now counts as OFFLINE only after 2 min"),
+                notices.get(0));
+        assertTrue(day.stream().filter(e -> e.message().contains("is still flapping")).count() <= 24);
+        assertEquals(DeviceStatus.State.ONLINE, node.status().state());
+
+        // it reports steadily again: after an hour the normal limit is back, and a real silence is reported as usual
+        Instant steady = end;
+        for (int i = 1; i <= 3700; i += 2) {
+            at(end.plusSeconds(i), motion());
+            radio.nodes.checkHealth(end.plusSeconds(i));
+            steady = end.plusSeconds(i);
+        }
+        assertTrue(radio.logs.events().stream().anyMatch(e -> e.message().equals(
+                "AmICA node 1.17 (AmICA node 1.17) no longer flaps (fewer than 3 silences in the last hour); it counts "
+                        + "as OFFLINE after 6 s of silence again.")));
+        radio.nodes.checkHealth(steady.plusSeconds(6));
+        assertEquals(DeviceStatus.State.OFFLINE, node.status().state());
+    }
+
     @Test
     void aLowBatteryIsReportedOnceBeforeTheNodeDies() {
         at(T0, keepAlive(2600));

@@ -103,6 +103,36 @@ public final class HistoryLearner {
         return type == null || type.isEmpty() ? s : new Sighting(s.at(), s.room(), s.roomName(), type, false, s.seated());
     }
 
+    /**
+     * What the learner remembers, for its own file beside the rotating event log (issue 25, item 6).
+     *
+     * @param sightings the history, in time order
+     * @param away      the times the flat was empty
+     * @param awaySince since when the flat is empty now, or null
+     */
+    public record Memory(List<Sighting> sightings, List<QuietGaps.Away> away, Instant awaySince) {
+        public Memory {
+            sightings = List.copyOf(sightings);
+            away = List.copyOf(away);
+        }
+    }
+
+    /** @return a copy of what it remembers */
+    public synchronized Memory memory() {
+        sightings.sort(Comparator.comparing(Sighting::at));
+        return new Memory(sightings, away, awaySince);
+    }
+
+    /** Adds what a saved memory held (at start, before the event log fills what it lacks); learns anew. */
+    public synchronized void remember(Memory m) {
+        sightings.addAll(m.sightings());
+        away.addAll(m.away());
+        if (awaySince == null) {
+            awaySince = m.awaySince();
+        }
+        dirty = true;
+    }
+
     public synchronized int size() {
         return sightings.size();
     }

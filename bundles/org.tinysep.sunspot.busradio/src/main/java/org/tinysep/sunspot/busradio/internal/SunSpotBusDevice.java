@@ -153,11 +153,17 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
 
     /** Checks for silence on a platform tick (sensor health): OFFLINE with a PROBLEM after the missed intervals. */
     void checkHealth(Instant now, int silentAfterIntervals) {
+        String node = "Sun SPOT " + address + " (" + name() + ")";
         if (watch.checkSilence(now, silentAfterIntervals)) {
             Instant since = watch.silentSince();
-            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem("Sun SPOT " + address + " ("
-                    + name() + ")", since, now, watch.interval(), silentAfterIntervals));
+            context.reporter().event(EventKind.PROBLEM, uid(), HealthWords.silentProblem(node, since, now,
+                    watch.interval(), watch.missedIntervals(silentAfterIntervals, now)));
             status(DeviceStatus.State.OFFLINE, HealthWords.silentDetail(since, watch.interval()));
+        }
+        String flapping = watch.flapping(node, now); // damped: one notice, then at most one line an hour
+        if (flapping != null) {
+            context.reporter().event(flapping.startsWith("Monitoring reduced: ") ? EventKind.PROBLEM
+                    : EventKind.DEVICE_EVENT, uid(), flapping);
         }
     }
 
