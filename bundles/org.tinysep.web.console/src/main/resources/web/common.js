@@ -98,6 +98,8 @@ const Tiny = {
     const status = document.getElementById('live-status');
     source.onopen = () => { if (status) status.textContent = 'live'; };
     source.onerror = () => { if (status) status.textContent = 'reconnecting…'; };
+    // the login session ended (logout elsewhere, password change, idle time): the server ended the stream
+    source.addEventListener('ended', () => { source.close(); location.href = '/login.html'; });
     return source;
   },
 

@@ -55,6 +55,28 @@ public class WebApiTest extends WebTestSupport {
         assertEquals(401, call("PUT", "/api/devices/x/parameters/name", "{\"value\":\"y\"}", null, false).statusCode());
     }
 
+    /**
+     * Issue 25, item 8: Jetty answers a malformed request itself (400, before any filter runs); its page carries the
+     * same security headers as every answer of the console.
+     */
+    @Test
+    public void jettysOwnErrorPagesCarryTheSecurityHeaders() {
+        HttpResponse<String> page = call("GET", "/login.html", null, null, false);
+        for (String malformed : new String[] {"GARBAGE\r\n\r\n",
+                "GET /login.html HTTP/1.1\r\nHost: 127.0.0.1\r\nno colon in this header\r\n\r\n",
+                "GET /login.html HTTP/9.9\r\nHost: 127.0.0.1\r\n\r\n"}) {
+            String answer = raw("127.0.0.1", malformed);
+            assertTrue(answer, answer.startsWith("HTTP/1.1 400 ") || answer.startsWith("HTTP/1.1 505 "));
+            String head = answer.substring(0, Math.max(0, answer.indexOf("\r\n\r\n"))).toLowerCase(java.util.Locale.ROOT);
+            for (String name : new String[] {"Content-Security-Policy", "X-Content-Type-Options", "X-Frame-Options",
+                    "Referrer-Policy"}) {
+                String expected = page.headers().firstValue(name).orElseThrow();
+                assertTrue(name + " in Jetty's page for " + malformed.strip() + ":\n" + answer,
+                        head.contains("\r\n" + name.toLowerCase(java.util.Locale.ROOT) + ": " + expected.toLowerCase(java.util.Locale.ROOT)));
+            }
+        }
+    }
+
     @Test
     public void loginGivesAStrictHttpOnlyCookieAndRefusesWrongPasswords() {
         HttpResponse<String> wrong = call("POST", "/api/session", "{\"user\":\"installer\",\"password\":\"nope-nope\"}", null, false);

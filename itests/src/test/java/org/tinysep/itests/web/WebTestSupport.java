@@ -30,6 +30,12 @@ public abstract class WebTestSupport extends TinySepTestSupport {
     protected static final String INSTALLER_PASSWORD = "installer-secret-1";
     protected static final String CAREGIVER_PASSWORD = "caregiver-secret-2";
     protected static final String HTTP_PORT = "org.osgi.service.http.port";
+    /** As the launcher sets them (FrameworkConfig): the security headers on Jetty's own error pages (issue 25, item 8). */
+    static final String ERROR_PAGE_HEADERS = "org.apache.felix.http.jetty.errorPageCustomHeaders";
+    static final String ERROR_PAGE_HEADER_VALUES = "Content-Security-Policy=default-src 'none'; script-src 'self'; "
+            + "style-src 'self'; img-src 'self' data:; connect-src 'self'; form-action 'self'; base-uri 'none'; "
+            + "frame-ancestors 'none'##X-Content-Type-Options=nosniff##X-Frame-Options=DENY##Referrer-Policy=no-referrer"
+            + "##Cache-Control=no-store";
 
     protected final HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(10))
             .followRedirects(HttpClient.Redirect.NEVER).build();
@@ -43,6 +49,7 @@ public abstract class WebTestSupport extends TinySepTestSupport {
         List<Option> o = super.options();
         o.add(frameworkProperty(HTTP_PORT).value(Integer.toString(freePort())));
         o.add(frameworkProperty("org.apache.felix.http.host").value("127.0.0.1"));
+        o.add(frameworkProperty(ERROR_PAGE_HEADERS).value(ERROR_PAGE_HEADER_VALUES));
         o.add(mavenBundle("org.apache.felix", "org.apache.felix.http.servlet-api").versionAsInProject().startLevel(3));
         o.add(mavenBundle("commons-io", "commons-io").versionAsInProject().startLevel(3));
         o.add(mavenBundle("commons-fileupload", "commons-fileupload").versionAsInProject().startLevel(3));
@@ -191,6 +198,40 @@ public abstract class WebTestSupport extends TinySepTestSupport {
             return false;
         }, type + " device of node " + address + " in GET /api/devices");
         return uid[0];
+    }
+
+    /**
+     * Sends {@code request} (a whole HTTP/1.1 request, exactly as given) over a plain socket bound to the source
+     * address {@code from} (any 127.x.y.z is this machine), to the console on 127.0.0.1, and reads the answer until the
+     * server closes the connection (at most 10 s).
+     *
+     * @return the answer as text: status line, headers, body
+     */
+    protected String raw(String from, String request) {
+        base(); // the console is up
+        int port = Integer.parseInt(context.getProperty(HTTP_PORT));
+        try (java.net.Socket socket = new java.net.Socket()) {
+            socket.bind(new java.net.InetSocketAddress(from, 0));
+            socket.connect(new java.net.InetSocketAddress("127.0.0.1", port), 10_000);
+            socket.setSoTimeout(10_000);
+            socket.getOutputStream().write(request.getBytes(java.nio.charset.StandardCharsets.ISO_8859_1));
+            socket.getOutputStream().flush();
+            String answer = new String(socket.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+            log.info("raw from {}: {} -> {}", from, request.lines().findFirst().orElse(""),
+                    answer.lines().findFirst().orElse("(nothing)"));
+            return answer;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** @return the answer's status code to a login as {@code user} sent from the source address {@code from} */
+    protected int loginFrom(String from, String user, String password) {
+        String body = "{\"user\":\"" + user + "\",\"password\":\"" + password + "\"}";
+        String answer = raw(from, "POST /api/session HTTP/1.1\r\nHost: 127.0.0.1:" + context.getProperty(HTTP_PORT)
+                + "\r\nContent-Type: application/json\r\nContent-Length: " + body.length()
+                + "\r\nConnection: close\r\n\r\n" + body);
+        return Integer.parseInt(answer.substring(9, 12));
     }
 
     protected static String field(String json, String name) {

@@ -22,6 +22,16 @@ public final class FrameworkConfig {
     public static final String VAR = "tinysep.var";
     /** Felix's hook for its own log output: an {@code org.apache.felix.framework.Logger} instance ({@link FelixLog}). */
     static final String FELIX_LOGGER = "felix.log.logger";
+    /**
+     * Felix HTTP's key for headers on Jetty's own error pages (a malformed request line or header answers 400 before
+     * any servlet filter runs): the same security headers as the web API's filter sets on every answer
+     * ({@code org.tinysep.web.api.internal.SecurityFilter}; issue 25, item 8). Entries separated by {@code ##}.
+     */
+    static final String ERROR_PAGE_HEADERS = "org.apache.felix.http.jetty.errorPageCustomHeaders";
+    static final String ERROR_PAGE_HEADER_VALUES = "Content-Security-Policy=default-src 'none'; script-src 'self'; "
+            + "style-src 'self'; img-src 'self' data:; connect-src 'self'; form-action 'self'; base-uri 'none'; "
+            + "frame-ancestors 'none'##X-Content-Type-Options=nosniff##X-Frame-Options=DENY##Referrer-Policy=no-referrer"
+            + "##Cache-Control=no-store";
 
     private FrameworkConfig() {
     }
@@ -66,6 +76,7 @@ public final class FrameworkConfig {
         // changes it once FileInstall has read it; docs/web-api.md)
         p.put("org.apache.felix.http.host", "127.0.0.1");
         p.put("org.osgi.service.http.port", "8080");
+        p.put(ERROR_PAGE_HEADERS, ERROR_PAGE_HEADER_VALUES); // etc/org.apache.felix.http.cfg may override it
         if (daemon) {
             p.put("gosh.args", "--nointeractive");
         }

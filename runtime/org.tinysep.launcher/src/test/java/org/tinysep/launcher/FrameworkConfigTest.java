@@ -2,6 +2,7 @@ package org.tinysep.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.Map;
@@ -31,6 +32,15 @@ class FrameworkConfigTest {
         assertEquals("/data/tinysep/felix-cache", p.get("org.osgi.framework.storage"));
         assertEquals("onFirstInit", p.get("org.osgi.framework.storage.clean"));
         assertEquals("/opt/tinysep", p.get("tinysep.home"));
+    }
+
+    /** Issue 25, item 8: Jetty's own 400 pages carry the console's security headers (WebErrorPagesTest sees them). */
+    @Test
+    void jettysOwnErrorPagesGetTheSecurityHeaders() {
+        String headers = FrameworkConfig.properties(HOME, false, 5).get("org.apache.felix.http.jetty.errorPageCustomHeaders");
+        assertEquals("[Content-Security-Policy, X-Content-Type-Options, X-Frame-Options, Referrer-Policy, Cache-Control]",
+                java.util.Arrays.stream(headers.split("##")).map(h -> h.substring(0, h.indexOf('='))).toList().toString());
+        assertTrue(headers.contains("frame-ancestors 'none'##X-Content-Type-Options=nosniff##X-Frame-Options=DENY"), headers);
     }
 
     @Test

@@ -76,7 +76,7 @@ public final class ApiServlet extends HttpServlet {
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
                         e -> JsonWriter.write(LogsApi.event(e, names.get()))),
                 new LiveFeed<PacketEntry>("packets", packets::recent, PacketEntry::sequence,
-                        p -> JsonWriter.write(LogsApi.packet(p))));
+                        p -> JsonWriter.write(LogsApi.packet(p))), security.sessions());
     }
 
     @Deactivate

@@ -1,6 +1,7 @@
 package org.tinysep.web.api.internal;
 
 import java.util.Arrays;
+import java.util.List;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
@@ -14,7 +15,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Says where the console is: logs the HTTP service's address ({@code osgi.http.endpoint} of its runtime service)
- * whenever it appears or changes, with how to set the first password when none is set.
+ * whenever it appears or changes, with how to set the first password when none is set; an address beyond
+ * loopback without TLS is a PROBLEM "Security: ..." ({@link PlainHttpRule}).
  */
 @Component(immediate = true, service = {})
 public final class ConsoleAddress {
@@ -54,6 +56,8 @@ public final class ConsoleAddress {
             return; // the runtime's properties change often (change count); say the address once
         }
         announced = where;
+        List<String> endpoints = endpoint instanceof String[] a ? List.of(a) : List.of(where);
+        PlainHttpRule.problem(endpoints, security.plainHttpOffLoopback()).ifPresent(security::problem);
         LOG.info("Web console: {}{}", where, security.passwords().anySet() ? ""
                 : " (no password yet: tinysep:web-password installer <password>)");
     }

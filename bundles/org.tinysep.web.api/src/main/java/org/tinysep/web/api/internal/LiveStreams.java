@@ -11,20 +11,26 @@ import java.util.concurrent.TimeUnit;
  * {@code GET /api/stream/events} and {@code /api/stream/packets}: Server-Sent Events, one JSON entry per
  * message with the entry's sequence number as the event id. {@code ?after=<sequence>} or the browser's
  * {@code Last-Event-ID} replays what came after it first. A comment line every {@value #KEEP_ALIVE_S} s keeps the
- * connection open and finds closed ones; at most {@value #MAX_STREAMS} streams per log.
+ * connection open and finds closed ones. A stream ends within {@value #CHECK_MS} ms of its login session ending
+ * (logout, a password change, the session's idle time; issue 25, item 5) with an {@code event: ended} message;
+ * the slots per log and per login are {@link StreamSlots}'.
  */
 final class LiveStreams implements AutoCloseable {
 
     static final int KEEP_ALIVE_S = 15;
-    static final int MAX_STREAMS = 16;
+    static final long CHECK_MS = 1000;
 
     private final LiveFeed<?> events;
     private final LiveFeed<?> packets;
+    private final Sessions sessions;
+    private final StreamSlots eventSlots = new StreamSlots();
+    private final StreamSlots packetSlots = new StreamSlots();
     private volatile boolean closed;
 
-    LiveStreams(LiveFeed<?> events, LiveFeed<?> packets) {
+    LiveStreams(LiveFeed<?> events, LiveFeed<?> packets, Sessions sessions) {
         this.events = events;
         this.packets = packets;
+        this.sessions = sessions;
     }
 
     void serve(String which, HttpServletRequest req, HttpServletResponse resp) throws IOException {
@@ -33,10 +39,22 @@ final class LiveStreams implements AutoCloseable {
             case "packets" -> packets;
             default -> throw ApiException.notFound("no stream '" + which + "': events or packets");
         };
-        if (feed.size() >= MAX_STREAMS) {
-            throw new ApiException(503, "too many open live streams (" + MAX_STREAMS + "); close a console tab");
+        Sessions.Session session = (Sessions.Session) req.getAttribute(SessionApi.SESSION_ATTRIBUTE);
+        if (session == null) {
+            throw new ApiException(401, "log in first");
         }
         long after = after(req);
+        StreamSlots slots = feed == events ? eventSlots : packetSlots;
+        slots.take(session);
+        try {
+            stream(feed, after, session, resp);
+        } finally {
+            slots.release(session);
+        }
+    }
+
+    private void stream(LiveFeed<?> feed, long after, Sessions.Session session, HttpServletResponse resp)
+            throws IOException {
         resp.setStatus(200);
         resp.setContentType("text/event-stream;charset=utf-8");
         resp.setHeader("Cache-Control", "no-store");
@@ -45,15 +63,24 @@ final class LiveStreams implements AutoCloseable {
         LiveFeed.Subscriber s = feed.subscribe(after);
         try {
             write(out, "retry: 2000\n\n");
+            long quietSince = System.nanoTime();
             while (!closed) {
-                String m = s.queue.poll(KEEP_ALIVE_S, TimeUnit.SECONDS);
+                if (!sessions.alive(session.token())) {
+                    write(out, "event: ended\ndata: {\"reason\":\"the login session ended: log in again\"}\n\n");
+                    break;
+                }
+                String m = s.queue.poll(CHECK_MS, TimeUnit.MILLISECONDS);
                 if (LiveFeed.END.equals(m)) {
                     break;
                 }
                 if (m == null) {
-                    write(out, ": keep-alive\n\n");
+                    if (System.nanoTime() - quietSince >= TimeUnit.SECONDS.toNanos(KEEP_ALIVE_S)) {
+                        write(out, ": keep-alive\n\n");
+                        quietSince = System.nanoTime();
+                    }
                     continue;
                 }
+                quietSince = System.nanoTime();
                 StringBuilder batch = new StringBuilder();
                 do { // everything waiting goes out with one flush
                     batch.append("id: ").append(idOf(m)).append("\ndata: ").append(m).append("\n\n");

@@ -23,7 +23,8 @@ import org.tinysep.web.api.internal.Sessions.Session;
  * pages a redirect to the login page; a state-changing call (anything but GET/HEAD) needs the session's CSRF token
  * in header {@value #CSRF_HEADER} and, when the browser sends an Origin, the same origin, else 403; the caregiver
  * may only read (403), except acknowledging an alert (the console's and the central board's acknowledge calls).
- * Every answer gets the security headers (CSP without inline script, no framing, no sniffing).
+ * Every answer gets the security headers (CSP without inline script, no framing, no sniffing). Plain HTTP is
+ * served only on loopback unless configured otherwise ({@link PlainHttpRule}).
  */
 @Component(service = Filter.class, property = {
     "osgi.http.whiteboard.filter.pattern=/*",
@@ -56,6 +57,10 @@ public final class SecurityFilter implements Filter {
         HttpServletRequest req = (HttpServletRequest) request;
         HttpServletResponse resp = (HttpServletResponse) response;
         headers(resp);
+        if (!PlainHttpRule.allowed(req.isSecure(), req.getLocalAddr(), security.plainHttpOffLoopback())) {
+            deny(req, resp, 403, PlainHttpRule.refusal(req.getLocalAddr()));
+            return;
+        }
         String path = req.getRequestURI() == null ? "/" : req.getRequestURI();
         String method = req.getMethod();
         boolean api = path.startsWith("/api/") || path.equals("/api");

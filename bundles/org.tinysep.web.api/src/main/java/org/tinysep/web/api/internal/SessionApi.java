@@ -3,7 +3,6 @@ package org.tinysep.web.api.internal;
 import jakarta.servlet.http.Cookie;
 import jakarta.servlet.http.HttpServletRequest;
 import jakarta.servlet.http.HttpServletResponse;
-import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
@@ -43,24 +42,25 @@ public final class SessionApi {
 
     public Map<String, Object> login(HttpServletRequest req, HttpServletResponse resp, Map<String, String> body) {
         String client = req.getRemoteAddr();
-        Duration wait = security.limiter().waitFor(client);
-        if (!wait.isZero() && !wait.isNegative()) {
-            long seconds = Math.max(1, wait.toSeconds() + 1);
+        Optional<Role> role = Role.parse(body.get("user"));
+        String account = role.map(Role::id).orElse("(unknown user)");
+        LoginLimiter.Wait wait = security.limiter().waitFor(client, account);
+        if (wait.refused()) {
+            long seconds = Math.max(1, wait.duration().toSeconds() + 1);
             resp.setHeader("Retry-After", Long.toString(seconds));
-            throw new ApiException(429, "too many failed logins: try again in " + seconds + " s");
+            throw new ApiException(429, "too many failed logins (" + wait.reason() + "): try again in " + seconds + " s");
         }
         if (!security.passwords().anySet()) {
             throw new ApiException(403, "no password is set yet: set one in the TinySEP shell with "
                     + "tinysep:web-password installer <password>");
         }
-        Optional<Role> role = Role.parse(body.get("user"));
         String password = body.getOrDefault("password", "");
         if (role.isEmpty() || !security.passwords().verify(role.get(), password)) {
-            security.limiter().failed(client);
+            security.limiter().failed(client, account).ifPresent(security::problem);
             LOG.info("Failed web console login as '{}' from {}", Strings.shorten(body.getOrDefault("user", ""), 40), client);
             throw new ApiException(401, "wrong user name or password");
         }
-        security.limiter().succeeded(client);
+        security.limiter().succeeded(client, account);
         Session s = security.sessions().open(role.get());
         resp.addHeader("Set-Cookie", COOKIE + "=" + s.token() + "; Path=/; HttpOnly; SameSite=Strict"
                 + (req.isSecure() ? "; Secure" : ""));

@@ -72,6 +72,15 @@ public final class Sessions {
         return Optional.of(e.session);
     }
 
+    /**
+     * @return whether the session of {@code token} is still alive (not logged out, ended by a password change, or
+     *         idle too long), without counting this as a use: an open live stream does not keep its session alive
+     */
+    public boolean alive(String token) {
+        Entry e = token == null ? null : sessions.get(token);
+        return e != null && !e.lastUse.plus(idle).isBefore(clock.instant());
+    }
+
     /** Ends the session of {@code token}. */
     public void close(String token) {
         if (token != null) {

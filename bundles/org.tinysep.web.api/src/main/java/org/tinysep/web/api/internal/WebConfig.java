@@ -27,4 +27,8 @@ public @interface WebConfig {
 
     @AttributeDefinition(description = "The rate limit's window in seconds")
     int loginWindowSeconds() default 60;
+
+    @AttributeDefinition(description = "Serve plain HTTP (no TLS) on addresses other than 127.0.0.1 too; passwords "
+            + "then cross the network readable (reported as a PROBLEM); default: refused, use HTTPS")
+    boolean allowPlainHttpOffLoopback() default false;
 }

@@ -1,6 +1,7 @@
 package org.tinysep.web.api.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -31,5 +32,24 @@ class SessionsTest {
         assertTrue(sessions.find(t.token()).isEmpty());
         assertTrue(sessions.find(null).isEmpty());
         assertTrue(sessions.find("guessed").isEmpty());
+    }
+
+    /** Issue 25, item 5: what a live stream asks every second; asking does not keep the session alive. */
+    @Test
+    void aliveSaysWhetherTheSessionStillExistsWithoutUsingIt() {
+        Sessions sessions = new Sessions(Duration.ofMinutes(10), clock);
+        Session s = sessions.open(Role.CAREGIVER);
+        assertTrue(sessions.alive(s.token()));
+        clock.advance(Duration.ofMinutes(6));
+        assertTrue(sessions.alive(s.token()));
+        clock.advance(Duration.ofMinutes(6));
+        assertFalse(sessions.alive(s.token()), "idle for 12 minutes: asking did not count as a use");
+        Session t = sessions.open(Role.INSTALLER);
+        sessions.close(t.token());
+        assertFalse(sessions.alive(t.token()));
+        Session u = sessions.open(Role.INSTALLER);
+        sessions.clear();
+        assertFalse(sessions.alive(u.token()));
+        assertFalse(sessions.alive(null));
     }
 }
