@@ -56,6 +56,6 @@ final class NoticeText {
             return s;
         }
         int end = Character.isHighSurrogate(s.charAt(max - 2)) ? max - 2 : max - 1; // never half a character
-        return s.substring(0, end) + "…";
+        return s.substring(0, end) + "...";
     }
 }

@@ -97,8 +97,10 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         if (transport != null) {
             transport.start(this::datagram);
             ticker = new PlatformTicker(bundleContext, NAME, this::tick);
-        } else {
-            context().event(EventKind.PROBLEM, problem);
+        } else { // the shared contract of issue 25 (item 7): a caregiver notice and a WARNING under the banner
+            context().event(EventKind.PROBLEM, "Monitoring reduced: the AmICA radio " + problem + ": no AmICA "
+                    + "sensor is heard. Another program may hold the port: stop it, or set another port in "
+                    + "etc/" + PID + ".cfg, then restart TinySEP");
         }
     }
 
