@@ -34,9 +34,7 @@ class DeafRadioIT {
                 String warning = p.awaitLine("WARNING: the AmICA radio cannot listen on 127.0.0.1:" + port,
                         Duration.ofSeconds(60));
                 System.out.println(warning);
-                assertTrue(warning.contains("no AmICA sensor is heard"), warning);
-                String events = p.text("tinysep:events");
-                assertTrue(events.contains("Monitoring reduced: the AmICA radio cannot listen"), events);
+                assertTrue(warning.contains("(Address already in use): no AmICA sensor is heard"), warning);
             }
         }
     }

@@ -37,7 +37,7 @@ import org.tinysep.api.service.MailManagerProvider;
 @Component(service = {}, immediate = true)
 public final class WatchGuard implements SynchronousBundleListener, FrameworkListener {
 
-    static final int GRACE_SECONDS = 2;
+    static final int GRACE_SECONDS = 10; // longer than a restore, which stops and starts the applications
     private static final Logger LOG = LoggerFactory.getLogger(WatchGuard.class);
 
     private final BundleContext context;
