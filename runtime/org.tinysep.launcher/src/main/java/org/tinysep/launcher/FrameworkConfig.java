@@ -71,6 +71,9 @@ public final class FrameworkConfig {
         p.put("felix.fileinstall.poll", "1000");
         p.put("felix.fileinstall.noInitialDelay", "true");
         p.put("felix.fileinstall.log.level", "2");
+        // its working folder in the state folder, one fixed folder per watcher: no empty /tmp/fileinstall-* folders
+        // left behind by every start (issue 25, item 8); deploy/'s watcher: etc/org.apache.felix.fileinstall-deploy.cfg
+        p.put("felix.fileinstall.tmpdir", var.resolve("tmp/fileinstall-etc").toString());
         p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
         // the web console's HTTP service: this machine only, from its first moment (etc/org.apache.felix.http.cfg
         // changes it once FileInstall has read it; docs/web-api.md)

@@ -83,6 +83,7 @@ public final class Launcher {
                 .newFramework(launchProperties);
         fw.init();
         framework = fw;
+        StartSignals signals = new StartSignals(fw.getBundleContext()); // before anything of this start is logged
 
         CountDownLatch started = new CountDownLatch(1);
         fw.getBundleContext().addFrameworkListener(event -> {
@@ -109,7 +110,8 @@ public final class Launcher {
             LOG.warn("Framework did not report STARTED within {} s", START_TIMEOUT.toSeconds());
         }
         Readiness.await(fw.getBundleContext(), home.resolve("etc")); // the radios listen as configured
-        return report(Duration.ofNanos(System.nanoTime() - t0), level);
+        StartReport report = report(Duration.ofNanos(System.nanoTime() - t0), level);
+        return report.withWarnings(signals.warnings(CONSOLE_WAIT));
     }
 
     /**
@@ -219,6 +221,9 @@ public final class Launcher {
         return new StartReport(version == null ? "(dev)" : version, took, level, options.daemon(),
                 active, installed, failures);
     }
+
+    /** How long the banner waits for the web console's own verdict when its HTTP service is not up. */
+    static final Duration CONSOLE_WAIT = Duration.ofSeconds(10);
 
     private static boolean isUp(Bundle bundle) {
         return bundle.getState() == Bundle.ACTIVE

@@ -18,7 +18,18 @@ import java.util.Map;
  * @param failures   the bundles that are not active, each with a one-line reason
  */
 public record StartReport(String version, Duration took, int startLevel, boolean daemon,
-                          Map<String, Integer> active, int installed, List<Failure> failures) {
+                          Map<String, Integer> active, int installed, List<Failure> failures, List<String> warnings) {
+
+    /** A report without warnings. */
+    public StartReport(String version, Duration took, int startLevel, boolean daemon, Map<String, Integer> active,
+            int installed, List<Failure> failures) {
+        this(version, took, startLevel, daemon, active, installed, failures, List.of());
+    }
+
+    /** @return this report with the {@code WARNING: …} lines of the signals recorded during the start */
+    public StartReport withWarnings(List<String> lines) {
+        return new StartReport(version, took, startLevel, daemon, active, installed, failures, List.copyOf(lines));
+    }
 
     /**
      * A bundle that did not resolve or start.
@@ -35,7 +46,10 @@ public record StartReport(String version, Duration took, int startLevel, boolean
         return active.values().stream().mapToInt(Integer::intValue).sum();
     }
 
-    /** @return the one-line banner followed by one line per failed bundle */
+    /**
+     * @return the one-line banner, one line per failed bundle, then one {@code WARNING: …} line per "monitoring
+     *         reduced" signal recorded during the start (issue 25, item 7)
+     */
     public List<String> lines() {
         List<String> groups = new ArrayList<>();
         active.forEach((group, n) -> groups.add(group + " " + n));
@@ -48,6 +62,7 @@ public record StartReport(String version, Duration took, int startLevel, boolean
         List<String> lines = new ArrayList<>();
         lines.add(banner);
         failures.forEach(f -> lines.add("  FAILED " + f.bundle() + " (" + f.group() + "): " + f.reason()));
+        lines.addAll(warnings == null ? List.of() : warnings);
         return lines;
     }
 }

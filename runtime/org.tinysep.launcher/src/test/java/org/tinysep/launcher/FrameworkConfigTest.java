@@ -1,6 +1,7 @@
 package org.tinysep.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -19,6 +20,9 @@ class FrameworkConfigTest {
         assertEquals("onFirstInit", p.get("org.osgi.framework.storage.clean"));
         assertEquals("5", p.get("org.osgi.framework.startlevel.beginning"));
         assertEquals("/opt/tinysep/etc", p.get("felix.fileinstall.dir"));
+        // issue 25, item 8: FileInstall's working folder lies in the state folder, not a new one in /tmp per start
+        assertTrue(p.get("felix.fileinstall.tmpdir").startsWith(p.get("tinysep.var") + "/tmp/"),
+                p.get("felix.fileinstall.tmpdir"));
         assertEquals("/opt/tinysep", p.get("tinysep.home"));
         assertEquals("false", p.get("felix.bootdelegation.implicit"));
         assertFalse(p.containsKey("gosh.args"));

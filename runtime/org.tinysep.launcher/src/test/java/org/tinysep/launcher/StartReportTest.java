@@ -1,6 +1,7 @@
 package org.tinysep.launcher;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.util.LinkedHashMap;
@@ -28,5 +29,16 @@ class StartReportTest {
         StartReport report = new StartReport("0.1.0", Duration.ZERO, 1, false, Map.of("1-boot", 1), 1, List.of());
         assertEquals(List.of("TinySEP 0.1.0 up in 0.0 s (interactive, start level 1): 1/1 bundles active [1-boot 1]"),
                 report.lines());
+    }
+
+    @Test
+    void signalsOfTheStartAreWarningLinesUnderTheBanner() {
+        StartReport report = new StartReport("0.1.0", Duration.ZERO, 5, true, Map.of("5-apps", 3), 3, List.of())
+                .withWarnings(List.of("WARNING: the AmICA radio cannot listen on 127.0.0.1:47011 (Address already "
+                        + "in use): no AmICA sensor is heard"));
+        assertEquals(2, report.lines().size(), report.lines().toString());
+        assertTrue(report.lines().get(0).contains("3/3 bundles active"));
+        assertEquals("WARNING: the AmICA radio cannot listen on 127.0.0.1:47011 (Address already in use): no AmICA "
+                + "sensor is heard", report.lines().get(1));
     }
 }

@@ -1,9 +1,14 @@
 package org.tinysep.alerts.internal;
 
+import java.time.Instant;
+import java.util.List;
+import java.util.Set;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventLog;
+import org.tinysep.api.log.LogQuery;
 
 /** The alert service's event-log entries (origin {@value #ORIGIN}), also written to SLF4J. */
 final class AlertLog {
@@ -31,6 +36,23 @@ final class AlertLog {
     void problem(String text) {
         LOG.warn("Alerts: {}", text);
         record(EventKind.PROBLEM, text);
+    }
+
+    /**
+     * @return the caregiver signals ({@link NoticeFeed#isSignal}) recorded from {@code from} to {@code to}, oldest
+     *         first, at most 50; null when there is no event log to ask
+     */
+    List<EventEntry> signals(Instant from, Instant to) {
+        EventLog log = eventLog;
+        if (log == null) {
+            return null;
+        }
+        try {
+            return log.query(new LogQuery(from, to, Set.of(), Set.of(EventKind.PROBLEM.name()), 10_000)).entries()
+                    .stream().filter(NoticeFeed::isSignal).limit(50).toList();
+        } catch (RuntimeException e) { // the log going away: the summary still goes out
+            return null;
+        }
     }
 
     private void record(EventKind kind, String text) {

@@ -60,7 +60,8 @@ public final class AlertManager implements AlertService {
         this.clock = PlatformClock.tracking(context);
         this.book = new AlertBook(new AlertStore(file), log::problem);
         this.notifier = new Notifier(s, new Words(s.zone()), () -> mail, log::event, log::problem);
-        this.summary = new DailySummary(context, s, StateFolder.resolve(null, context, "").orElse(file.getParent()));
+        this.summary = new DailySummary(context, s, StateFolder.resolve(null, context, "").orElse(file.getParent()),
+                log::signals);
         if (problem != null) {
             log.problem(problem);
         }

@@ -27,7 +27,12 @@ final class DailySummary implements AutoCloseable {
     private final ServiceTracker<SensorHealthProvider, SensorHealthProvider> health;
     private final SummaryText text;
 
-    DailySummary(BundleContext context, AlertSettings settings, java.nio.file.Path stateFolder) {
+    private final java.util.function.BiFunction<Instant, Instant, List<org.tinysep.api.log.EventEntry>> signals;
+
+    /** @param signals the caregiver signals of the event log between two times (null: no log) */
+    DailySummary(BundleContext context, AlertSettings settings, java.nio.file.Path stateFolder,
+            java.util.function.BiFunction<Instant, Instant, List<org.tinysep.api.log.EventEntry>> signals) {
+        this.signals = signals;
         this.settings = settings;
         this.context = context; // devices are read once a day, not held (issue 14: a stop of 10,000 devices)
         this.health = new ServiceTracker<>(context, SensorHealthProvider.class, null);
@@ -59,8 +64,11 @@ final class DailySummary implements AutoCloseable {
         List<Device> offline = offlineDevices();
         ZonedDateTime due = today.atTime(settings.summaryTime()).atZone(settings.zone());
         boolean late = local.isAfter(due.plusMinutes(5));
-        var mail = notifier.sendPlain(text.subject(today, book.open().size(), offline.size()),
-                text.body(now, due.toInstant(), late, book.open(), offline, lowBatteries()));
+        List<org.tinysep.api.log.EventEntry> reduced = signals.apply(due.toInstant().minus(java.time.Duration
+                .ofDays(1)), now);
+        var mail = notifier.sendPlain(text.subject(today, book.open().size(), offline.size())
+                + (reduced == null || reduced.isEmpty() ? "" : ", MONITORING REDUCED " + reduced.size() + " time(s)"),
+                text.body(now, due.toInstant(), late, book.open(), offline, lowBatteries(), reduced));
         if (mail.isPresent()) {
             book.lastSummary(today); // saved: one summary per day, also across restarts
             notifier.events().accept("daily summary sent to the Mail Manager's recipients" + (late

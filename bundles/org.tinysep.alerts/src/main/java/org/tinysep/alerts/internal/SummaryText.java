@@ -14,6 +14,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.alert.Alert;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.health.SensorHealth;
+import org.tinysep.api.log.EventEntry;
 
 /** The words of the daily summary: open alerts, devices offline or failing, disk use of the state folder. */
 final class SummaryText {
@@ -33,9 +34,11 @@ final class SummaryText {
 
     /**
      * @param lowBatteries the nodes Sensor Health reports with a low battery, or null without Sensor Health
+     * @param reduced      the event log's "monitoring reduced" / "node type mismatch" entries since the last
+     *                     summary, or null when the event log cannot be read
      */
     String body(Instant now, Instant due, boolean late, List<Alert> open, List<Device> offline,
-            List<SensorHealth> lowBatteries) {
+            List<SensorHealth> lowBatteries, List<EventEntry> reduced) {
         StringBuilder b = new StringBuilder("TinySEP is running. This summary comes every day at "
                 + words.time(due) + "; if one does not come, TinySEP may have stopped: please check on it.\n");
         if (late) {
@@ -45,6 +48,7 @@ final class SummaryText {
         b.append("\nOpen alerts: ").append(open.isEmpty() ? "none" : open.size()).append('\n');
         open.forEach(a -> b.append("  alert ").append(a.id()).append(", raised ").append(words.fullTime(a.raisedAt()))
                 .append(": ").append(a.subject()).append(" (acknowledge: tinysep:ack ").append(a.id()).append(")\n"));
+        reduced(b, reduced);
         b.append("\nDevices offline or failing: ").append(offline.isEmpty() ? "none" : offline.size()).append('\n');
         offline.forEach(d -> b.append("  ").append(d.name()).append(": ").append(d.status()).append('\n'));
         if (lowBatteries == null) {
@@ -58,6 +62,17 @@ final class SummaryText {
         }
         b.append("\nState folder ").append(stateFolder).append(": ").append(disk()).append('\n');
         return b.toString();
+    }
+
+    private void reduced(StringBuilder b, List<EventEntry> reduced) {
+        if (reduced == null) {
+            b.append("\nMonitoring reduced since the last summary: not known (the event log cannot be read)\n");
+            return;
+        }
+        b.append("\nMonitoring reduced since the last summary: ").append(reduced.isEmpty() ? "nothing" : reduced.size())
+                .append('\n');
+        reduced.forEach(e -> b.append("  ").append(words.fullTime(e.time())).append(": ")
+                .append(NoticeText.rest(e.message())).append('\n'));
     }
 
     /** @return e.g. "12.3 MB used by TinySEP; 41.0 GB of 58.0 GB free on its disk (71 %)" */

@@ -87,7 +87,10 @@ public final class TimeControllerDriver extends AbstractDriver {
             LOG.info("{} in {} mode; time synchroniser link {}", NAME, mode, linkState);
         } else {
             LOG.error("{} {}", NAME, problem);
-            context().event(EventKind.PROBLEM, problem);
+            context().event(EventKind.PROBLEM, "Monitoring reduced: the time synchroniser link " + problem
+                    + ": a time synchroniser (lock-step or demo time) cannot reach TinySEP, and in lock-step mode "
+                    + "platform time, and with it all watching, stands still. Another program may hold the port: "
+                    + "stop it, or set another syncPort in etc/" + PID + ".cfg, then restart TinySEP");
         }
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("osgi.command.scope", "tinysep");

@@ -58,6 +58,12 @@ final class DeviceParameters {
             if (value == null || value.isBlank()) {
                 throw new IllegalArgumentException("name must not be blank");
             }
+            int bad = halfCharacter(value);
+            if (bad >= 0) { // issue 25, item 8: a lone surrogate broke the backup writer and was saved corrupted
+                throw new IllegalArgumentException("name has a broken character at position " + (bad + 1)
+                        + " (half of a UTF-16 surrogate pair, U+" + Integer.toHexString(value.charAt(bad))
+                        .toUpperCase() + "): type the name again");
+            }
             name = value.strip();
             device.context.reporter().event(EventKind.DEVICE_EVENT, device.uid(), "renamed to \"" + name + "\"");
         } else if (RoomPlacement.KEY.equals(key) && device.placeable()) {
@@ -65,6 +71,19 @@ final class DeviceParameters {
         } else {
             device.applyParameter(key, value);
         }
+    }
+
+    /** @return the index of the first lone surrogate in {@code s} (it cannot be written as UTF-8), or -1 */
+    static int halfCharacter(String s) {
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (Character.isHighSurrogate(c) && i + 1 < s.length() && Character.isLowSurrogate(s.charAt(i + 1))) {
+                i++;
+            } else if (Character.isSurrogate(c)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /** Takes the saved name, before the device registers; a blank one is ignored. */

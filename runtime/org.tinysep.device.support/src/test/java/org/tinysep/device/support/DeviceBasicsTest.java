@@ -84,6 +84,19 @@ class DeviceBasicsTest {
     }
 
     @Test
+    void aNameWithHalfACharacterIsRefusedInPlainWordsAndAWholeOneIsKept() { // issue 25, item 8
+        for (String bad : List.of("\ud800", "bad\ud800name", "x\udc00")) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> sensor.setParameter("name", bad));
+            assertTrue(e.getMessage().startsWith("name has a broken character at position "), e.getMessage());
+        }
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> sensor.setParameter("name", "bad\ud800name"))
+                .getMessage().contains("position 4 (half of a UTF-16 surrogate pair, U+D800)"));
+        sensor.setParameter("name", "Hall \ud83d\ude00");
+        assertEquals("Hall \ud83d\ude00", sensor.name());
+    }
+
+    @Test
     void connectionsAreLoggedAndAGoneProviderTakesItsVitalConnectionAlong() {
         sensor.use(provider("bus-1"), true);
         sensor.use(provider("clock-1"), false);

@@ -86,7 +86,10 @@ class SunSpotLinksTest {
             assertFalse(links.udpPort().isPresent());
             await("serial retrying", TIMEOUT, () -> links.serialState().startsWith("missing")
                     && links.serialState().contains("no such port"));
-            assertEquals(1, bus.problems().stream().filter(p -> p.startsWith("udp: cannot listen")).count());
+            // issue 25, item 7: a caregiver-visible signal (notice, daily summary, WARNING under the banner)
+            assertEquals(1, bus.problems().stream().filter(p -> p.startsWith("Monitoring reduced: the Sun SPOT radio "
+                    + "cannot listen on 127.0.0.1:" + port) && p.contains("no Sun SPOT sensor is heard")).count(),
+                    bus.problems().toString());
         }
     }
 }

@@ -41,9 +41,30 @@ final class ApplicationInstaller {
         this.json = json;
     }
 
+    /** The applications that watch the person (issue 25, item 3): an upload does not replace them by default. */
+    static final java.util.Set<String> WATCHING = java.util.Set.of("org.tinysep.inactivity", "org.tinysep.flatoccupancy",
+            "org.tinysep.alerts", "org.tinysep.sensorhealth", "org.tinysep.mailmanager");
+
+    /**
+     * @return why an upload of {@code bsn} is refused: replacing an installed watching application needs
+     *         {@code replaceWatching=true}; empty when it may go ahead
+     */
+    static Optional<String> refusal(String bsn, boolean installed, boolean replaceWatching) {
+        if (!installed || replaceWatching || !WATCHING.contains(bsn)) {
+            return Optional.empty();
+        }
+        return Optional.of(bsn + " watches the person: an upload would replace its code with a jar nobody has "
+                + "checked (uploads are not signature-checked), and the caregivers are told that monitoring was "
+                + "reduced. If you mean it, upload again with replaceWatching=true (docs/security.md)");
+    }
+
     /** POST /api/applications with a jar: installs it, or updates the installed bundle of the same name */
-    Map<String, Object> upload(JarUpload jar) {
+    Map<String, Object> upload(JarUpload jar, boolean replaceWatching) {
         Optional<Bundle> existing = bundle(jar.symbolicName());
+        Optional<String> refused = refusal(jar.symbolicName(), existing.isPresent(), replaceWatching);
+        if (refused.isPresent()) {
+            throw new ApiException(409, refused.get());
+        }
         Path file = uploads.resolve(jar.symbolicName() + ".jar");
         String location = file.toUri().toString();
         try {

@@ -43,7 +43,7 @@ final class ApplicationsApi {
             return list("true".equals(req.getParameter("all")));
         }
         if (n == 1 && method.equals("POST")) {
-            return installer.upload(JarUpload.read(req));
+            return installer.upload(JarUpload.read(req), "true".equals(req.getParameter("replaceWatching")));
         }
         if (n == 2 && p.get(1).equals("reload") && method.equals("POST")) {
             return reload();

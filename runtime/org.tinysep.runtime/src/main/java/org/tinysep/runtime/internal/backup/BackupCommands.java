@@ -15,6 +15,8 @@ import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
@@ -159,6 +161,24 @@ public final class BackupCommands {
             @Override
             public void reloadStore() {
                 store.reload();
+            }
+
+            @Override
+            public void settingsChanged(Path archive, List<String> changes) {
+                String message = "Monitoring reduced: a restore of " + archive.getFileName() + " changed "
+                        + changes.size() + " setting(s) (limits, recipients or addresses may be among them; old → new): "
+                        + String.join("; ", changes) + ". If nobody meant this, tinysep:restore --undo brings the "
+                        + "settings before back";
+                LOG.warn("{}", message);
+                ServiceReference<EventLog> ref = context.getServiceReference(EventLog.class);
+                EventLog log = ref == null ? null : context.getService(ref);
+                if (log != null) {
+                    try {
+                        log.record(EventKind.PROBLEM, "backup", message);
+                    } finally {
+                        context.ungetService(ref);
+                    }
+                }
             }
 
             @Override

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.TreeMap;
 import java.util.Optional;
 import java.util.stream.Stream;
 import javax.crypto.Mac;
@@ -32,6 +33,10 @@ final class Restorer {
         void reloadStore();
 
         void startApplications(List<String> problems);
+
+        /** A restore changed these settings (issue 25, item 3): the caregivers are told. */
+        default void settingsChanged(Path archive, List<String> changes) {
+        }
     }
 
     /** One restore at a time (two shell sessions share the staging folder and the applications). */
@@ -95,13 +100,16 @@ final class Restorer {
                 throw refused(archive, problems);
             }
             List<String> trouble = new ArrayList<>();
+            List<String> changed = new ArrayList<>();
             int apps = platform.stopApplications(trouble);
             Path copy;
             try {
                 platform.flushStore(); // the devices' last states are in the copy too
                 copy = new UndoCopies(files).keep();
+                TreeMap<String, String> settingsBefore = SettingChanges.read(files.etc());
                 try {
                     swapAndApply(staging, staged.names(), undo, notes);
+                    changed.addAll(SettingChanges.diff(settingsBefore, SettingChanges.read(files.etc())));
                 } catch (IOException | RuntimeException e) {
                     throw new IllegalStateException("the restore failed while replacing files (" + e.getMessage()
                             + "); " + putBack(copy), e);
@@ -109,11 +117,16 @@ final class Restorer {
             } finally {
                 platform.startApplications(trouble);
             }
+            if (!changed.isEmpty()) {
+                platform.settingsChanged(archive, changed);
+            }
             return (undo ? "undone: brought back " : "restored ") + staged.names().size() + " files from " + archive
                     + "; restarted " + apps + " application bundles"
                     + (trouble.isEmpty() ? "" : "; problems: " + String.join("; ", trouble))
                     + "; the state before is kept in " + files.var().relativize(copy)
                     + " (tinysep:restore --undo brings it back)"
+                    + (changed.isEmpty() ? "\nno setting in etc/ changed" : "\nsettings changed (old → new), "
+                    + changed.size() + ":\n  " + String.join("\n  ", changed))
                     + (notes.isEmpty() ? "" : "\n" + String.join("\n", notes));
         } finally {
             deleteTree(staging);

@@ -31,6 +31,11 @@ final class StateFiles {
         this.etc = etc;
     }
 
+    /** @return {@code ${tinysep.home}/etc}, or null */
+    Path etc() {
+        return etc;
+    }
+
     Path backupRoot() {
         return backupRoot;
     }

@@ -92,6 +92,11 @@ class RestoreTest {
             public void startApplications(List<String> problems) {
                 calls.add("start");
             }
+
+            @Override
+            public void settingsChanged(Path archive, List<String> changes) {
+                calls.add("settings changed: " + String.join("; ", changes));
+            }
         });
     }
 
@@ -357,5 +362,20 @@ class RestoreTest {
         public List<EventEntry> recent(int max) {
             return List.of();
         }
+    }
+
+    @Test
+    void aForcedRestoreListsEverySettingItChangesOldToNew() throws Exception { // issue 25, item 3
+        Files.writeString(etc.resolve("org.tinysep.inactivity.cfg"), "limitMinutes=30\n");
+        Path zip = signedWith(Map.of("etc/org.tinysep.inactivity.cfg", "limitMinutes=5256000\n",
+                "etc/org.tinysep.mailmanager.cfg", "host=mail.evil.test\nuser=anna\n"));
+        String out = restorer().restore(zip, true);
+        assertTrue(out.contains("settings changed (old → new), "), out);
+        assertTrue(out.contains("  org.tinysep.inactivity.cfg limitMinutes: 30 → 5256000\n"), out);
+        assertTrue(out.contains("  org.tinysep.mailmanager.cfg host: 127.0.0.1 → mail.evil.test"), out);
+        assertFalse(out.contains("s3cret"), out);
+        assertTrue(calls.stream().anyMatch(c -> c.startsWith("settings changed: org.tinysep.inactivity.cfg "
+                + "limitMinutes: 30 → 5256000")), calls.toString());
+        assertTrue(restorer().restore(backup(false), false).contains("no setting in etc/ changed"));
     }
 }

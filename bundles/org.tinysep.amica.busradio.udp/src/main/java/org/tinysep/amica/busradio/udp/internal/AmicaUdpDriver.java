@@ -73,6 +73,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
             settingProblems.add(e.getMessage() + "; allowing only " + String.join(", ", "127.0.0.1", "::1"));
         }
         String problem = null;
+        String why = null;
         try {
             transport = DatagramLink.open(config.bindAddress(), config.port(), config.receiveBufferBytes(),
                     NAME + "-receive");
@@ -80,7 +81,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
             props.put(PORT_PROPERTY, transport.localPort());
             LOG.info("{} {} (receive buffer {} bytes)", NAME, listening, transport.receiveBufferSize());
         } catch (IOException | RuntimeException e) {
-            problem = "cannot listen on " + config.bindAddress() + ":" + config.port() + ": " + e.getMessage();
+            why = e.getMessage();
+            problem = "cannot listen on " + config.bindAddress() + ":" + config.port() + ": " + why;
             listening = problem;
             LOG.error("{} {}", NAME, problem);
         }
@@ -97,8 +99,11 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         if (transport != null) {
             transport.start(this::datagram);
             ticker = new PlatformTicker(bundleContext, NAME, this::tick);
-        } else {
-            context().event(EventKind.PROBLEM, problem);
+        } else { // the shared contract of issue 25 (item 7): a caregiver notice and a WARNING under the banner
+            context().event(EventKind.PROBLEM, "Monitoring reduced: the AmICA radio cannot listen on "
+                    + config.bindAddress() + ":" + config.port() + " (" + why + "): no AmICA "
+                    + "sensor is heard. Another program may hold the port: stop it, or set another port in "
+                    + "etc/" + PID + ".cfg, then restart TinySEP");
         }
     }
 

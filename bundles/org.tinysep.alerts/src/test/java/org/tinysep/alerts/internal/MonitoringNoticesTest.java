@@ -1,0 +1,127 @@
+package org.tinysep.alerts.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.api.device.Connection;
+import org.tinysep.api.log.EventEntry;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+import org.tinysep.api.service.MailManagerListener;
+import org.tinysep.api.service.MailManagerProvider;
+import org.tinysep.api.service.MailStatus;
+
+/** The notice path of issue 25 (items 3 and 7): signals in the event log become one caregiver mail per cause. */
+class MonitoringNoticesTest {
+
+    private static final String DISABLED = "Monitoring reduced: Inactivity Recognition (org.tinysep.inactivity) was "
+            + "stopped: nobody is told if the person stops moving";
+
+    @TempDir
+    Path dir;
+    private final Log log = new Log();
+    private final Mail mail = new Mail();
+
+    private MonitoringNotices notices(long last) {
+        return new MonitoringNotices(new NoticeFeed(last, Duration.ofMinutes(30)), new NoticeText(ZoneOffset.UTC),
+                dir.resolve("notices.properties"));
+    }
+
+    @Test
+    void aMonitoringReducedEntryBecomesOneNoticeMailInPlainWords() {
+        MonitoringNotices n = notices(0);
+        log.record(EventKind.PROBLEM, "radio", "the AmICA radio cannot listen"); // a problem, not a signal
+        log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size(), mail.sent.toString());
+        String[] m = mail.sent.get(0);
+        assertTrue(m[0].startsWith("TinySEP watches less than it should: Inactivity Recognition"), m[0]);
+        assertTrue(m[1].contains("nobody is told if the person stops moving") && m[1].contains("What to do:")
+                && m[1].contains("since 2026-11-28"), m[1]);
+        assertTrue(log.entries.stream().anyMatch(e -> e.message().startsWith("notice sent to the caregivers")));
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size(), "an entry is noticed once");
+    }
+
+    @Test
+    void theSameCauseInABurstMailsOnceAndSeveralCausesShareOneMail() {
+        MonitoringNotices n = notices(0);
+        for (int i = 0; i < 5; i++) {
+            log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        }
+        log.record(EventKind.PROBLEM, "Bus 1", "Node type mismatch: node 1.40 said it is a pet collar");
+        n.poll(log, mail);
+        log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size(), mail.sent.toString());
+        assertTrue(mail.sent.get(0)[0].endsWith("(and 1 more)"), mail.sent.get(0)[0]);
+        assertTrue(mail.sent.get(0)[1].contains("node 1.40 said it is a pet collar"));
+        log.later(Duration.ofMinutes(31));
+        log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        n.poll(log, mail);
+        assertEquals(2, mail.sent.size(), "after the quiet period the same cause is told again");
+    }
+
+    @Test
+    void withoutAMailManagerTheSignalsWaitAndARestartDoesNotRepeatThem() {
+        MonitoringNotices n = notices(0);
+        log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        n.poll(log, null);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size());
+        MonitoringNotices again = notices(MonitoringNotices.load(dir.resolve("notices.properties")));
+        again.poll(log, mail);
+        assertEquals(1, mail.sent.size(), "the last entry handled is saved");
+    }
+
+    private static final class Log implements EventLog {
+        final List<EventEntry> entries = new ArrayList<>();
+        Instant now = Instant.parse("2026-11-28T03:00:00Z");
+
+        void later(Duration d) {
+            now = now.plus(d);
+        }
+
+        @Override
+        public void record(EventKind kind, String origin, String message) {
+            entries.add(new EventEntry(entries.size() + 1, now, kind, origin, message));
+        }
+
+        @Override
+        public List<EventEntry> recent(int max) {
+            return List.copyOf(entries.subList(Math.max(0, entries.size() - max), entries.size()));
+        }
+    }
+
+    private static final class Mail implements MailManagerProvider {
+        final List<String[]> sent = new ArrayList<>();
+
+        @Override
+        public void send(String subject, String body) {
+            sent.add(new String[] {subject, body});
+        }
+
+        @Override
+        public MailStatus status() {
+            return null;
+        }
+
+        @Override
+        public String deviceUid() {
+            return "mail";
+        }
+
+        @Override
+        public Connection connect(MailManagerListener listener) {
+            throw new UnsupportedOperationException();
+        }
+    }
+}

@@ -1,0 +1,140 @@
+package org.tinysep.launcher;
+
+import java.lang.reflect.Method;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.atomic.AtomicLong;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceEvent;
+import org.osgi.framework.ServiceListener;
+import org.osgi.framework.ServiceReference;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The caregiver signals recorded while TinySEP starts (issue 25, item 7): the event log's {@code PROBLEM} entries
+ * starting {@code Monitoring reduced: } or {@code Node type mismatch: } (a radio or console that cannot listen, a
+ * watching application disabled) become one {@code WARNING: } line each under the banner, so "N/N bundles active"
+ * is never all a deaf gateway says. The log's entries from before this start (its history) are left out: the
+ * newest sequence number is taken when the event log registers, before anything of this start is recorded.
+ * The launcher sees the log only by reflection (its classes live inside the framework).
+ */
+final class StartSignals {
+
+    static final String EVENT_LOG = "org.tinysep.api.log.EventLog";
+    static final String CONSOLE_RUNTIME = "org.osgi.service.servlet.runtime.HttpServiceRuntime";
+    static final List<String> PREFIXES = List.of("Monitoring reduced: ", "Node type mismatch: ");
+    private static final Logger LOG = LoggerFactory.getLogger(StartSignals.class);
+
+    private final BundleContext context;
+    private final AtomicLong from = new AtomicLong(-1);
+    private final ServiceListener listener;
+
+    /** Starts watching for the event log; call before the framework starts. */
+    StartSignals(BundleContext context) {
+        this.context = context;
+        this.listener = event -> {
+            if (event.getType() == ServiceEvent.REGISTERED && from.get() < 0) {
+                from.compareAndSet(-1, newest(event.getServiceReference()));
+            }
+        };
+        try {
+            context.addServiceListener(listener, "(objectClass=" + EVENT_LOG + ")");
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /**
+     * @param consoleWait how long to wait for the web console's verdict when its HTTP service is not up
+     * @return one {@code WARNING: …} line per signal of this start, in order, without repeats
+     */
+    List<String> warnings(Duration consoleWait) throws InterruptedException {
+        context.removeServiceListener(listener);
+        long end = System.nanoTime() + consoleWait.toNanos();
+        List<String> lines = lines();
+        // the console says after a few seconds that it cannot listen: wait for that verdict, not longer
+        while (!consoleUp() && lines.stream().noneMatch(l -> l.contains("web console")) && System.nanoTime() < end) {
+            Thread.sleep(200);
+            lines = lines();
+        }
+        return lines;
+    }
+
+    private List<String> lines() {
+        Set<String> out = new LinkedHashSet<>();
+        for (String message : signals()) {
+            out.add("WARNING: " + message.substring(message.indexOf(": ") + 2));
+        }
+        return new ArrayList<>(out);
+    }
+
+    /** @return the messages of this start's signals, oldest first */
+    private List<String> signals() {
+        List<String> out = new ArrayList<>();
+        try {
+            ServiceReference<?>[] refs = context.getAllServiceReferences(EVENT_LOG, null);
+            if (refs == null) {
+                return out;
+            }
+            Object log = context.getService(refs[0]);
+            try {
+                Class<?> type = refs[0].getBundle().loadClass(EVENT_LOG);
+                List<?> entries = (List<?>) type.getMethod("recent", int.class).invoke(log, Integer.MAX_VALUE);
+                long after = Math.max(0, from.get());
+                for (Object e : entries) {
+                    long seq = (Long) call(e, "sequence");
+                    String kind = String.valueOf(call(e, "kind"));
+                    String message = String.valueOf(call(e, "message"));
+                    if (seq > after && "PROBLEM".equals(kind) && PREFIXES.stream().anyMatch(message::startsWith)) {
+                        out.add(message);
+                    }
+                }
+            } finally {
+                context.ungetService(refs[0]);
+            }
+        } catch (Exception e) {
+            LOG.debug("Cannot read the event log for the banner: {}", e.toString());
+        }
+        return out;
+    }
+
+    private long newest(ServiceReference<?> ref) {
+        try {
+            Object log = context.getService(ref);
+            try {
+                Class<?> type = ref.getBundle().loadClass(EVENT_LOG);
+                List<?> last = (List<?>) type.getMethod("recent", int.class).invoke(log, 1);
+                return last.isEmpty() ? 0 : (Long) call(last.get(0), "sequence");
+            } finally {
+                context.ungetService(ref);
+            }
+        } catch (Exception e) {
+            LOG.debug("Cannot read the event log's newest entry: {}", e.toString());
+            return 0;
+        }
+    }
+
+    private boolean consoleUp() {
+        try {
+            ServiceReference<?>[] refs = context.getAllServiceReferences(CONSOLE_RUNTIME, null);
+            if (refs != null && refs.length > 0) {
+                return true;
+            }
+            // no web console installed: nothing to wait for
+            return java.util.stream.Stream.of(context.getBundles())
+                    .noneMatch(b -> "org.tinysep.web.api".equals(b.getSymbolicName()));
+        } catch (InvalidSyntaxException e) {
+            return true;
+        }
+    }
+
+    private static Object call(Object target, String method) throws ReflectiveOperationException {
+        Method m = target.getClass().getMethod(method);
+        return m.invoke(target);
+    }
+}
