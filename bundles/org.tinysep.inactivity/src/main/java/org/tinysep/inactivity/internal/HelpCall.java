@@ -145,9 +145,10 @@ final class HelpCall {
 
     /** @return {@link #outcomeWords(InactivityAlert)}; {@code again}: it was raised again, and why */
     String outcomeWords(InactivityAlert alert, boolean again) {
-        return (again ? "alert raised again: the alert service had no open alert for it although no activity was "
-                + "seen and nobody acknowledged it; " : "") + (toService ? "alert handed to the alert service (it tells the contacts, repeats and escalates until "
-                + "someone acknowledges): " : "alert handed to the Mail Manager (it queues, sends and logs the "
+        String why = again ? "alert raised again: the alert service had no open alert for it although no activity "
+                + "was seen and nobody acknowledged it; " : "";
+        return why + (toService ? "alert handed to the alert service (it tells the contacts, repeats and escalates "
+                + "until someone acknowledges): " : "alert handed to the Mail Manager (it queues, sends and logs the "
                 + "delivery): ") + subject(alert);
     }
 
