@@ -79,14 +79,15 @@ public class ThesisScenariosTest extends ThesisSliceTestSupport {
         try (AmicaNode movement = awakeNode(1, 17, MOVEMENT); AmicaNode door = awakeNode(1, 20, DOOR)) {
             expectTopology(FIG_33);
             Set<String> uids = Set.of(Topology.uid(context, BUS, "1.17"), Topology.uid(context, BUS, "1.20"),
-                    Topology.uid(context, "AmicaMovement", "1.17"), Topology.uid(context, "AmicaDoor", "1.20"),
-                    Topology.uid(context, "FlatOccupancy", null));
+                    Topology.uid(context, "AmicaMovement", "1.17"), Topology.uid(context, "AmicaDoor", "1.20"));
             EventLog log = awaitService(EventLog.class, null, TIMEOUT);
             long before = log.recent(1).get(0).sequence();
 
             String reply = shell("tinysep:remove " + BUS);
             assertTrue(reply, reply.contains("driver " + BUS));
-            expectTopology(Set.of()); // abstraction devices lost their vital bus devices, Flat Occupancy its inputs
+            // abstraction devices lost their vital bus devices; Flat Occupancy lost its inputs but stays: it watches
+            // the person (issue 25, a deliberate deviation from thesis 3.3) and says which rooms it cannot see
+            expectTopology(Set.of("FlatOccupancy"));
 
             List<EventEntry> after = log.recent(1000).stream().filter(e -> e.sequence() > before).toList();
             List<String> removed = after.stream().filter(e -> e.kind() == EventKind.DEVICE_REMOVED)

@@ -92,7 +92,8 @@ public class RuntimeChangesTest extends TinySepTestSupport {
 
             Files.delete(jar);
             await(TIMEOUT, () -> bundle("org.tinysep.amica.door") == null, "the deleted jar to uninstall the bundle");
-            expectTopology(Set.of(BUS + "@1.20"));
+            // Flat Occupancy stays without its door: it watches the person (issue 25, item 1)
+            expectTopology(Set.of(BUS + "@1.20", "FlatOccupancy"));
             assertFalse(shell("tinysep:devices").contains(uid));
         }
     }

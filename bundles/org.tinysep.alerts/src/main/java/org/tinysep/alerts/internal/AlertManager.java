@@ -147,8 +147,10 @@ public final class AlertManager implements AlertService {
                 Alert c = Copies.closed(a, AlertState.CLEARED, now, why);
                 c = wasOpen ? notifier.allClear(c, why, now) : c;
                 book.put(c);
-                log.event("alert " + a.id() + " cleared: " + why + (wasOpen ? "; all clear sent to "
-                        + Words.who(notifier.toldSoFar(c)) : " (it was acknowledged; no all clear sent)"));
+                boolean queued = c.notifications().size() > a.notifications().size();
+                log.event("alert " + a.id() + " cleared: " + why + (!wasOpen ? " (it was acknowledged; no all clear "
+                        + "sent)" : queued ? "; all clear queued to the Mail Manager for " + Words.who(notifier
+                        .toldSoFar(c)) + Notifier.QUEUED_NOTE : ""));
                 cleared.add(c);
             }
         }

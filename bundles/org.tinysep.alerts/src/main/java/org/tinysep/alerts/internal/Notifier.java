@@ -26,6 +26,9 @@ final class Notifier {
     private final Consumer<String> events;
     private final Consumer<String> problems;
     private boolean saidNoMail;
+    /** What a queued message's entry adds: it is not delivered yet, and where the outcome will be told. */
+    static final String QUEUED_NOTE = " (not delivered yet: its delivery or failure is logged when the Mail Manager "
+            + "reports it)";
 
     Notifier(AlertSettings settings, Words words, Supplier<MailManagerProvider> mail, Consumer<String> events,
             Consumer<String> problems) {
@@ -67,13 +70,16 @@ final class Notifier {
             return a;
         }
         saidNoMail = false;
+        // the Mail Manager only queued it: say so; what became of it is logged when the Mail Manager knows (refresh)
         events.accept(switch (step.step()) {
-            case FIRST -> "alert " + a.id() + ": first message sent to " + Words.who(step.to());
-            case REPEAT -> "alert " + a.id() + " not acknowledged: repeated to " + Words.who(step.to());
+            case FIRST -> "alert " + a.id() + ": first message queued to the Mail Manager for " + Words.who(step.to());
+            case REPEAT -> "alert " + a.id() + " not acknowledged: repeat queued to the Mail Manager for "
+                    + Words.who(step.to());
             case ESCALATION -> "alert " + a.id() + " not acknowledged: passed on to the next contact, "
-                    + Words.who(step.to()) + " (contact " + step.reached() + " of " + settings.contacts().size() + ")";
-            case ALL_CLEAR -> "alert " + a.id() + ": all clear sent to " + Words.who(step.to());
-        });
+                    + Words.who(step.to()) + " (contact " + step.reached() + " of " + settings.contacts().size()
+                    + "), message queued to the Mail Manager";
+            case ALL_CLEAR -> "alert " + a.id() + ": all clear queued to the Mail Manager for " + Words.who(step.to());
+        } + QUEUED_NOTE);
         return Copies.plus(a, n.get(), step.reached());
     }
 
@@ -113,6 +119,10 @@ final class Notifier {
             if (d.isPresent() && (d.get().outcome() != n.outcome() || !d.get().detail().equals(n.detail()))) {
                 now.add(n.with(d.get().outcome(), d.get().detail()));
                 changed = true;
+                if (d.get().outcome() == MailDelivery.Outcome.SENT) {
+                    events.accept("alert " + a.id() + ": its " + n.step().name().toLowerCase().replace('_', ' ')
+                            + " message was delivered (" + d.get().detail() + ")");
+                }
                 if (d.get().outcome() == MailDelivery.Outcome.FAILED) {
                     problems.accept("alert " + a.id() + ": its " + n.step().name().toLowerCase().replace('_', ' ')
                             + " message was NOT delivered: " + d.get().detail());

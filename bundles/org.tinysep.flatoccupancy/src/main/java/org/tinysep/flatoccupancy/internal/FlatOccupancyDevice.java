@@ -38,7 +38,8 @@ import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Flat Occupancy device (thesis 4.4.3.1). Connects to every Movement and Door provider; each connection
- * counts as vital, so the device removes itself only when it has none left (thesis Fig 3.4).
+ * counts as vital. Unlike thesis Fig 3.4 it is not removed when it has none left: it watches the person (issue 25),
+ * keeps running and says which rooms it can no longer see; it goes only with its driver.
  */
 final class FlatOccupancyDevice extends WholeFlatDevice
         implements FlatOccupancyProvider, MovementListener, DoorListener, WindowListener, PresenceListener {
@@ -235,6 +236,12 @@ final class FlatOccupancyDevice extends WholeFlatDevice
                 + (s.leaveDeadline() == null ? "" : ", leave check until " + s.leaveDeadline()));
         wentBack.ifPresent(f -> event("saved state from the future (" + f + ", now " + now
                 + "): counted from now"));
+    }
+
+    /** Issue 25, item 1: it stays when its sensors go and says which rooms it can no longer see. */
+    @Override
+    protected boolean watchesThePerson() {
+        return true;
     }
 
     @Override

@@ -42,4 +42,11 @@ class FlatOccupancyDeviceTest {
         flat.doorChanged(door("front"), OpenState.OPEN, true, T0);
         assertEquals(Occupancy.OCCUPIED, flat.occupancy());
     }
+
+    /** Issue 25, item 1: Flat Occupancy watches the person: it says which rooms it can no longer see. */
+    @Test
+    void itWatchesThePersonAndListsTheRoomsItCannotSee() {
+        assertEquals("", flat.parameters().stream().filter(p -> p.key().equals("roomsNotSeen")).findFirst()
+                .orElseThrow(() -> new AssertionError("no roomsNotSeen parameter")).value());
+    }
 }

@@ -3,14 +3,18 @@ package org.tinysep.inactivity.internal;
 import java.time.Instant;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.FrameworkUtil;
 import org.osgi.framework.ServiceReference;
+import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
+import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.service.InactivityAlert;
 import org.tinysep.api.service.MailManagerProvider;
 
@@ -18,7 +22,9 @@ import org.tinysep.api.service.MailManagerProvider;
  * Calls for help: hands each alert exactly once to the alert service when one is running (bundle
  * {@code org.tinysep.alerts}: it keeps the alert open until acknowledged, repeats and escalates it, and sends the
  * all clear), else to the first Mail Manager present (which queues and delivers it, and logs the delivery). An
- * alert handed over before a restart, raised again after it, is not handed over twice.
+ * alert handed over before a restart, raised again after it, is not handed over twice, unless the alert service
+ * has no open or acknowledged alert for it any more (issue 25: it was closed while the person was still quiet, e.g.
+ * by an old side effect of a sensor going away): then it is raised again rather than silently lost.
  */
 final class HelpCall {
 
@@ -26,9 +32,15 @@ final class HelpCall {
     static final String SOURCE = "inactivity";
 
     /** What became of a call. */
-    enum Outcome { HANDED_OVER, HANDED_TO_ALERT_SERVICE, ALREADY_HANDED_OVER, NO_MAIL_MANAGER }
+    enum Outcome { HANDED_OVER, HANDED_TO_ALERT_SERVICE, RAISED_AGAIN, ALREADY_HANDED_OVER, NO_MAIL_MANAGER }
+
+    /** The alert service when one runs: {@code use} applied to it, or empty without one (or when it failed). */
+    interface AlertDesk {
+        <T> Optional<T> use(Function<AlertService, T> use);
+    }
 
     private final AlertMail words;
+    private final AlertDesk desk;
     private final Map<String, MailManagerProvider> mailers = new ConcurrentHashMap<>();
     private InactivityAlert sent;
     /** When the alert handed over last was due (kept in the backup), or null. */
@@ -38,7 +50,12 @@ final class HelpCall {
     private volatile boolean toService;
 
     HelpCall(AlertMail words) {
+        this(words, HelpCall::inFramework);
+    }
+
+    HelpCall(AlertMail words, AlertDesk desk) {
         this.words = words;
+        this.desk = desk;
     }
 
     void add(MailManagerProvider m) {
@@ -52,14 +69,21 @@ final class HelpCall {
     /** Hands {@code alert} over unless it was already; {@code send} never blocks (MailManagerProvider). */
     synchronized Outcome call(InactivityAlert alert) {
         Objects.requireNonNull(alert, "alert");
+        boolean again = false;
         if (alert.equals(sent) || alert.raisedAt().equals(handedOverDue)) {
-            return Outcome.ALREADY_HANDED_OVER;
+            if (!closedWhileDue(alert)) {
+                return Outcome.ALREADY_HANDED_OVER;
+            }
+            again = true;
         }
         toService = toAlertService(alert);
         if (toService) {
             sent = alert;
             handedOverDue = alert.raisedAt();
-            return Outcome.HANDED_TO_ALERT_SERVICE;
+            return again ? Outcome.RAISED_AGAIN : Outcome.HANDED_TO_ALERT_SERVICE;
+        }
+        if (again) {
+            return Outcome.ALREADY_HANDED_OVER; // the service went meanwhile: the Mail Manager already had it once
         }
         MailManagerProvider m = mailers.values().stream().findFirst().orElse(null);
         if (m == null) {
@@ -73,33 +97,58 @@ final class HelpCall {
 
     /** @return whether an alert service took the alert (false outside a framework or without one) */
     private boolean toAlertService(InactivityAlert alert) {
+        return desk.use(service -> service.raise(new AlertRequest(AlertKind.INACTIVITY, SOURCE, alert.roomUid(),
+                alert.roomName(), alert.raisedAt(), subject(alert), words.body(alert, outage)))).isPresent();
+    }
+
+    /**
+     * @return whether the alert service runs and has neither an open nor an acknowledged alert of this source
+     *         raised at {@code alert}'s time: it was handed over, then closed while the person stayed quiet (no one
+     *         acknowledged it, no activity cleared it here), so nobody is being told any more
+     */
+    private boolean closedWhileDue(InactivityAlert alert) {
+        return desk.use(service -> service.recent(200).stream().noneMatch(a -> isFor(a, alert)
+                && (a.isOpen() || a.state() == AlertState.ACKNOWLEDGED))).orElse(false);
+    }
+
+    private static boolean isFor(Alert a, InactivityAlert alert) {
+        return SOURCE.equals(a.source()) && alert.raisedAt().equals(a.raisedAt());
+    }
+
+    /** The alert service of the framework this class runs in; empty outside one, without one, or when it fails. */
+    private static <T> Optional<T> inFramework(Function<AlertService, T> use) {
         Bundle bundle = FrameworkUtil.getBundle(HelpCall.class);
         BundleContext context = bundle == null ? null : bundle.getBundleContext();
         if (context == null) {
-            return false;
+            return Optional.empty();
         }
         try {
             ServiceReference<AlertService> ref = context.getServiceReference(AlertService.class);
             AlertService service = ref == null ? null : context.getService(ref);
             if (service == null) {
-                return false;
+                return Optional.empty();
             }
             try {
-                service.raise(new AlertRequest(AlertKind.INACTIVITY, SOURCE, alert.roomUid(), alert.roomName(),
-                        alert.raisedAt(), subject(alert), words.body(alert, outage)));
-                return true;
+                return Optional.ofNullable(use.apply(service));
             } finally {
                 context.ungetService(ref);
             }
         } catch (RuntimeException e) { // stopping, or the alert service failed: the Mail Manager, if any, takes it
-            return false;
+            return Optional.empty();
         }
     }
 
     /** @return for the event log: to whom the last call handed {@code alert}, and its subject */
     String outcomeWords(InactivityAlert alert) {
-        return (toService ? "alert handed to the alert service (it tells the contacts, repeats and escalates until "
-                + "someone acknowledges): " : "alert handed to the Mail Manager (it queues, sends and logs the "
+        return outcomeWords(alert, false);
+    }
+
+    /** @return {@link #outcomeWords(InactivityAlert)}; {@code again}: it was raised again, and why */
+    String outcomeWords(InactivityAlert alert, boolean again) {
+        String why = again ? "alert raised again: the alert service had no open alert for it although no activity "
+                + "was seen and nobody acknowledged it; " : "";
+        return why + (toService ? "alert handed to the alert service (it tells the contacts, repeats and escalates "
+                + "until someone acknowledges): " : "alert handed to the Mail Manager (it queues, sends and logs the "
                 + "delivery): ") + subject(alert);
     }
 

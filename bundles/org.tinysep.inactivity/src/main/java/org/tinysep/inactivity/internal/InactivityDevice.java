@@ -34,7 +34,8 @@ import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;
- * Flat Occupancy, Mail Manager and House Information are optional.
+ * Flat Occupancy, Mail Manager and House Information are optional. It watches the person: it is not removed when
+ * its sources go (issue 25), it says which rooms it can no longer see.
  */
 final class InactivityDevice extends WholeFlatDevice
         implements InactivityRecognitionProvider {
@@ -229,9 +230,10 @@ final class InactivityDevice extends WholeFlatDevice
         if (a.isEmpty()) {
             return;
         }
-        switch (help.call(a.get())) {
-            case HANDED_OVER, HANDED_TO_ALERT_SERVICE -> {
-                event(help.outcomeWords(a.get()));
+        HelpCall.Outcome outcome = help.call(a.get());
+        switch (outcome) {
+            case HANDED_OVER, HANDED_TO_ALERT_SERVICE, RAISED_AGAIN -> {
+                event(help.outcomeWords(a.get(), outcome == HelpCall.Outcome.RAISED_AGAIN));
                 status(DeviceStatus.State.ONLINE, "");
                 saveBackup(); // not handed over twice after a restart
             }
@@ -242,6 +244,12 @@ final class InactivityDevice extends WholeFlatDevice
 
     private static String lower(Enum<?> e) {
         return e.name().toLowerCase(Locale.ROOT).replace('_', ' ');
+    }
+
+    /** Issue 25, item 1: it stays when its sensors go and says which rooms it can no longer see. */
+    @Override
+    protected boolean watchesThePerson() {
+        return true;
     }
 
     @Override

@@ -38,7 +38,8 @@ import org.tinysep.device.support.UnmonitoredRooms;
 /**
  * Inactivity Recognition driver: creates its single device when the first activity source (Movement, Door or
  * Window) appears and connects it to every later one; Flat Occupancy, Mail Manager and House Information are
- * connected whenever present. A device left without sources is removed and created anew with the next one.
+ * connected whenever present. The device watches the person: left without sources it stays (issue 25, a deliberate
+ * deviation from thesis 3.3, docs/architecture.md) and says which rooms it can no longer see.
  */
 @Component(service = {}, immediate = true, configurationPid = InactivityDriver.PID)
 @Designate(ocd = InactivityConfig.class)

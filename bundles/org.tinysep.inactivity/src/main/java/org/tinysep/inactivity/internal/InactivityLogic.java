@@ -17,7 +17,9 @@ import org.tinysep.api.service.Occupancy;
  * start of watching, plus the limit of the last activity's room.</li>
  * <li>A tick at or after the deadline raises the alert once (stamped with the deadline); further ticks do
  * nothing until the next activity.</li>
- * <li>UNOCCUPIED or UNKNOWN: NOT_WATCHING, and a raised alert is dropped (someone left through the door).</li>
+ * <li>UNOCCUPIED: NOT_WATCHING, and a raised alert is dropped (someone left through the door). UNKNOWN (Flat
+ * Occupancy went away) while WATCHING: NOT_WATCHING; while in ALERT nothing changes: no one was seen leaving, so
+ * the alert stays (issue 25, item 2).</li>
  * <li>The clock went back (switch from virtual to real time, an NTP step, a restored time from the future):
  * {@link #rebase(Instant)} with the platform's {@code now} counts the quiet time from it, so fresh activity is
  * never taken for a late one.</li>
@@ -75,6 +77,11 @@ final class InactivityLogic {
             pausedFrom = null;
             watchingFrom = at.isBefore(start) ? start : at;
             return change(InactivityState.WATCHING, watchingFrom);
+        }
+        if (occupancy == Occupancy.UNKNOWN && state == InactivityState.ALERT) {
+            // Flat Occupancy went away (its bundle stopped, an update): nobody was seen leaving, the person may
+            // still lie there. The alert stays; only activity, a real UNOCCUPIED or a caregiver ends it (issue 25)
+            return Optional.empty();
         }
         alert = null;
         // UNKNOWN is no decision that anyone left (Flat Occupancy went away: an update, the platform stopping):

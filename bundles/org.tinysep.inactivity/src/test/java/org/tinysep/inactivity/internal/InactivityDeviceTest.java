@@ -174,4 +174,11 @@ class InactivityDeviceTest {
     static HouseInformationProvider house(Room... rooms) {
         return new FakeHouse(rooms);
     }
+
+    /** Issue 25, item 1: Inactivity Recognition watches the person: it says which rooms it can no longer see. */
+    @Test
+    void itWatchesThePersonAndListsTheRoomsItCannotSee() {
+        assertEquals("", device.parameters().stream().filter(p -> p.key().equals("roomsNotSeen")).findFirst()
+                .orElseThrow(() -> new AssertionError("no roomsNotSeen parameter")).value());
+    }
 }

@@ -151,4 +151,33 @@ class InactivityLogicTest {
         assertEquals(Optional.of(at(8, 31)), logic.deadline());
         assertEquals(Optional.empty(), logic.rebase(at(8, 2)), "once re-based, nothing is in the future");
     }
+
+    /** Issue 25, item 2: Flat Occupancy going away (UNKNOWN) is no one leaving: an open alert stays. */
+    @Test
+    void flatOccupancyGoingAwayDoesNotEndAnAlert() {
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        doAt(at(9, 10), in(BATHROOM, at(9, 10)));
+        runUntil(at(9, 55));
+        assertEquals(InactivityState.ALERT, logic.state());
+        assertEquals(Optional.empty(), logic.occupancy(Occupancy.UNKNOWN, at(9, 56)));
+        assertEquals(InactivityState.ALERT, logic.state());
+        assertEquals(at(9, 55), logic.alert().orElseThrow().raisedAt());
+        assertEquals(Optional.empty(), logic.occupancy(Occupancy.OCCUPIED, at(9, 57)), "Flat Occupancy back");
+        assertEquals(InactivityState.ALERT, logic.state());
+        assertEquals(Optional.of(InactivityState.NOT_WATCHING), logic.occupancy(Occupancy.UNOCCUPIED, at(10, 0)),
+                "a real decision that someone left still ends it");
+        assertEquals(Optional.empty(), logic.alert());
+    }
+
+    /** Issue 25, item 2: real activity still clears the alert while Flat Occupancy is gone. */
+    @Test
+    void activityStillClearsAnAlertKeptWhileFlatOccupancyIsGone() {
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        doAt(at(9, 10), in(BATHROOM, at(9, 10)));
+        runUntil(at(9, 55));
+        logic.occupancy(Occupancy.UNKNOWN, at(9, 56));
+        doAt(at(10, 0), in(KITCHEN, at(10, 0)));
+        assertEquals(InactivityState.WATCHING, logic.state());
+        assertEquals(Optional.empty(), logic.alert());
+    }
 }

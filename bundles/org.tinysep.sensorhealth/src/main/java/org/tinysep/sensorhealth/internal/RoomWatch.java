@@ -18,14 +18,24 @@ import org.tinysep.api.health.UnmonitoredRoom;
  */
 final class RoomWatch {
 
-    /** Rooms that became unmonitored and rooms monitored again, in this tick. */
-    record Changes(List<UnmonitoredRoom> unmonitored, List<UnmonitoredRoom> monitoredAgain) {
+    /**
+     * Rooms that became unmonitored, rooms monitored again, and unmonitored rooms whose last sensing device went
+     * (they stay unmonitored: a sensor that is gone is not a sensor heard again), in this tick.
+     */
+    record Changes(List<UnmonitoredRoom> unmonitored, List<UnmonitoredRoom> monitoredAgain,
+            List<UnmonitoredRoom> sensorGone) {
+
+        Changes(List<UnmonitoredRoom> unmonitored, List<UnmonitoredRoom> monitoredAgain) {
+            this(unmonitored, monitoredAgain, List.of());
+        }
     }
 
     private final Map<String, Map<String, SensorHealth>> members = new HashMap<>();
     private final Map<String, String> roomOf = new HashMap<>();
     private final Set<String> dirty = new LinkedHashSet<>();
     private final Map<String, UnmonitoredRoom> unmonitored = new LinkedHashMap<>();
+    /** Unmonitored rooms with no sensing device placed there any more (already told). */
+    private final Set<String> sensorless = new LinkedHashSet<>();
     private volatile List<UnmonitoredRoom> snapshot = List.of();
     private long evaluated;
 
@@ -67,11 +77,20 @@ final class RoomWatch {
         }
         List<UnmonitoredRoom> became = new ArrayList<>();
         List<UnmonitoredRoom> again = new ArrayList<>();
+        List<UnmonitoredRoom> gone = new ArrayList<>();
         for (String room : dirty) {
             evaluated++;
             List<SensorHealth> in = new ArrayList<>(members.getOrDefault(room, Map.of()).values());
             in.sort(Comparator.comparing(s -> s.node().nodeAddress()));
             List<UnmonitoredRoom> u = Unmonitored.of(in);
+            if (u.isEmpty() && unmonitored.containsKey(room) && in.stream().noneMatch(Unmonitored::sensing)) {
+                // issue 25: its sensor device went (removed, re-typed), none was heard: it stays unmonitored
+                if (sensorless.add(room)) {
+                    gone.add(unmonitored.get(room));
+                }
+                continue;
+            }
+            sensorless.remove(room);
             if (!u.isEmpty()) {
                 if (unmonitored.put(room, u.get(0)) == null) {
                     became.add(u.get(0));
@@ -87,7 +106,24 @@ final class RoomWatch {
         snapshot = List.copyOf(unmonitored.values());
         became.sort(Comparator.comparing(UnmonitoredRoom::roomName));
         again.sort(Comparator.comparing(UnmonitoredRoom::roomName));
-        return new Changes(became, again);
+        gone.sort(Comparator.comparing(UnmonitoredRoom::roomName));
+        return new Changes(became, again, gone);
+    }
+
+    /**
+     * Forgets the unmonitored rooms without a sensing device that are no longer in the house (removed by the
+     * user): a room that does not exist is not watched by anyone, and is no unmonitored room either.
+     */
+    void dropRemovedRooms(java.util.function.Predicate<String> removed) {
+        List<String> drop = sensorless.stream().filter(removed).toList();
+        if (drop.isEmpty()) {
+            return;
+        }
+        drop.forEach(r -> {
+            sensorless.remove(r);
+            unmonitored.remove(r);
+        });
+        snapshot = List.copyOf(unmonitored.values());
     }
 
     /** @return the unmonitored rooms now (names as of their last change) */

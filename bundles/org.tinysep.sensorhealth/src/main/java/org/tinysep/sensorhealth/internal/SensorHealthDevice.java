@@ -58,6 +58,7 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
     /** One platform second: only the nodes whose state or place changed are looked at again ({@link NodeIndex}). */
     void tick(Instant now) {
         NodeIndex.Changes changes = index.tick(now);
+        index.rooms().dropRemovedRooms(r -> context.rooms().house().isPresent() && context.rooms().room(r).isEmpty());
         unmonitored = index.rooms().unmonitored().stream().map(this::named)
                 .sorted(Comparator.comparing(UnmonitoredRoom::roomName)).toList();
         rooms(changes.rooms(), now);
@@ -85,6 +86,10 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
                     + "of its sensors has been heard since " + HealthWords.time(r.since())
                     + "; inactivity there cannot be seen until one reports again");
             listeners.fire(l -> l.roomUnmonitored(this, r, at));
+        }
+        for (UnmonitoredRoom u : changes.sensorGone()) {
+            event("room " + named(u).roomName() + " stays unmonitored: its sensor device was removed while none of its "
+                    + "sensors was heard; it is monitored again only when a sensor placed there reports");
         }
         for (UnmonitoredRoom u : changes.monitoredAgain()) {
             UnmonitoredRoom r = named(u);

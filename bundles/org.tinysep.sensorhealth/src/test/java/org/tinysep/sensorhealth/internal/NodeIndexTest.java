@@ -145,4 +145,48 @@ class NodeIndexTest {
         assertEquals("bus 1.9", index.sensors().get(1).name(), "placed by its bus device again");
         assertEquals(2, index.known());
     }
+
+    /**
+     * Issue 25, item 1: a room whose sensor device goes (removed, or its node re-typed by a forged keep-alive) while
+     * none of its sensors is heard is not "monitored again": it stays unmonitored until a sensor placed there
+     * reports; a room removed from the house is forgotten.
+     */
+    @Test
+    void anUnmonitoredRoomWhoseSensorDeviceGoesStaysUnmonitored() {
+        NodeIndex index = index(Duration.ZERO);
+        Node a = new Node(1);
+        a.register(index, "Bathroom-uid");
+        index.tick(T0);
+        a.set(false, T0);
+        NodeIndex.Changes silent = index.tick(T0.plusSeconds(1));
+        assertEquals(List.of("Bathroom-uid"), silent.rooms().unmonitored().stream().map(r -> r.roomUid()).toList());
+
+        index.deviceRemoved("movement-" + a.address);
+        NodeIndex.Changes gone = index.tick(T0.plusSeconds(2));
+        assertEquals(List.of(), gone.rooms().monitoredAgain(), "a sensor that went is no sensor heard again");
+        assertEquals(List.of("Bathroom-uid"), gone.rooms().sensorGone().stream().map(r -> r.roomUid()).toList());
+        assertEquals(List.of("Bathroom-uid"), index.rooms().unmonitored().stream().map(r -> r.roomUid()).toList());
+        assertEquals(List.of(), index.tick(T0.plusSeconds(3)).rooms().sensorGone(), "told once");
+
+        a.set(true, T0.plusSeconds(4)); // the sensor is placed there again and reports
+        index.deviceChanged(new OnNode("movement-" + a.address, a.address, "Bathroom-uid", () -> "Movement",
+                b -> b.equals(a.bus)));
+        NodeIndex.Changes back = index.tick(T0.plusSeconds(4));
+        assertEquals(List.of("Bathroom-uid"), back.rooms().monitoredAgain().stream().map(r -> r.roomUid()).toList());
+        assertTrue(index.rooms().unmonitored().isEmpty());
+    }
+
+    @Test
+    void anUnmonitoredRoomWithoutSensorThatLeftTheHouseIsForgotten() {
+        NodeIndex index = index(Duration.ZERO);
+        Node a = new Node(1);
+        a.register(index, "Bathroom-uid");
+        index.tick(T0);
+        a.set(false, T0);
+        index.tick(T0.plusSeconds(1));
+        index.deviceRemoved("movement-" + a.address);
+        index.tick(T0.plusSeconds(2));
+        index.rooms().dropRemovedRooms(r -> r.equals("Bathroom-uid"));
+        assertTrue(index.rooms().unmonitored().isEmpty());
+    }
 }

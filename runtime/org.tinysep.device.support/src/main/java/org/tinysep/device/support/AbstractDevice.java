@@ -33,6 +33,7 @@ public abstract class AbstractDevice implements Device {
     private final DeviceRegistration registration;
     private final DeviceBackup backup = new DeviceBackup(this);
     private final DeviceParameters parameters;
+    private final LostSources lost = new LostSources();
 
     protected AbstractDevice(DriverContext context, String uid, String type, String name) {
         this.context = Objects.requireNonNull(context, "context");
@@ -85,6 +86,21 @@ public abstract class AbstractDevice implements Device {
     /** Connects {@code listener} to {@code provider} and remembers the connection. */
     protected final <L> void connect(Provider<L> provider, Class<?> providerInterface, L listener, boolean vital) {
         registration.connect(provider, providerInterface, listener, vital);
+        LostSources.Lost back = lost.back(provider.deviceUid());
+        if (back != null) {
+            context.reporter().event(EventKind.DEVICE_EVENT, uid, LostSources.backWords(back));
+        }
+    }
+
+    /**
+     * @return whether this device watches the person (issue 25, item 1; Inactivity Recognition, Flat Occupancy):
+     *         it is then never removed because its sources went (a deliberate deviation from thesis 3.3: it keeps
+     *         running, with no source left too), it reports each vital source lost as a {@code Monitoring reduced: }
+     *         PROBLEM naming the sensor and its room, and lists them in its {@code roomsNotSeen} parameter until
+     *         they are back. It still goes with its own driver. Default false: thesis behaviour.
+     */
+    protected boolean watchesThePerson() {
+        return false;
     }
 
     @Override
@@ -99,6 +115,32 @@ public abstract class AbstractDevice implements Device {
      */
     final boolean providerGone(String providerUid) {
         return registration.providerGone(providerUid);
+    }
+
+    /**
+     * Drops every connection to the given provider device, as its driver does when the provider went.
+     *
+     * @return whether the device stays: it still holds a vital connection, or it {@link #watchesThePerson()}
+     */
+    final boolean loseProvider(String providerUid) {
+        boolean hadVital = registration.connections().stream()
+                .anyMatch(c -> c.providerDeviceUid().equals(providerUid) && c.vital());
+        Object provider = registration.provider(providerUid);
+        boolean stillVital = registration.providerGone(providerUid);
+        if (!watchesThePerson()) {
+            return stillVital;
+        }
+        if (hadVital && !context.frameworkStopping()) { // the whole platform stopping takes no sensor away
+            LostSources.Lost l = LostSources.of(providerUid, provider, context.rooms(), now());
+            lost.add(l);
+            context.reporter().event(EventKind.PROBLEM, uid, LostSources.problem(name(), l, stillVital));
+        }
+        return true;
+    }
+
+    /** @return the rooms (sensors) this watching device can no longer see, in words; "" when none */
+    final String roomsNotSeen() {
+        return lost.describe();
     }
 
     /** Unregisters the services and closes every connection, both ways (inputs first). Called by its driver. */

@@ -141,7 +141,8 @@ public abstract class AbstractDriver implements Driver {
 
     /**
      * Tells every device that a provider device went away; a device left without a vital connection is removed
-     * (thesis 3.3). While the driver's own bundle is stopping, its closing trackers report every provider as
+     * (thesis 3.3), unless it watches the person ({@link AbstractDevice#watchesThePerson()}, issue 25: it stays and
+     * says which room it can no longer see). While the driver's own bundle is stopping, its closing trackers report every provider as
      * removed: that is the driver going, not the providers, so nothing is done here and {@link #stop()} removes
      * the devices one by one instead (no false "lost its vital connections" entries).
      */
@@ -152,7 +153,7 @@ public abstract class AbstractDriver implements Driver {
         }
         for (AbstractDevice d : snapshot()) {
             boolean hadIt = d.connections().stream().anyMatch(c -> c.providerDeviceUid().equals(providerUid));
-            if (hadIt && !d.providerGone(providerUid)) {
+            if (hadIt && !d.loseProvider(providerUid)) {
                 context().event(EventKind.DEVICE_EVENT, d.uid() + " lost its vital connections and is removed");
                 remove(d.uid()); // its backup stays: the settings come back with the provider
             }

@@ -50,6 +50,11 @@ final class DeviceParameters {
             all.add(room.parameter());
         }
         all.addAll(device.moreParameters());
+        if (device.watchesThePerson()) {
+            all.add(Parameter.readOnly(LostSources.PARAMETER, device.roomsNotSeen(), "rooms this service can no "
+                    + "longer see because their sensor went away (each also a 'Monitoring reduced' problem); empty "
+                    + "when every sensor it had is there"));
+        }
         return all;
     }
 

@@ -18,6 +18,8 @@ final class DeviceRegistration {
     private final String uid;
     private final DeviceServices services = new DeviceServices();
     private final Consumptions consumptions = new Consumptions();
+    /** The provider objects connected to, by their device UID (to name a lost source in words). */
+    private final java.util.Map<String, Object> providers = new java.util.concurrent.ConcurrentHashMap<>();
 
     DeviceRegistration(DriverContext context, String uid, String type) {
         this.context = context;
@@ -47,12 +49,14 @@ final class DeviceRegistration {
 
     <L> void connect(Provider<L> provider, Class<?> providerInterface, L listener, boolean vital) {
         consumptions.add(providerInterface.getSimpleName(), provider.deviceUid(), vital, provider.connect(listener));
+        providers.put(provider.deviceUid(), provider);
         context.reporter().event(EventKind.CONNECTED, uid, "connected to " + providerInterface.getSimpleName()
                 + " of " + provider.deviceUid() + (vital ? " (vital)" : " (optional)"));
     }
 
     /** Drops every connection to the given provider device. @return whether a vital connection is still held */
     boolean providerGone(String providerUid) {
+        providers.remove(providerUid);
         for (ConnectionInfo c : consumptions.infos()) {
             if (c.providerDeviceUid().equals(providerUid) && consumptions.remove(c.interfaceName(), providerUid)) {
                 context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName()
@@ -60,6 +64,11 @@ final class DeviceRegistration {
             }
         }
         return consumptions.hasVital();
+    }
+
+    /** @return the provider object of that device UID while connected to it, or null */
+    Object provider(String providerUid) {
+        return providers.get(providerUid);
     }
 
     List<ConnectionInfo> connections() {
@@ -76,6 +85,7 @@ final class DeviceRegistration {
                     + c.providerDeviceUid());
         }
         consumptions.closeAll();
+        providers.clear();
         services.unregister();
     }
 }

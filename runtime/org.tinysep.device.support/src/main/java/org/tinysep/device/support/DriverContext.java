@@ -68,6 +68,19 @@ public final class DriverContext implements AutoCloseable {
         return stopping(bundleContext);
     }
 
+    /** @return whether the whole framework is stopping (the platform shuts down); never true without one */
+    public boolean frameworkStopping() {
+        if (bundleContext == null) {
+            return false;
+        }
+        try {
+            org.osgi.framework.Bundle system = bundleContext.getBundle(0);
+            return system == null || (system.getState() & (Bundle.STOPPING | Bundle.RESOLVED)) != 0;
+        } catch (IllegalStateException e) {
+            return true;
+        }
+    }
+
     static boolean stopping(BundleContext bundleContext) {
         if (bundleContext == null) {
             return false;
