@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeSet;
 import java.util.function.Supplier;
-import org.apache.felix.service.command.CommandSession;
 import org.apache.felix.service.command.Descriptor;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
@@ -32,7 +31,7 @@ public final class HelpCommand {
 
     /** Explains one command (in the platform: Gogo's own help). */
     interface Explainer {
-        Object explain(CommandSession session, String command) throws Exception;
+        Object explain(String command) throws Exception;
     }
 
     private final Supplier<Collection<Map<String, Object>>> commandServices;
@@ -41,7 +40,7 @@ public final class HelpCommand {
     @Activate
     public HelpCommand(BundleContext context) {
         this.commandServices = () -> properties(context);
-        this.explainer = (session, command) -> gogoHelp(context, session, command);
+        this.explainer = command -> gogoHelp(context, command);
     }
 
     HelpCommand(Supplier<Collection<Map<String, Object>>> commandServices, Explainer explainer) {
@@ -55,12 +54,12 @@ public final class HelpCommand {
     }
 
     @Descriptor("explains one command (Gogo's felix:help)")
-    public Object help(CommandSession session, @Descriptor("the command, e.g. tinysep:devices") String command)
+    public Object help(@Descriptor("the command, e.g. tinysep:devices") String command)
             throws Exception {
         if (!command.matches("[\\w.:-]+")) {
             throw new IllegalArgumentException("not a command name: '" + command + "'; usage: help [command]");
         }
-        return explainer.explain(session, command);
+        return explainer.explain(command);
     }
 
     /** @return every {@code scope:function} the services declare, sorted, each once */
@@ -80,15 +79,14 @@ public final class HelpCommand {
     }
 
     /** Runs Gogo's {@code help <command>} (org.apache.felix.gogo.command), the other {@code felix:help}. */
-    private Object gogoHelp(BundleContext context, CommandSession session, String command) throws Exception {
+    private Object gogoHelp(BundleContext context, String command) throws Exception {
         ServiceReference<?>[] refs = context.getServiceReferences((String) null,
                 "(&(osgi.command.scope=felix)(osgi.command.function=help))");
         for (ServiceReference<?> r : refs == null ? new ServiceReference<?>[0] : refs) {
             Object gogo = context.getService(r);
             try {
                 if (gogo != null && gogo != this) {
-                    return gogo.getClass().getMethod("help", CommandSession.class, String.class)
-                            .invoke(gogo, session, command);
+                    return gogo.getClass().getMethod("help", String.class).invoke(gogo, command); // Basic's
                 }
             } catch (NoSuchMethodException e) {
                 // not Gogo's: try the next

@@ -43,7 +43,7 @@ class HelpCommandTest {
     void plainHelpInTheShellIsThisOneRankedAboveGogosAndHelpWithANameIsGogos() {
         GogoHelp gogoHelp = new GogoHelp();
         GogoShell gogo = new GogoShell().add("felix", gogoHelp, 0, "help", "lb")
-                .add("felix", new HelpCommand(() -> SERVICES, (session, c) -> gogoHelp.help(c)), 1, "help");
+                .add("felix", new HelpCommand(() -> SERVICES, gogoHelp::help), 1, "help");
         String all = gogo.run("help");
         for (String c : List.of("tinysep:rooms", "tinysep:room-add", "tinysep:web-password", "tinysep:devices")) {
             assertTrue(all.lines().anyMatch(c::equals), c + " missing from:\n" + all);
