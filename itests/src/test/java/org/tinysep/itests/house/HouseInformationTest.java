@@ -154,6 +154,18 @@ public class HouseInformationTest extends TinySepTestSupport {
         assertEquals(8, heard.size());
     }
 
+    /** Gogo's own help left out the Function services (rooms, room-*): TinySEP's help lists them (issue 32 item 6). */
+    @Test
+    public void helpListsEveryCommandTheRoomCommandsToo() {
+        String help = shell("help");
+        for (String c : List.of("tinysep:rooms", "tinysep:room-add", "tinysep:room-remove", "tinysep:room-link",
+                "tinysep:devices", "tinysep:drivers", "tinysep:events", "tinysep:backup", "felix:lb")) {
+            assertTrue(c + " missing from help:\n" + help, help.lines().anyMatch(l -> l.strip().equals(c)));
+        }
+        String one = shell("help tinysep:devices");
+        assertTrue(one, one.contains("lists the devices a filter names"));
+    }
+
     @Test
     public void aMovementDevicePlacedInTheBathroomIsFoundByItsRoom() throws Exception {
         HouseInformationProvider provider = freshHouse();

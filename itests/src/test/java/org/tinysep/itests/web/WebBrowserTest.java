@@ -220,6 +220,21 @@ public class WebBrowserTest extends WebTestSupport {
                 browser.waitFor("document.getElementById('timeline').dataset.slots === '84' && document.querySelectorAll('#timeline-svg rect.slot').length > 0",
                         WAIT, "the activity plot of the last 7 days");
                 shot(browser, "caregiver");
+
+                step = "no installer control for the caregiver";
+                browser.eval("(document.getElementById('logout').click(), 1)");
+                browser.waitFor("location.pathname === '/login.html' && document.readyState === 'complete'", WAIT, "the login page after logging out");
+                browser.eval("(document.getElementById('user').value = 'caregiver', document.getElementById('password').value = "
+                        + Chromium.quote(CAREGIVER_PASSWORD) + ", document.getElementById('submit').click(), 1)");
+                browser.waitFor("location.pathname === '/caregiver.html' && document.readyState === 'complete'", WAIT, "the caregiver logged in");
+                String shown = "(ids => ids.filter(id => document.getElementById(id).getClientRects().length > 0).join(','))";
+                open(browser, base + "/drivers.html", "document.querySelectorAll('#applications tr').length > 0", "the drivers page as caregiver");
+                assertEquals("installer controls the caregiver sees on the drivers page", "\"\"",
+                        browser.eval(shown + "(['upload', 'jar', 'upload-button', 'reload'])"));
+                assertEquals("0", browser.eval("document.querySelectorAll('#applications button').length"));
+                open(browser, base + "/house.html", "document.querySelectorAll('#rooms tr').length > 0", "the house plan as caregiver");
+                assertEquals("installer controls the caregiver sees on the house plan", "\"\"",
+                        browser.eval(shown + "(['add-room', 'new-name', 'new-type', 'add'])"));
             } catch (AssertionError | RuntimeException e) {
                 log.error("Browser test failed at '{}'; {}", step, browser.failureScreenshot("web-screenshots", step));
                 throw e;

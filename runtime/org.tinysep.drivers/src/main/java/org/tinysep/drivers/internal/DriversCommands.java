@@ -31,6 +31,9 @@ import org.tinysep.api.device.Parameter;
 })
 public final class DriversCommands {
 
+    static final String USAGE = "usage: tinysep:drivers [reload | enable <bsn> | disable <bsn> | use <bsn> <file>]"
+            + " (help tinysep:drivers explains them)";
+
     private final BundleContext context;
     private final DriversList list;
 
@@ -83,8 +86,9 @@ public final class DriversCommands {
                         + String.join("\n  ", changes);
             }
             case "list" -> drivers();
-            default -> throw new IllegalArgumentException("unknown action '" + action
-                    + "': use tinysep:drivers [reload | enable <name> | disable <name>]");
+            case "enable", "disable" -> throw usage(action.toLowerCase(Locale.ROOT) + " needs the application's bundle symbolic name");
+            case "use" -> throw usage("use needs the application's bundle symbolic name and the jar");
+            default -> throw usage("unknown action '" + action + "'");
         };
     }
 
@@ -95,8 +99,8 @@ public final class DriversCommands {
         boolean enable = switch (action.toLowerCase(Locale.ROOT)) {
             case "enable" -> true;
             case "disable" -> false;
-            default -> throw new IllegalArgumentException("unknown action '" + action
-                    + "': use tinysep:drivers enable <name> or tinysep:drivers disable <name>");
+            case "use" -> throw usage("use needs the application's bundle symbolic name and the jar");
+            default -> throw usage("unknown action '" + action + "'");
         };
         return String.join("\n", list.setEnabled(bsn, enable));
     }
@@ -108,7 +112,7 @@ public final class DriversCommands {
             @Descriptor("the application's bundle symbolic name") String bsn,
             @Descriptor("the jar: a path (relative to tinysep.home) or a file: URL") String file) {
         if (!action.toLowerCase(Locale.ROOT).equals("use")) {
-            throw new IllegalArgumentException("unknown action '" + action + "': use tinysep:drivers use <name> <file>");
+            throw usage("unknown action '" + action + "'");
         }
         return list.use(bsn, file);
     }
@@ -116,8 +120,12 @@ public final class DriversCommands {
     /** {@code drivers} with more arguments than any form takes: the usage. */
     @Descriptor("with too many arguments: prints the usage")
     public String drivers(@Descriptor("anything else") String... wrong) {
-        throw new IllegalArgumentException("wrong number of arguments (" + wrong.length + "); usage: tinysep:drivers"
-                + " [reload | enable <bsn> | disable <bsn> | use <bsn> <file>] (help tinysep:drivers explains them)");
+        throw usage("wrong number of arguments (" + wrong.length + ")");
+    }
+
+    /** @return the error for wrong arguments: what is wrong, then the usage line */
+    static IllegalArgumentException usage(String what) {
+        return new IllegalArgumentException(what + "; " + USAGE);
     }
 
     private List<ServiceReference<Driver>> driverReferences() {

@@ -19,6 +19,7 @@ import org.tinysep.api.log.LogQuery;
 final class HistoryArguments {
 
     static final String USAGE = "[N] [--from T] [--to T] [--device D] [--kind K] [--limit N]";
+    private static final Set<String> OPTIONS = Set.of("--from", "--to", "--device", "--kind", "--limit");
 
     private HistoryArguments() {
     }
@@ -43,6 +44,9 @@ final class HistoryArguments {
             }
             if (!opt.startsWith("--")) {
                 throw new IllegalArgumentException("unexpected '" + opt + "'; usage: " + USAGE);
+            }
+            if (!OPTIONS.contains(opt)) {
+                throw new IllegalArgumentException("unknown option " + opt + "; usage: " + USAGE);
             }
             if (i + 1 >= a.size()) {
                 throw new IllegalArgumentException(opt + " needs a value; usage: " + USAGE);

@@ -89,6 +89,12 @@ public final class ShellCommands {
         return run("invoke", () -> operations.invoke(uid, function));
     }
 
+    /** {@code devices} with more than one argument: the usage, not Gogo's "Cannot coerce". */
+    @Descriptor("with more than one argument: prints the usage")
+    public String devices(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("devices [filter]", wrong);
+    }
+
     /** {@code remove}, {@code set} or {@code invoke} with the wrong number of arguments: the usage. */
     @Descriptor("with a wrong number of arguments: prints the usage")
     public String remove(@Descriptor("anything else") String... wrong) {

@@ -1,13 +1,13 @@
 package org.tinysep.runtime.internal;
 
 /** The answer to a shell command given the wrong number of arguments: its usage, not Gogo's "Cannot coerce". */
-final class Usage {
+public final class Usage {
 
     private Usage() {
     }
 
     /** @param usage e.g. {@code set <uid> <key> <value>} */
-    static IllegalArgumentException of(String usage, String... given) {
+    public static IllegalArgumentException of(String usage, String... given) {
         int n = given == null ? 0 : given.length;
         String name = usage.split(" ", 2)[0];
         return new IllegalArgumentException((n == 0 ? "missing arguments" : "wrong number of arguments (" + n + ")")

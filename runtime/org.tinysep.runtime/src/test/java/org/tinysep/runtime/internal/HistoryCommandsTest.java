@@ -162,6 +162,9 @@ class HistoryCommandsTest {
                 assertThrows(IllegalArgumentException.class, () -> shell.log("0")).getMessage());
         assertEquals("unknown option --since; usage: " + HistoryArguments.USAGE,
                 assertThrows(IllegalArgumentException.class, () -> shell.events("--since", "-1h")).getMessage());
+        // an unknown option last on the line is unknown, not "needs a value"
+        assertEquals("unknown option --bogus; usage: " + HistoryArguments.USAGE,
+                assertThrows(IllegalArgumentException.class, () -> shell.events("--bogus")).getMessage());
         assertEquals("--from needs a value; usage: " + HistoryArguments.USAGE,
                 assertThrows(IllegalArgumentException.class, () -> shell.events("--from")).getMessage());
         assertTrue(assertThrows(IllegalArgumentException.class, () -> shell.events("--kind", "MOVEMENT"))

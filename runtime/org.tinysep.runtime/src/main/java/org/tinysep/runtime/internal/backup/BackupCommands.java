@@ -24,6 +24,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Driver;
 import org.tinysep.device.support.StateFolder;
+import org.tinysep.runtime.internal.Usage;
 
 /**
  * {@code tinysep:backup [--with-secrets] [file]} writes the configuration as one signed zip archive;
@@ -104,6 +105,17 @@ public final class BackupCommands {
     public String restore() {
         throw new IllegalArgumentException("missing arguments; usage: tinysep:restore [--force] <file> | tinysep:restore"
                 + " --undo (help tinysep:restore explains them)");
+    }
+
+    /** {@code backup} or {@code restore} with more arguments than any form takes: the usage. */
+    @Descriptor("with too many arguments: prints the usage")
+    public String backup(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("backup [--with-secrets] [file]", wrong);
+    }
+
+    @Descriptor("with too many arguments: prints the usage")
+    public String restore(@Descriptor("anything else") String... wrong) {
+        throw Usage.of("restore [--force] <file> | tinysep:restore --undo", wrong);
     }
 
     private String restore(String file, boolean force) throws IOException {
