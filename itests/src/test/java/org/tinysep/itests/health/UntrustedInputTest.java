@@ -143,6 +143,7 @@ public class UntrustedInputTest extends TinySepTestSupport {
             handled(sent += 5);
             assertEquals("3", driver().get("nodes"));
             assertEquals(2, count("rejected.node_cap"));
+            assertEquals("the total counts node_cap too (issue 25, item 8)", 3000 + 2, count("rejected"));
             assertEquals(1, problems("its limit (maxNodes = 3)").size());
 
             // 3. rate limit: 127.0.0.3 floods node 6.1's frames, 127.0.0.1 still gets each of node 6.2's through
@@ -159,6 +160,7 @@ public class UntrustedInputTest extends TinySepTestSupport {
             assertEquals("the other sender was not starved", 1 + 20, packets("6.2"));
             assertEquals("every flood frame either delivered or counted", 1 + 2000, packets("6.1") + limited);
             assertEquals("every datagram counted", sent, count("received"));
+            assertEquals("the total is the sum of every rejected.<reason>", 3000 + 2 + limited, count("rejected"));
             assertEquals(1, problems("source 127.0.0.3 sends faster than the per-source rate limit").size());
         }
     }

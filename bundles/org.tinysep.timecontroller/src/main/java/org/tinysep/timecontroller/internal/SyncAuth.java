@@ -19,7 +19,9 @@ import javax.crypto.spec.SecretKeySpec;
  * gives a sender address at its first HELLO (every later HELLO from it gets the same), kept while the link is open;
  * so a request captured from one synchroniser is worthless from any other address and after a restart. Within a session
  * sequence numbers must increase: a request whose number is not above the last accepted one is refused as
- * {@code replayed}, except the exact resend of the last TICK (a lost DONE). Thread-safe.
+ * {@code replayed}, except the exact resend of the last TICK (a lost DONE). Sessions are bounded: at most
+ * {@link #MAX_SESSIONS} that only said HELLO, and apart from them at most {@link #MAX_TRUSTED} that carried an
+ * accepted signed request; HELLOs never push out the latter. Thread-safe.
  */
 final class SyncAuth {
 
@@ -27,8 +29,14 @@ final class SyncAuth {
     record Refusal(String code, String text) {
     }
 
-    /** Sessions kept at most (the least recently used goes first). */
+    /** Sessions given by HELLO and not (yet) used for an accepted request, kept at most (least recent goes first). */
     static final int MAX_SESSIONS = 256;
+    /**
+     * Sessions that carried an accepted, signed request (a synchroniser with the key), kept at most. Only another
+     * signed session can push one out: a flood of HELLOs from other ports never evicts the live synchroniser's
+     * session (issue 25, item 8).
+     */
+    static final int MAX_TRUSTED = 16;
 
     private static final class Session {
         final String value;
@@ -43,12 +51,17 @@ final class SyncAuth {
     private final byte[] key;
     private final String noKey;
     private final SecureRandom random = new SecureRandom();
-    private final Map<InetSocketAddress, Session> sessions = new LinkedHashMap<>(16, 0.75f, true) {
-        @Override
-        protected boolean removeEldestEntry(Map.Entry<InetSocketAddress, Session> eldest) {
-            return size() > MAX_SESSIONS;
-        }
-    };
+    private final Map<InetSocketAddress, Session> sessions = lru(MAX_SESSIONS);
+    private final Map<InetSocketAddress, Session> trusted = lru(MAX_TRUSTED);
+
+    private static Map<InetSocketAddress, Session> lru(int max) {
+        return new LinkedHashMap<>(16, 0.75f, true) {
+            @Override
+            protected boolean removeEldestEntry(Map.Entry<InetSocketAddress, Session> eldest) {
+                return size() > max;
+            }
+        };
+    }
 
     /**
      * @param key   the shared secret, or null when there is none ({@code noKey} says why): every TICK is refused
@@ -61,6 +74,10 @@ final class SyncAuth {
 
     /** @return the session value of {@code from} (16 hex digits), created at its first HELLO */
     synchronized String hello(InetSocketAddress from) {
+        Session known = trusted.get(from);
+        if (known != null) {
+            return known.value;
+        }
         return sessions.computeIfAbsent(from, a -> {
             byte[] s = new byte[8];
             random.nextBytes(s);
@@ -89,7 +106,7 @@ final class SyncAuth {
         if (key == null) {
             return new Refusal("unauthorized", "the platform has no synchroniser key (" + noKey + ")");
         }
-        Session session = sessions.get(from);
+        Session session = session(from);
         if (session == null) {
             return new Refusal("unauthorized", "no session for " + from.getAddress().getHostAddress() + ":"
                     + from.getPort() + ": send HELLO first and sign with the session of its WELCOME");
@@ -108,9 +125,19 @@ final class SyncAuth {
         return null;
     }
 
+    private Session session(InetSocketAddress from) {
+        Session s = trusted.get(from);
+        return s != null ? s : sessions.get(from);
+    }
+
     /** Records an authenticated request that was carried out ({@code at}: its instant, null for BYE). */
     synchronized void accepted(InetSocketAddress from, long seq, Instant at) {
-        Session session = sessions.get(from);
+        Session session = sessions.remove(from);
+        if (session != null) {
+            trusted.put(from, session); // signed with the key: no HELLO flood can push it out any more
+        } else {
+            session = trusted.get(from);
+        }
         if (session != null) {
             session.lastSeq = seq;
             session.lastAt = at;

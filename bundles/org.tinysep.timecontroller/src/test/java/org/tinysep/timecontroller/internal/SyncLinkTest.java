@@ -113,6 +113,47 @@ class SyncLinkTest {
         assertEquals(3, protocol.received());
     }
 
+    /**
+     * HELLOs from {@code n} sockets on 127.0.0.1, all open at once (so each has its own port: a closed socket's
+     * port may be handed out again), each WELCOME awaited.
+     */
+    private void hellosFromOtherPorts(int n) throws IOException {
+        List<DatagramSocket> others = new java.util.ArrayList<>();
+        try {
+            for (int i = 0; i < n; i++) {
+                DatagramSocket other = new DatagramSocket(0, InetAddress.getLoopbackAddress());
+                others.add(other);
+                other.setSoTimeout(5000);
+                byte[] b = "HELLO".getBytes(StandardCharsets.US_ASCII);
+                other.send(new DatagramPacket(b, b.length, platform));
+                DatagramPacket in = new DatagramPacket(new byte[512], 512);
+                other.receive(in);
+                assertTrue(new String(in.getData(), 0, in.getLength(), StandardCharsets.US_ASCII)
+                        .startsWith("WELCOME"));
+            }
+        } finally {
+            others.forEach(DatagramSocket::close);
+        }
+    }
+
+    @Test
+    void aFloodOfHellosFromOtherPortsDoesNotEvictTheSynchronisersSession() throws Exception {
+        assertEquals("DONE 1 2026-11-22T11:00:00Z", askSigned("TICK 1 2026-11-22T11:00:00Z"));
+        hellosFromOtherPorts(SyncAuth.MAX_SESSIONS + 44); // 300 HELLOs, each from its own port
+        assertEquals("DONE 2 2026-11-22T11:00:01Z", askSigned("TICK 2 2026-11-22T11:00:01Z"),
+                "the live, signed session survives the flood");
+        assertEquals("WELCOME 2026-11-22T11:00:01Z EXTERNAL " + session(), ask("HELLO"), "and keeps its value");
+    }
+
+    @Test
+    void sessionsThatOnlySaidHelloAreStillBounded() throws Exception {
+        session(); // HELLO, never a signed request
+        hellosFromOtherPorts(SyncAuth.MAX_SESSIONS);
+        String answer = askSigned("TICK 1 2026-11-22T11:00:00Z");
+        assertTrue(answer.startsWith("ERROR 1 unauthorized no session for"),
+                "the oldest unauthenticated session made room: " + answer);
+    }
+
     @Test
     void aTickFromASenderWithoutTheKeyIsRefused() throws Exception {
         byte[] otherKey = "not-the-platform-key-0123456789".getBytes(StandardCharsets.US_ASCII);

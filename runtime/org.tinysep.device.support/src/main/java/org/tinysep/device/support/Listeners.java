@@ -1,5 +1,7 @@
 package org.tinysep.device.support;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
@@ -57,6 +59,17 @@ public final class Listeners<L> {
     /** @return the number of open connections */
     public int size() {
         return handles.size();
+    }
+
+    /** @return the listeners connected now, in connection order (e.g. to name the devices that depend on a node) */
+    public List<L> connected() {
+        List<L> out = new ArrayList<>();
+        for (Handle h : handles) {
+            if (h.open.get()) {
+                out.add(h.listener);
+            }
+        }
+        return out;
     }
 
     /** @return how many listener calls threw since creation */

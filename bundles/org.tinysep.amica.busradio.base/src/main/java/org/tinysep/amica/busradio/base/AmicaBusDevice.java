@@ -2,6 +2,7 @@ package org.tinysep.amica.busradio.base;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -19,6 +20,7 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceFunction;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
@@ -72,6 +74,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
     private final NodeWatch watch;
     private final BatteryWatch battery = new BatteryWatch();
+    private final NodeTypeGuard guard = new NodeTypeGuard();
 
     /**
      * @param type  the device type, e.g. {@code BusRadioAmicaUdp}; the UID derives from the driver name and the
@@ -164,15 +167,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         lastSeen = at;
         Instant silence = watch.heard(at, frame.sequence());
         if (payload instanceof KeepAlive ka) {
-            keepAlive = ka;
-            Set<String> types = typeNames(ka);
-            if (!types.equals(nodeTypes)) {
-                event("node types changed from " + nodeTypes + " to " + types);
-                nodeTypes = types;
-                watch.rates(interval(types), perSecond(types));
-                serviceProperty(DeviceProperties.NODE_TYPE, types.toArray(String[]::new));
-            }
-            batteryReport(ka.batteryMillivolts());
+            keepAlive(ka, from);
         }
         if (silence != null) {
             event(HealthWords.heardAgain(silence, at));
@@ -184,6 +179,76 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
         }
         stateChanged(); // last seen, saved at most every 10 s, never on this thread
+    }
+
+    /**
+     * A keep-alive: the same types, or other types while no device depends on the node, are taken as they are;
+     * other types while devices depend on it are held, counted and reported (issue 25, item 1; {@link NodeTypeGuard}).
+     * The frame still counts as heard and is still forwarded (abstraction devices ignore keep-alives).
+     */
+    private void keepAlive(KeepAlive ka, R from) {
+        Set<String> types = typeNames(ka);
+        if (types.equals(nodeTypes)) {
+            keepAlive = ka;
+            guard.agreed();
+        } else if (dependedOn()) {
+            NodeTypeGuard.Claim claim = new NodeTypeGuard.Claim(types, ka, link.describe(from));
+            if (guard.mismatch(claim)) {
+                String problem = NodeTypeGuard.problem("AmICA node " + address, nodeTypes, claim,
+                        NodeTypeGuard.dependents(listeners.connected()), uid(),
+                        guard.reportsExhausted());
+                LOG.warn("{}", problem);
+                context.reporter().event(EventKind.PROBLEM, uid(), problem);
+            }
+            return; // neither the types nor the rest of this keep-alive (battery, serial number) are taken
+        } else {
+            retype(ka, "node types changed from " + nodeTypes + " to " + types);
+        }
+        batteryReport(ka.batteryMillivolts());
+    }
+
+    /** @return whether devices depend on the node: listeners connected, or one left and its replacement is due */
+    private boolean dependedOn() {
+        if (listeners.size() > 0) {
+            return true;
+        }
+        synchronized (handover) {
+            return handover.awaitingReplacement();
+        }
+    }
+
+    /** Takes the keep-alive's types as the node's, with an event entry; its devices follow the service property. */
+    private synchronized void retype(KeepAlive ka, String entry) {
+        Set<String> types = typeNames(ka);
+        keepAlive = ka;
+        event(entry);
+        nodeTypes = types;
+        watch.rates(interval(types), perSecond(types));
+        serviceProperty(DeviceProperties.NODE_TYPE, types.toArray(String[]::new));
+    }
+
+    @Override
+    public List<DeviceFunction> functions() {
+        return List.of(new DeviceFunction(NodeTypeGuard.ACCEPT, "applies the node types a keep-alive claimed"
+                + " (pendingNodeTypes): only after a real change of the node; its devices change with them"));
+    }
+
+    /** {@value NodeTypeGuard#ACCEPT}: the installer confirms that the node really changed its types. */
+    @Override
+    public String invoke(String function) {
+        if (!NodeTypeGuard.ACCEPT.equals(function)) {
+            return super.invoke(function);
+        }
+        NodeTypeGuard.Claim claim = guard.take();
+        if (claim == null) {
+            throw new IllegalArgumentException("no node types are pending: the node's last keep-alive agreed with"
+                    + " its types " + nodeTypes);
+        }
+        Set<String> before = nodeTypes;
+        retype(claim.keepAlive(), "node types changed from " + before + " to " + claim.types() + ": confirmed by"
+                + " the installer (" + NodeTypeGuard.ACCEPT + "; claimed by a keep-alive from " + claim.from() + ")");
+        return "node types now " + claim.types() + " (were " + before + "); the devices of the old types go, those of"
+                + " the new ones come";
     }
 
     private void batteryReport(int millivolts) {
@@ -278,6 +343,11 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         return address;
     }
 
+    /** @return keep-alives whose node types disagreed while devices depended on the node (not applied) */
+    public long typeMismatches() {
+        return guard.mismatches();
+    }
+
     /** @return where the node was last heard */
     public R route() {
         return route;
@@ -286,7 +356,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     @Override
     protected List<Parameter> moreParameters() {
         KeepAlive ka = keepAlive;
-        return List.of(
+        List<Parameter> out = new ArrayList<>(List.of(
                 Parameter.readOnly("node", address, "netgroup.address of the node"),
                 Parameter.readOnly("nodeTypes", String.join(",", nodeTypes), "from the keep-alive product id"),
                 Parameter.readOnly("remote", route == null ? NOT_HEARD : link.describe(route),
@@ -304,7 +374,9 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
                 Parameter.readOnly("sequenceGaps", watch.sequenceGaps(), "frames missing by sequence number"),
                 Parameter.readOnly("vendorId", ka.vendorId(), "from the last keep-alive"),
                 Parameter.readOnly("productId", ka.productId(), "node type bitmask, see docs/protocols/amica.md"),
-                Parameter.readOnly("serialNumber", ka.serialNumber(), "from the last keep-alive"));
+                Parameter.readOnly("serialNumber", ka.serialNumber(), "from the last keep-alive")));
+        out.addAll(guard.parameters());
+        return out;
     }
 
     /** Closes the connections and leaves the node table (its driver removed it). */

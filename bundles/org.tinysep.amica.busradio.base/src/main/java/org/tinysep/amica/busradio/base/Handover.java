@@ -65,6 +65,11 @@ final class Handover {
         return replay;
     }
 
+    /** @return whether a listener left within the window and its replacement has not connected yet */
+    boolean awaitingReplacement() {
+        return holding();
+    }
+
     /** @return payloads that found the buffer full since creation */
     long lost() {
         return lost;

@@ -14,6 +14,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.RejectTotals;
 import org.tinysep.serial.support.SerialPortLink;
 
 /**
@@ -127,7 +128,8 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         out.add(Parameter.readOnly("sendFailures", nodes.failed(), "frames not sent (port closed or write failed)"));
         out.addAll(rejects.parameters());
         out.addAll(nodes.parameters());
-        return out;
+        return RejectTotals.summed(out); // rejected = every rejected.<reason>, node_cap included
+
     }
 
     boolean isOpen() {

@@ -22,6 +22,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.RejectTotals;
 import org.tinysep.device.support.SourceGate;
 import org.tinysep.link.udp.DatagramLink;
 
@@ -171,6 +172,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         out.addAll(rejects == null ? List.of() : rejects.parameters());
         out.addAll(gate == null ? List.of() : gate.parameters());
         out.addAll(nodes == null ? List.of() : nodes.parameters());
-        return out;
+        return RejectTotals.summed(out); // rejected = every rejected.<reason>, the gate's and node_cap included
+
     }
 }
