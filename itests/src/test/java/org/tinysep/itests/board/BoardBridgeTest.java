@@ -40,8 +40,9 @@ public class BoardBridgeTest extends MqttBridgeSupport {
         Login installer = login("installer", INSTALLER_PASSWORD);
         try (Mosquitto broker = Mosquitto.startDefault()) {
             configure("org.tinysep.mqtt", Map.of("brokerUrl", broker.url(), "flatId", "flat1",
-                    "queueDir", Files.createTempDirectory("tinysep-board-outbox").toString()));
-            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "care-board"));
+                    "queueDir", Files.createTempDirectory("tinysep-board-outbox").toString(), "allowAnonymous", "true"));
+            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "care-board",
+                    "allowAnonymous", "true"));
             await(WAIT, () -> board(installer).contains("Flat flat1: online since"), "flat1 online on the board");
 
             AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);

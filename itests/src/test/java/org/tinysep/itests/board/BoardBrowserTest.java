@@ -44,8 +44,9 @@ public class BoardBrowserTest extends MqttBridgeSupport {
         setPasswords();
         try (Mosquitto broker = Mosquitto.startDefault(); Chromium browser = Chromium.start(WAIT)) {
             configure("org.tinysep.mqtt", Map.of("brokerUrl", broker.url(), "flatId", "flat-7",
-                    "queueDir", Files.createTempDirectory("tinysep-board-browser").toString()));
-            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "browser-board"));
+                    "queueDir", Files.createTempDirectory("tinysep-board-browser").toString(), "allowAnonymous", "true"));
+            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "browser-board",
+                    "allowAnonymous", "true"));
             AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);
             try {
                 browser.navigate(base() + "/login.html");

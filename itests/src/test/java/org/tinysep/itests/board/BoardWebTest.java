@@ -52,7 +52,8 @@ public class BoardWebTest extends WebTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.mqtt.board", Map.of("brokerUrl", "tcp://127.0.0.1:" + brokerPort(), "clientId", "itest-board"));
+        configs.put("org.tinysep.mqtt.board", Map.of("brokerUrl", "tcp://127.0.0.1:" + brokerPort(), "clientId", "itest-board",
+                "allowAnonymous", "true"));
         return configs;
     }
 

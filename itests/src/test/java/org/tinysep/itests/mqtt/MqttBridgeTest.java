@@ -28,6 +28,8 @@ import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.itests.AmicaNode;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.MqttTestClient;
@@ -51,6 +53,7 @@ public class MqttBridgeTest extends MqttBridgeSupport {
         c.put("brokerUrl", broker.url());
         c.put("flatId", FLAT);
         c.put("queueDir", Files.createTempDirectory("tinysep-mqtt-outbox").toString());
+        c.put("allowAnonymous", "true"); // the test broker lets anyone in (issue 25 item 2: only with the override)
         return c;
     }
 
@@ -78,6 +81,30 @@ public class MqttBridgeTest extends MqttBridgeSupport {
         Device d = bridgeDevice();
         await(TIMEOUT, () -> d.status().detail().contains("idle"), "the bridge idle: " + d.status());
         assertEquals("none", parameter(d, "broker"));
+    }
+
+    @Test
+    public void withoutALoginTheBridgeDoesNotConnectUnlessAnonymousIsAllowed() throws Exception {
+        try (Mosquitto broker = Mosquitto.startDefault();
+                MqttTestClient sub = MqttTestClient.connect(broker.url(), "observer").subscribe(BASE + "status")) {
+            Map<String, String> c = bridge(broker);
+            c.remove("allowAnonymous");
+            configure(PID, c);
+            Device d = bridgeDevice();
+            await(TIMEOUT, () -> d.status().detail().contains("no broker login is configured"), "refused: " + d.status());
+            assertEquals(DeviceStatus.State.ERROR, d.status().state());
+            EventLog log = awaitService(EventLog.class, null, TIMEOUT);
+            await(TIMEOUT, () -> log.recent(200).stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().startsWith("Monitoring reduced: the MQTT bridge of flat " + FLAT)), "the PROBLEM");
+            Thread.sleep(1500); // a connection attempt would have reached the broker by now
+            assertTrue(sub.received(BASE + "status").toString(), sub.received(BASE + "status").isEmpty());
+            assertTrue(broker.log(), !broker.log().contains(" as " + FLAT + " "));
+
+            configure(PID, bridge(broker)); // with the override: it connects, and says loudly what that means
+            sub.await(BASE + "status", "online", WAIT);
+            await(TIMEOUT, () -> log.recent(200).stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().contains("WITHOUT a login (allowAnonymous=true): anyone")), "the warning");
+        }
     }
 
     @Test

@@ -5,11 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Clock;
 import java.time.Duration;
 import java.time.Instant;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
@@ -17,6 +22,7 @@ import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
 import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
 import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.mqtt.board.loadtest.MessageCallback;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 
@@ -29,12 +35,18 @@ class BoardBrokerTest {
 
     static final Duration LIMIT = Duration.ofSeconds(60);
 
+    @TempDir
+    Path var;
+    final List<String> problems = new CopyOnWriteArrayList<>();
+
     @Test
     void alertTravelsToTheBoardAndItsAcknowledgementBackToTheFlat() throws Exception {
         assumeTrue(Mosquitto.isInstalled(), "Debian's mosquitto is not installed (scripts/install-deps.sh)");
+        Path passwordFile = Files.writeString(var.resolve("board.password"), "b0ard-pass\n");
+        Files.setPosixFilePermissions(passwordFile, PosixFilePermissions.fromString("rw-------"));
         try (Mosquitto broker = Mosquitto.builder().user("care", "b0ard-pass").start();
                 Central central = new Central(Configs.board(Map.of("brokerUrl", broker.url(), "username", "care",
-                        "password", "b0ard-pass")), Clock.systemUTC(), null)) {
+                        "passwordFile", passwordFile.toString())), Clock.systemUTC(), null, var, problems::add)) {
             MqttAsyncClient flat = new MqttAsyncClient(broker.url(), "17", new MemoryPersistence());
             MqttConnectionOptions o = new MqttConnectionOptions();
             o.setUserName("care"); // the test support makes one user
@@ -70,13 +82,14 @@ class BoardBrokerTest {
                     () -> central.json().contains("\"status\":\"OFFLINE\"") && central.json().contains("Last Will"), central::json);
             assertTrue(central.json().contains("\"connected\":true"), central.json());
             assertTrue(!central.json().contains("b0ard-pass"), "the password never reaches the page");
+            assertEquals(List.of(), problems, "a login from an owner-only file: nothing to warn about");
             flat.close(true);
         }
     }
 
     @Test
     void idleWithoutABrokerAndSaysSo() throws Exception {
-        try (Central central = new Central(Configs.board(Map.of()), Clock.systemUTC(), null)) {
+        try (Central central = new Central(Configs.board(Map.of()), Clock.systemUTC(), null, var, problems::add)) {
             assertTrue(central.json().contains("idle: no broker configured"), central.json());
         }
     }
