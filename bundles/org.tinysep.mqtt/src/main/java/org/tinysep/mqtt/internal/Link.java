@@ -141,7 +141,9 @@ final class Link {
         int gen = generation;
         byte[] payload = m.payload();
         byte[] k = key;
-        if (k != null && payload.length > 1 && payload[0] == '{' && payload[payload.length - 1] == '}') {
+        String base = topics.status().substring(0, topics.status().length() - "status".length()); // P/F/
+        if (k != null && m.topic().startsWith(base) && payload.length > 1 && payload[0] == '{'
+                && payload[payload.length - 1] == '}') { // the flat's own JSON topics; discovery configs stay as they are
             payload = Signatures.sign(k, m.topic(), m.text()).getBytes(StandardCharsets.UTF_8);
         }
         MqttMessage msg = new MqttMessage(payload, Message.QOS, m.retained(), null);

@@ -25,6 +25,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.mqtt.board.loadtest.MessageCallback;
 import org.tinysep.testsupport.mqtt.Mosquitto;
+import org.tinysep.testsupport.mqtt.Signed;
 
 /**
  * The board on Debian's real Mosquitto: a flat (a plain Paho client publishing exactly the contract's messages)
@@ -34,6 +35,7 @@ import org.tinysep.testsupport.mqtt.Mosquitto;
 class BoardBrokerTest {
 
     static final Duration LIMIT = Duration.ofSeconds(60);
+    static final String KEY = "flat-17-key-0123456789abcdef";
 
     @TempDir
     Path var;
@@ -43,6 +45,8 @@ class BoardBrokerTest {
     void alertTravelsToTheBoardAndItsAcknowledgementBackToTheFlat() throws Exception {
         assumeTrue(Mosquitto.isInstalled(), "Debian's mosquitto is not installed (scripts/install-deps.sh)");
         Path passwordFile = Files.writeString(var.resolve("board.password"), "b0ard-pass\n");
+        Path keyFile = Files.writeString(Files.createDirectories(var.resolve("secrets/flats")).resolve("17.key"), KEY);
+        Files.setPosixFilePermissions(keyFile, PosixFilePermissions.fromString("rw-------"));
         Files.setPosixFilePermissions(passwordFile, PosixFilePermissions.fromString("rw-------"));
         try (Mosquitto broker = Mosquitto.builder().user("care", "b0ard-pass").start();
                 Central central = new Central(Configs.board(Map.of("brokerUrl", broker.url(), "username", "care",
@@ -60,19 +64,38 @@ class BoardBrokerTest {
 
             publish(flat, "tinysep/17/status", "online");
             // started now: a fixed start date would make the flat SILENT (no daily summary for 26 h) from a day after it
-            publish(flat, "tinysep/17/platform", BoardTest.platform(Instant.now(), Instant.now()));
-            publish(flat, "tinysep/17/alert/3", BoardTest.alert(3, "OPEN", 1));
+            signed(flat, "tinysep/17/platform", BoardTest.platform(Instant.now(), Instant.now()));
+            signed(flat, "tinysep/17/alert/3", BoardTest.alert(3, "OPEN", 1));
             Conditions.await("the board to show flat 17's open alert", LIMIT,
                     () -> central.json().contains("\"state\":\"OPEN\"") && central.json().contains("\"status\":\"ONLINE\""),
                     central::json);
 
+            // another client on the broker (issue 25 item 2): an unsigned retained CLEARED with a huge seq, then the
+            // empty retained message that would delete the alert, then a fake flat with a fake alert: none counts
+            MqttAsyncClient other = new MqttAsyncClient(broker.url(), "intruder", new MemoryPersistence());
+            other.connect(o).waitForCompletion(20_000);
+            publish(other, "tinysep/17/alert/3", BoardTest.alert(3, "CLEARED", 999_999));
+            publish(other, "tinysep/17/alert/3", "");
+            publish(other, "tinysep/flat-evil/status", "online");
+            publish(other, "tinysep/flat-evil/alert/1", BoardTest.alert(1, "OPEN", 1).replace("\"17\"", "\"flat-evil\""));
+            Conditions.await("the board to have seen the intruder's messages", LIMIT,
+                    () -> central.json().contains("\"unknownFlats\":2,\"unsigned\":2"), central::json);
+            assertTrue(central.json().contains("\"state\":\"OPEN\""), central.json());
+            assertTrue(!central.json().contains("flat-evil"), central.json());
+            other.disconnect().waitForCompletion(5_000);
+            other.close();
+
             String words = central.acknowledge("17", "3", "Eva");
             assertTrue(words.startsWith("acknowledgement of alert 3 sent to flat 17 by Eva"), words);
             String ack = acks.poll(60, TimeUnit.SECONDS);
-            assertEquals("tinysep/17/command/alert/3/ack {\"by\":\"Eva\"}", ack);
+            assertTrue(ack.startsWith("tinysep/17/command/alert/3/ack {\"by\":\"Eva\",\"at\":\""), ack);
+            String payload = ack.substring(ack.indexOf(' ') + 1);
+            assertTrue(Signatures.check(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/17/command/alert/3/ack", payload)
+                    .valid(), "the acknowledgement signed with flat 17's key: " + payload);
+            assertTrue(payload.contains("\"nonce\":\""), payload);
             assertTrue(central.json().contains("acknowledgement sent by Eva at "), central.json());
 
-            publish(flat, "tinysep/17/alert/3", BoardTest.alert(3, "ACKNOWLEDGED", 2)); // the flat confirms
+            signed(flat, "tinysep/17/alert/3", BoardTest.alert(3, "ACKNOWLEDGED", 2)); // the flat confirms
             Conditions.await("the board to show the flat's confirmation", LIMIT,
                     () -> central.json().contains("acknowledged by Eva at ") // "14:05" the day of the fixture, else with its date
                             && central.json().contains("; the flat confirmed it at "), central::json);
@@ -92,6 +115,10 @@ class BoardBrokerTest {
         try (Central central = new Central(Configs.board(Map.of()), Clock.systemUTC(), null, var, problems::add)) {
             assertTrue(central.json().contains("idle: no broker configured"), central.json());
         }
+    }
+
+    static void signed(MqttAsyncClient client, String topic, String json) throws Exception {
+        publish(client, topic, Signed.sign(KEY, topic, json));
     }
 
     static void publish(MqttAsyncClient client, String topic, String payload) throws Exception {
