@@ -185,7 +185,7 @@ public class MqttBridgeTest extends MqttBridgeSupport {
             sub.publish(lightTopic, Signed.command(KEY, lightTopic, "\"parameter\":\"room\",\"value\":\"Attic\""), false);
             sub.await(BASE + "command/result", "only 'on' can be set over MQTT", WAIT);
             Device d = bridgeDevice();
-            await(TIMEOUT, () -> "6".equals(parameter(d, "rejectedCommands")), "6 rejected commands, was "
+            await(TIMEOUT, () -> "5".equals(parameter(d, "rejectedCommands")), "5 rejected commands, was "
                     + parameter(d, "rejectedCommands"));
             assertEquals("1", parameter(d, "acceptedCommands"));
             assertEquals("2", parameter(d, "refusedCommandsUnauthorised"));
