@@ -98,6 +98,9 @@ etc="$demo/home/etc"
 cat > "$etc/org.tinysep.mqtt.cfg" <<EOF
 brokerUrl=tcp://127.0.0.1:$mport
 flatId=flat-a
+# the check's broker lets anyone in (issue 25 item 2: only with the override; Home Assistant's plain ON/OFF is unsigned)
+allowAnonymous=true
+commands.actuators=unsigned
 queueDir=$demo/var/mqtt
 EOF
 (cd "$dist" && TINYSEP_DAEMON=1 exec bin/tinysep --home "$demo/home" --var "$demo/var" > "$run/tinysep.log" 2>&1) &

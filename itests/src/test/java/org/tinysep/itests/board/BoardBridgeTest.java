@@ -5,6 +5,7 @@ import static org.junit.Assert.assertTrue;
 
 import java.net.http.HttpResponse;
 import java.nio.file.Files;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.Map;
@@ -39,9 +40,12 @@ public class BoardBridgeTest extends MqttBridgeSupport {
         setPasswords();
         Login installer = login("installer", INSTALLER_PASSWORD);
         try (Mosquitto broker = Mosquitto.startDefault()) {
+            Path keys = flatKeyDir("flat1", "flat1-key-0123456789abcdef"); // the flat signs, the board checks
             configure("org.tinysep.mqtt", Map.of("brokerUrl", broker.url(), "flatId", "flat1",
-                    "queueDir", Files.createTempDirectory("tinysep-board-outbox").toString()));
-            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "care-board"));
+                    "queueDir", Files.createTempDirectory("tinysep-board-outbox").toString(), "allowAnonymous", "true",
+                    "keyFile", keys.resolve("flat1.key").toString()));
+            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "care-board",
+                    "allowAnonymous", "true", "flatKeyDir", keys.toString()));
             await(WAIT, () -> board(installer).contains("Flat flat1: online since"), "flat1 online on the board");
 
             AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);

@@ -43,9 +43,12 @@ public class BoardBrowserTest extends MqttBridgeSupport {
     public void theCaregiverAcknowledgesOnTheBoardAndTheFlatTakesIt() throws Exception {
         setPasswords();
         try (Mosquitto broker = Mosquitto.startDefault(); Chromium browser = Chromium.start(WAIT)) {
+            Path keys = MqttBridgeSupport.flatKeyDir("flat-7", "flat-7-key-0123456789abcdef");
             configure("org.tinysep.mqtt", Map.of("brokerUrl", broker.url(), "flatId", "flat-7",
-                    "queueDir", Files.createTempDirectory("tinysep-board-browser").toString()));
-            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "browser-board"));
+                    "queueDir", Files.createTempDirectory("tinysep-board-browser").toString(), "allowAnonymous", "true",
+                    "keyFile", keys.resolve("flat-7.key").toString()));
+            configure("org.tinysep.mqtt.board", Map.of("brokerUrl", broker.url(), "clientId", "browser-board",
+                    "allowAnonymous", "true", "flatKeyDir", keys.toString()));
             AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);
             try {
                 browser.navigate(base() + "/login.html");

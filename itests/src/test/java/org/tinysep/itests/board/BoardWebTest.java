@@ -52,7 +52,8 @@ public class BoardWebTest extends WebTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         Map<String, Map<String, String>> configs = super.initialConfigurations();
-        configs.put("org.tinysep.mqtt.board", Map.of("brokerUrl", "tcp://127.0.0.1:" + brokerPort(), "clientId", "itest-board"));
+        configs.put("org.tinysep.mqtt.board", Map.of("brokerUrl", "tcp://127.0.0.1:" + brokerPort(), "clientId", "itest-board",
+                "allowAnonymous", "true", "flatKeyDir", KEYS.toString()));
         return configs;
     }
 
@@ -78,9 +79,9 @@ public class BoardWebTest extends WebTestSupport {
             RawMqtt flat = connect(port);
             flat.subscribe("tinysep/17/command/alert/+/ack");
             flat.publish("tinysep/17/status", "online", true);
-            flat.publish("tinysep/17/platform", "{\"flat\":\"17\",\"version\":\"0.1.0\",\"heartbeatAt\":\"" + Instant.now()
-                    + "\",\"heartbeatSeconds\":60}", true);
-            flat.publish("tinysep/17/alert/5", alert("OPEN", 1), true);
+            flat.publish("tinysep/17/platform", signed("tinysep/17/platform", "{\"flat\":\"17\",\"version\":\"0.1.0\",\"heartbeatAt\":\"" + Instant.now()
+                    + "\",\"heartbeatSeconds\":60}"), true);
+            flat.publish("tinysep/17/alert/5", signed("tinysep/17/alert/5", alert("OPEN", 1)), true);
             await(Duration.ofSeconds(60), () -> board(caregiver).contains("\"state\":\"OPEN\""), "flat 17's open alert on the board");
             String json = board(caregiver);
             assertTrue(json, json.contains("\"connected\":true") && json.contains("\"status\":\"ONLINE\"")
@@ -91,8 +92,10 @@ public class BoardWebTest extends WebTestSupport {
                     call("POST", ack, "{\"by\":\"Eva\"}", caregiver, false).statusCode());
             HttpResponse<String> done = call("POST", ack, "{\"by\":\"Eva\"}", caregiver, true);
             assertEquals("the caregiver may acknowledge on the board: " + done.body(), 200, done.statusCode());
-            assertEquals("tinysep/17/command/alert/5/ack {\"by\":\"Eva\"}", flat.next());
-            flat.publish("tinysep/17/alert/5", alert("ACKNOWLEDGED", 2), true);
+            String sent = flat.next();
+            assertTrue(sent, sent.startsWith("tinysep/17/command/alert/5/ack {\"by\":\"Eva\",\"at\":\"")
+                    && sent.matches(".*,\"sig\":\"[0-9a-f]{64}\"\\}"));
+            flat.publish("tinysep/17/alert/5", signed("tinysep/17/alert/5", alert("ACKNOWLEDGED", 2)), true);
             await(Duration.ofSeconds(60), () -> board(caregiver).contains("the flat confirmed it at"), "the flat's confirmation");
             assertEquals(409, call("POST", ack, null, installer, true).statusCode());
             flat.close();
@@ -117,6 +120,32 @@ public class BoardWebTest extends WebTestSupport {
                 }
                 Thread.sleep(100);
             }
+        }
+    }
+
+    static final String KEY = "flat-17-key-0123456789abcdef";
+    /** The board's flatKeyDir with 17.key: one fixed place (the driver and the probe each load this class). */
+    static final Path KEYS = Path.of(System.getProperty("java.io.tmpdir"), "tinysep-boardweb-keys");
+
+    static {
+        try {
+            Files.createDirectories(KEYS);
+            Files.writeString(KEYS.resolve("17.key"), KEY + "\n");
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    /** @return {@code json} signed as flat 17's bridge signs (docs/mqtt.md, "Signed messages") */
+    private static String signed(String topic, String json) {
+        try {
+            javax.crypto.Mac mac = javax.crypto.Mac.getInstance("HmacSHA256");
+            mac.init(new javax.crypto.spec.SecretKeySpec(KEY.getBytes(java.nio.charset.StandardCharsets.UTF_8), "HmacSHA256"));
+            String sig = java.util.HexFormat.of().formatHex(mac.doFinal((topic + "\n" + json)
+                    .getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+            return json.substring(0, json.length() - 1) + ",\"sig\":\"" + sig + "\"}";
+        } catch (java.security.GeneralSecurityException e) {
+            throw new IllegalStateException(e);
         }
     }
 

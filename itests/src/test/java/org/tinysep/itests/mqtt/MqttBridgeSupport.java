@@ -1,5 +1,10 @@
 package org.tinysep.itests.mqtt;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.Map;
 import org.ops4j.pax.exam.Option;
@@ -23,6 +28,21 @@ public abstract class MqttBridgeSupport extends WebTestSupport {
         o.add(reactorBundle("org.tinysep.testsupport.mqtt", 5));
         o.add(reactorBundle("org.tinysep.mqtt.board", 5));
         return o;
+    }
+
+    /**
+     * @return a new folder holding {@code <flat>.key} (owner-only) with {@code key}: the board's flatKeyDir, and
+     *         {@code dir/<flat>.key} the flat's bridge's keyFile (issue 25 item 2)
+     */
+    public static Path flatKeyDir(String flat, String key) {
+        try {
+            Path dir = Files.createTempDirectory("tinysep-flat-keys");
+            Path f = Files.writeString(dir.resolve(flat + ".key"), key + "\n");
+            Files.setPosixFilePermissions(f, PosixFilePermissions.fromString("rw-------"));
+            return dir;
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
     }
 
     @Override

@@ -25,12 +25,16 @@ import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
+import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.itests.AmicaNode;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.MqttTestClient;
+import org.tinysep.testsupport.mqtt.Signed;
 
 /**
  * The MQTT bridge (issue 15) against a real Mosquitto broker (Debian's binary on a free port of 127.0.0.1): real
@@ -44,6 +48,8 @@ public class MqttBridgeTest extends MqttBridgeSupport {
     static final String FLAT = "flat1";
     static final String BASE = "tinysep/" + FLAT + "/";
     static final Duration WAIT = Duration.ofSeconds(30);
+    /** The flat's key (keyFile): the care centre signs its commands with it (issue 25 item 2). */
+    static final String KEY = "flat1-key-0123456789abcdef";
     private static final Pattern SEQ = Pattern.compile("\"seq\":(\\d+)");
 
     private Map<String, String> bridge(Mosquitto broker) throws Exception {
@@ -51,6 +57,11 @@ public class MqttBridgeTest extends MqttBridgeSupport {
         c.put("brokerUrl", broker.url());
         c.put("flatId", FLAT);
         c.put("queueDir", Files.createTempDirectory("tinysep-mqtt-outbox").toString());
+        c.put("allowAnonymous", "true"); // the test broker lets anyone in (issue 25 item 2: only with the override)
+        Path key = Files.createTempDirectory("tinysep-mqtt-key").resolve("mqtt.key");
+        Files.writeString(key, KEY + "\n", StandardCharsets.UTF_8);
+        Files.setPosixFilePermissions(key, PosixFilePermissions.fromString("rw-------"));
+        c.put("keyFile", key.toString());
         return c;
     }
 
@@ -81,13 +92,39 @@ public class MqttBridgeTest extends MqttBridgeSupport {
     }
 
     @Test
+    public void withoutALoginTheBridgeDoesNotConnectUnlessAnonymousIsAllowed() throws Exception {
+        try (Mosquitto broker = Mosquitto.startDefault();
+                MqttTestClient sub = MqttTestClient.connect(broker.url(), "observer").subscribe(BASE + "status")) {
+            Map<String, String> c = bridge(broker);
+            c.remove("allowAnonymous");
+            configure(PID, c);
+            Device d = bridgeDevice();
+            await(TIMEOUT, () -> d.status().detail().contains("no broker login is configured"), "refused: " + d.status());
+            assertEquals(DeviceStatus.State.ERROR, d.status().state());
+            EventLog log = awaitService(EventLog.class, null, TIMEOUT);
+            await(TIMEOUT, () -> log.recent(200).stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().startsWith("Monitoring reduced: the MQTT bridge of flat " + FLAT)), "the PROBLEM");
+            Thread.sleep(1500); // a connection attempt would have reached the broker by now
+            assertTrue(sub.received(BASE + "status").toString(), sub.received(BASE + "status").isEmpty());
+            assertTrue(broker.log(), !broker.log().contains(" as " + FLAT + " "));
+
+            configure(PID, bridge(broker)); // with the override: it connects, and says loudly what that means
+            sub.await(BASE + "status", "online", WAIT);
+            await(TIMEOUT, () -> log.recent(200).stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
+                    && e.message().contains("WITHOUT a login (allowAnonymous=true): anyone")), "the warning");
+        }
+    }
+
+    @Test
     public void stateDiscoveryAndCommandsRoundTrip() throws Exception {
         try (Mosquitto broker = Mosquitto.startDefault();
                 MqttTestClient sub = MqttTestClient.connect(broker.url(), "observer").subscribe(BASE + "#",
                         "homeassistant/#");
                 AmicaNode motion = new AmicaNode(1, 10, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.MOVEMENT);
                 AmicaNode light = new AmicaNode(1, 20, udpPortOf("BusRadioAmicaUdp"), AmicaNodeType.SIMPLE_LIGHT)) {
-            configure(PID, bridge(broker));
+            Map<String, String> config = bridge(broker);
+            config.put("commands.actuators", "signed");
+            configure(PID, config);
             sub.await(BASE + "status", "online", WAIT);
 
             // a sensor: its state and its Home Assistant entity
@@ -123,7 +160,14 @@ public class MqttBridgeTest extends MqttBridgeSupport {
             String lightUid = uidOf(l);
             sub.await("homeassistant/light/tinysep_flat1_" + lightUid + "/config",
                     "\"command_topic\":\"" + BASE + "command/device/" + lightUid + "\"", WAIT);
-            sub.publish(BASE + "command/device/" + lightUid, "{\"parameter\":\"on\",\"value\":true}", false);
+            String lightTopic = BASE + "command/device/" + lightUid;
+            // anyone on the broker (issue 25 item 2): an unsigned command is refused, the light is not switched
+            sub.publish(lightTopic, "{\"parameter\":\"on\",\"value\":true}", false);
+            sub.await(BASE + "command/result", "unsigned command refused", WAIT);
+            AssertionError nothing = org.junit.Assert.assertThrows(AssertionError.class, light::receivePayload);
+            assertTrue(nothing.getMessage(), nothing.getMessage().contains("received no frame"));
+            // signed with the flat's key, fresh and with a new nonce: carried out
+            sub.publish(lightTopic, Signed.command(KEY, lightTopic, "\"parameter\":\"on\",\"value\":true"), false);
             assertEquals(new LightControl(100), AmicaPayloads.decode(light.receivePayload()));
             sub.await(BASE + "command/result", "\"accepted\":true", WAIT);
             light.send(new LightControl(100));
@@ -131,21 +175,23 @@ public class MqttBridgeTest extends MqttBridgeSupport {
                     && r.payload().contains("\"value\":true"));
 
             // bad commands: refused in words and counted, the bridge goes on
-            sub.publish(BASE + "command/device/" + lightUid, "{\"parameter\":\"on\",\"value\":\"maybe\"}", false);
+            sub.publish(lightTopic, Signed.command(KEY, lightTopic, "\"parameter\":\"on\",\"value\":\"maybe\""), false);
             sub.await(BASE + "command/result", "cannot set on on " + lightUid, WAIT);
-            sub.publish(BASE + "command/device/" + lightUid, "not json", false);
-            sub.await(BASE + "command/result", "not a JSON object", WAIT);
-            sub.publish(BASE + "command/device/" + motionUid, "ON", false);
+            sub.publish(lightTopic, "not json", false);
+            sub.await(BASE + "command/result", "unsigned command refused", WAIT);
+            String motionTopic = BASE + "command/device/" + motionUid;
+            sub.publish(motionTopic, Signed.command(KEY, motionTopic, "\"parameter\":\"on\",\"value\":true"), false);
             sub.await(BASE + "command/result", "only lights, heaters and speakers take commands", WAIT);
-            sub.publish(BASE + "command/device/" + lightUid, "{\"parameter\":\"room\",\"value\":\"Attic\"}", false);
+            sub.publish(lightTopic, Signed.command(KEY, lightTopic, "\"parameter\":\"room\",\"value\":\"Attic\""), false);
             sub.await(BASE + "command/result", "only 'on' can be set over MQTT", WAIT);
             Device d = bridgeDevice();
-            await(TIMEOUT, () -> "4".equals(parameter(d, "rejectedCommands")), "4 rejected commands, was "
+            await(TIMEOUT, () -> "5".equals(parameter(d, "rejectedCommands")), "5 rejected commands, was "
                     + parameter(d, "rejectedCommands"));
             assertEquals("1", parameter(d, "acceptedCommands"));
+            assertEquals("2", parameter(d, "refusedCommandsUnauthorised"));
 
-            // and a plain ON/OFF (Home Assistant's payload) still works afterwards
-            sub.publish(BASE + "command/device/" + lightUid, "OFF", false);
+            // and a signed OFF still works afterwards
+            sub.publish(lightTopic, Signed.command(KEY, lightTopic, "\"parameter\":\"on\",\"value\":false"), false);
             assertEquals(new LightControl(0), AmicaPayloads.decode(light.receivePayload()));
         }
     }
@@ -169,13 +215,19 @@ public class MqttBridgeTest extends MqttBridgeSupport {
             await(TIMEOUT, () -> "1".equals(parameter(d, "waitingAlerts")), "the alert waiting on disk, was "
                     + parameter(d, "waitingAlerts"));
             broker.start();
-            try (MqttTestClient sub = MqttTestClient.connect(broker.url(), "board").subscribe(BASE + "alert/+")) {
+            try (MqttTestClient sub = MqttTestClient.connect(broker.url(), "board").subscribe(BASE + "alert/+", BASE + "command/result")) {
                 String topic = BASE + "alert/" + second.id();
                 MqttTestClient.Received open = sub.await(topic, "\"state\":\"OPEN\"", WAIT);
                 assertTrue("seq " + seqOf(open) + " after " + before, seqOf(open) > before);
                 await(TIMEOUT, () -> "0".equals(parameter(d, "waitingAlerts")), "the outbox empty");
-                // acknowledged from the board: a later message on the same topic is the barrier for duplicates
-                sub.publish(BASE + "command/alert/" + second.id() + "/ack", "{\"by\":\"Anna (care centre)\"}", false);
+                assertTrue(open.payload(), open.payload().matches(".*,\"sig\":\"[0-9a-f]{64}\"\\}"));
+                // anyone on the broker (issue 25 item 2): an unsigned acknowledgement is refused, the alert stays open
+                String ack = BASE + "command/alert/" + second.id() + "/ack";
+                sub.publish(ack, "{\"by\":\"Mallory\"}", false);
+                sub.await(BASE + "command/result", "unsigned command refused", WAIT);
+                assertEquals(AlertState.OPEN, alerts.alert(second.id()).orElseThrow().state());
+                // acknowledged from the board, signed: a later message on the same topic is the barrier for duplicates
+                sub.publish(ack, Signed.command(KEY, ack, "\"by\":\"Anna (care centre)\""), false);
                 MqttTestClient.Received acked = sub.await(topic, "\"state\":\"ACKNOWLEDGED\"", WAIT);
                 assertTrue(acked.payload(), acked.payload().contains("\"acknowledgedBy\":\"Anna (care centre)\""));
                 assertTrue(seqOf(acked) > seqOf(open));

@@ -31,7 +31,7 @@ class MqttLastWillIT {
                 MqttTestClient board = MqttTestClient.connect(broker.url(), "board").subscribe("tinysep/+/status",
                         "tinysep/+/platform")) {
             Files.writeString(home.resolve("etc/org.tinysep.mqtt.cfg"), "brokerUrl=" + broker.url()
-                    + "\nflatId=flat-kill\n");
+                    + "\nflatId=flat-kill\nallowAnonymous=true\n"); // the test broker lets anyone in
             try (PlatformProcess p = PlatformProcess.start(home)) {
                 board.await("tinysep/flat-kill/status", "online", WAIT);
                 board.await("tinysep/flat-kill/platform", "\"flat\":\"flat-kill\"", WAIT);

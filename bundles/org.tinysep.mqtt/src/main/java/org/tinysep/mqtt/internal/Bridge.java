@@ -40,9 +40,18 @@ final class Bridge {
     private Session session;
     private Link link;
     private long lastSummary = Long.MIN_VALUE;
+    private final FlatKey key;
+    private final Consumer<String> problem;
 
+    /**
+     * @param key     the flat's key (or why there is none), read at activation
+     * @param problem records a PROBLEM in the event log
+     */
     Bridge(BundleContext context, Settings settings, Supplier<Instant> clock,
-            BiConsumer<DeviceStatus.State, String> status, Consumer<Figures> figures) {
+            BiConsumer<DeviceStatus.State, String> status, Consumer<Figures> figures, FlatKey key,
+            Consumer<String> problem) {
+        this.key = key;
+        this.problem = problem;
         this.context = context;
         this.settings = settings;
         this.topics = new Topics(settings.topicPrefix(), settings.flatId(), settings.discoveryPrefix());
@@ -77,7 +86,8 @@ final class Bridge {
         flat = new FlatState(context, topics, clock, settings.heartbeatSeconds());
         feed = new AlertFeed(context, executor, this::alertChanged, this::alertServiceAdded);
         session = new Session(settings, executor, clock, status, figures, outbox,
-                new Commands(topics, scan, feed::service), scan);
+                new Commands(topics, scan, feed::service),
+                new CommandGuard(topics, settings, key.key(), key.missing(), java.time.Clock.systemUTC(), problem), scan);
         outbox.state(Message.state(topics.status(), "online"));
         if (topics.discovery()) {
             Discovery d = new Discovery(topics);
@@ -88,6 +98,7 @@ final class Bridge {
         }
         try {
             link = new Link(settings, topics, executor, session);
+            link.signWith(key.key());
         } catch (MqttException | RuntimeException e) {
             String why = "the MQTT client cannot be created for " + settings.brokerUrl() + ": " + Words.describe(e);
             LOG.warn("MQTT bridge not started: {}", why);

@@ -1,6 +1,9 @@
 package org.tinysep.mqtt.internal;
 
 import java.util.List;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.device.support.DriverContext;
@@ -13,6 +16,8 @@ import org.tinysep.device.support.WholeFlatDevice;
  * replace the running {@link Bridge}.
  */
 final class BridgeDevice extends WholeFlatDevice {
+
+    private static final Logger LOG = LoggerFactory.getLogger(BridgeDevice.class);
 
     private volatile Settings settings;
     private volatile Figures figures = Figures.IDLE;
@@ -44,10 +49,23 @@ final class BridgeDevice extends WholeFlatDevice {
             String open = Secrets.openToOthers(settings.passwordFile());
             if (open != null) {
                 event("warning: " + open);
+                problem("warning: " + open);
             }
         }
-        bridge = new Bridge(context.bundleContext(), settings, context::now, this::status, f -> figures = f);
+        if (!BridgeChecks.loginAllowed(settings, this::problem, LOG)) {
+            status(DeviceStatus.State.ERROR, "not connected: no broker login is configured (username and passwordFile, "
+                    + "or keyStore) and allowAnonymous is not true");
+            return;
+        }
+        FlatKey key = FlatKey.read(settings.keyFile());
+        BridgeChecks.key(settings, key, this::problem, LOG);
+        bridge = new Bridge(context.bundleContext(), settings, context::now, this::status, f -> figures = f, key,
+                this::problem);
         bridge.start();
+    }
+
+    private void problem(String message) {
+        context.event(EventKind.PROBLEM, message);
     }
 
     private synchronized void stopBridge() {
@@ -73,6 +91,9 @@ final class BridgeDevice extends WholeFlatDevice {
                 Parameter.readOnly("acceptedCommands", f.acceptedCommands(), "commands carried out"),
                 Parameter.readOnly("rejectedCommands", f.rejectedCommands(),
                         "commands refused; each refusal is explained on command/result"),
+                Parameter.readOnly("refusedCommandsUnauthorised", f.refusedUnauthorised(),
+                        "commands refused because unsigned, badly signed, stale, replayed or switched off "
+                        + "(commands.ack, commands.actuators); also counted in rejectedCommands"),
                 Parameter.readOnly("droppedResults", f.droppedResults(),
                         "command results dropped because more than 1000 waited for the broker"));
     }

@@ -41,6 +41,7 @@ final class Link {
     private final Events events;
     private final MqttAsyncClient client;
     private volatile int generation;
+    private volatile byte[] key;
 
     Link(Settings settings, Topics topics, Executor executor, Events events) throws MqttException {
         this.settings = settings;
@@ -130,10 +131,22 @@ final class Link {
         return o;
     }
 
-    /** Publishes with QoS 1; the outcome comes as {@link Events#published}. */
+    /** From now on every JSON payload is published signed with the flat's {@code key} ({@link Signatures}). */
+    void signWith(byte[] flatKey) {
+        this.key = flatKey == null ? null : flatKey.clone();
+    }
+
+    /** Publishes with QoS 1 (a JSON payload signed, when there is a key); the outcome comes as {@link Events#published}. */
     void publish(Message m) {
         int gen = generation;
-        MqttMessage msg = new MqttMessage(m.payload(), Message.QOS, m.retained(), null);
+        byte[] payload = m.payload();
+        byte[] k = key;
+        String base = topics.status().substring(0, topics.status().length() - "status".length()); // P/F/
+        if (k != null && m.topic().startsWith(base) && payload.length > 1 && payload[0] == '{'
+                && payload[payload.length - 1] == '}') { // the flat's own JSON topics; discovery configs stay as they are
+            payload = Signatures.sign(k, m.topic(), m.text()).getBytes(StandardCharsets.UTF_8);
+        }
+        MqttMessage msg = new MqttMessage(payload, Message.QOS, m.retained(), null);
         try {
             client.publish(m.topic(), msg, null, new MqttActionListener() {
                 @Override

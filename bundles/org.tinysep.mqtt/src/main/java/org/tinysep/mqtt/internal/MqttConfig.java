@@ -14,7 +14,8 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     @AttributeDefinition(description = "the flat's id: MQTT client id and second topic level (letters, digits, - _ .)")
     String flatId() default "flat";
 
-    @AttributeDefinition(description = "MQTT user name; empty = anonymous")
+    @AttributeDefinition(description = "MQTT user name; empty (and no keyStore) = anonymous, refused unless "
+            + "allowAnonymous")
     String username() default "";
 
     @AttributeDefinition(description = "file whose first line is the MQTT password (owner-only); default "
@@ -52,4 +53,24 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     @AttributeDefinition(description = "seconds between two reads of the devices' state")
     int pollSeconds() default 1;
+
+    @AttributeDefinition(description = "true = connect even without a login (no username, no keyStore); anyone "
+            + "on such a broker can read and publish this flat's topics. Default false: the bridge does not connect")
+    boolean allowAnonymous() default false;
+
+    @AttributeDefinition(description = "file whose first line is this flat's key (at least 32 characters, "
+            + "owner-only): signs the flat's messages and checks signed commands; default ${tinysep.var}/secrets/mqtt.key")
+    String keyFile() default "";
+
+    @AttributeDefinition(name = "commands.ack", description = "acknowledgements over MQTT: off, signed (default) or "
+            + "unsigned")
+    String commands_ack() default "signed";
+
+    @AttributeDefinition(name = "commands.actuators", description = "switching lights, heaters, speakers over MQTT:"
+            + " off (default), signed or unsigned (Home Assistant's plain ON/OFF)")
+    String commands_actuators() default "off";
+
+    @AttributeDefinition(name = "commands.maxAgeSeconds", description = "a signed command older (or further in the "
+            + "future) than this, by this computer's clock, is refused")
+    int commands_maxAgeSeconds() default 300;
 }

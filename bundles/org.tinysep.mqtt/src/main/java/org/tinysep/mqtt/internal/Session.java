@@ -27,6 +27,7 @@ final class Session implements Link.Events {
     private final Consumer<Figures> figures;
     private final Outbox outbox;
     private final Commands commands;
+    private final CommandGuard guard;
     private final DeviceScan scan;
     private Link link;
     private int connectedGeneration = -1;
@@ -38,7 +39,7 @@ final class Session implements Link.Events {
 
     Session(Settings settings, ScheduledExecutorService executor, Supplier<Instant> clock,
             BiConsumer<DeviceStatus.State, String> status, Consumer<Figures> figures, Outbox outbox,
-            Commands commands, DeviceScan scan) {
+            Commands commands, CommandGuard guard, DeviceScan scan) {
         this.settings = settings;
         this.executor = executor;
         this.clock = clock;
@@ -46,6 +47,7 @@ final class Session implements Link.Events {
         this.figures = figures;
         this.outbox = outbox;
         this.commands = commands;
+        this.guard = guard;
         this.scan = scan;
     }
 
@@ -131,7 +133,9 @@ final class Session implements Link.Events {
 
     @Override
     public void command(String topic, byte[] payload) {
-        Commands.Result r = commands.handle(topic, payload);
+        CommandGuard.Verdict v = guard.check(topic, payload);
+        Commands.Result r = v.refusal() != null ? new Commands.Result(false, v.refusal())
+                : commands.handle(topic, v.command());
         if (r.accepted()) {
             accepted++;
             LOG.info("MQTT command on {} carried out: {}", topic, r.reason());
@@ -152,6 +156,6 @@ final class Session implements Link.Events {
 
     void showFigures() {
         figures.accept(new Figures(linkWords, outbox.waitingAlerts(), outbox.waitingState(), outbox.delivered(),
-                accepted, rejected, outbox.droppedTransient(), scan.devices()));
+                accepted, rejected, guard.refused(), outbox.droppedTransient(), scan.devices()));
     }
 }

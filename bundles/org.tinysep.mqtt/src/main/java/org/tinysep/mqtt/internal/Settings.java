@@ -12,7 +12,9 @@ import java.util.regex.Pattern;
  */
 record Settings(String brokerUrl, String flatId, String username, Path passwordFile, Path trustStore,
         String trustStorePassword, Path keyStore, Path keyStorePasswordFile, String topicPrefix,
-        String discoveryPrefix, int heartbeatSeconds, int sessionExpirySeconds, Path queueDir, int pollSeconds) {
+        String discoveryPrefix, int heartbeatSeconds, int sessionExpirySeconds, Path queueDir, int pollSeconds,
+        boolean allowAnonymous, Path keyFile, CommandPolicy ackCommands, CommandPolicy actuatorCommands,
+        int commandMaxAgeSeconds) {
 
     private static final Pattern FLAT = Pattern.compile("[A-Za-z0-9_.-]{1,64}");
     private static final Pattern PREFIX = Pattern.compile("[A-Za-z0-9_.-]+(/[A-Za-z0-9_.-]+)*");
@@ -23,6 +25,14 @@ record Settings(String brokerUrl, String flatId, String username, Path passwordF
 
     boolean tls() {
         return brokerUrl.startsWith("ssl://");
+    }
+
+    /**
+     * @return true when the bridge would log in to the broker without credentials: no user name (with its
+     *         {@code passwordFile}) and no client certificate ({@code keyStore}); such a broker lets anyone in
+     */
+    boolean anonymous() {
+        return username.isEmpty() && keyStore == null;
     }
 
     /** @return the settings for one line of the log and the device's parameters: no secrets */
@@ -68,12 +78,24 @@ record Settings(String brokerUrl, String flatId, String username, Path passwordF
                 path(p, "trustStore", null), text(p, "trustStorePassword", "changeit"),
                 path(p, "keyStore", null), path(p, "keyStorePasswordFile", null), prefix, discovery,
                 number(p, "heartbeatSeconds", 60, 1, 86_400), number(p, "sessionExpirySeconds", 3600, 0, 30 * 86_400),
-                path(p, "queueDir", mqttVar), number(p, "pollSeconds", 1, 1, 3600));
+                path(p, "queueDir", mqttVar), number(p, "pollSeconds", 1, 1, 3600),
+                bool(p, "allowAnonymous"), path(p, "keyFile", var.resolve("secrets").resolve("mqtt.key")),
+                CommandPolicy.parse("commands.ack", text(p, "commands.ack", "signed")),
+                CommandPolicy.parse("commands.actuators", text(p, "commands.actuators", "off")),
+                number(p, "commands.maxAgeSeconds", 300, 10, 86_400));
     }
 
     private static String text(Map<String, ?> p, String key, String dflt) {
         Object v = p.get(key);
         return v == null ? dflt : v.toString().strip();
+    }
+
+    private static boolean bool(Map<String, ?> p, String key) {
+        String v = text(p, key, "false");
+        if (!v.equalsIgnoreCase("true") && !v.equalsIgnoreCase("false")) {
+            throw new IllegalArgumentException(key + " must be true or false, was '" + v + "'");
+        }
+        return Boolean.parseBoolean(v);
     }
 
     private static Path path(Map<String, ?> p, String key, Path dflt) {

@@ -40,6 +40,19 @@ class SettingsTest {
         assertTrue(refused(Map.of("topicPrefix", "x/#")).contains("topicPrefix"));
         assertTrue(refused(Map.of("heartbeatSeconds", "0")).contains("heartbeatSeconds must be 1..86400"));
         assertTrue(refused(Map.of("pollSeconds", "soon")).contains("whole number"));
+        assertTrue(refused(Map.of("commands.ack", "anyone")).contains("commands.ack must be off, signed or unsigned"));
+        assertTrue(refused(Map.of("allowAnonymous", "yes")).contains("allowAnonymous must be true or false"));
+    }
+
+    @Test
+    void safeDefaultsForWhoMayAct() {
+        Settings s = Settings.parse(Map.of("brokerUrl", "tcp://b:1883"), VAR);
+        assertTrue(s.anonymous());
+        assertFalse(s.allowAnonymous());
+        assertEquals(CommandPolicy.SIGNED, s.ackCommands());
+        assertEquals(CommandPolicy.OFF, s.actuatorCommands());
+        assertEquals(VAR.resolve("secrets/mqtt.key"), s.keyFile());
+        assertEquals(300, s.commandMaxAgeSeconds());
     }
 
     @Test

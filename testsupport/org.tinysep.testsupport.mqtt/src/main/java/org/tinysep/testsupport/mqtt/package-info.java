@@ -4,7 +4,7 @@
  * the embedded Paho client stays private.
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package org.tinysep.testsupport.mqtt;
 
 import org.osgi.annotation.bundle.Export;

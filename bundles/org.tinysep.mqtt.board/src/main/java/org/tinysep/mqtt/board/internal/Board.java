@@ -22,14 +22,33 @@ final class Board {
     private final AtomicLong bad = new AtomicLong();
     private final AtomicLong duplicates = new AtomicLong();
     private final AtomicLong refusedFlats = new AtomicLong();
+    private final AtomicLong unknownFlats = new AtomicLong();
+    private final AtomicLong unsigned = new AtomicLong();
+    private final FlatKeys keys;
 
+    /** A board of the state machine alone: every flat, no signature checked (the tests of the rules). */
     Board(String prefix, int maxFlats) {
-        this.prefix = prefix;
-        this.maxFlats = maxFlats;
+        this(prefix, maxFlats, null);
     }
 
-    /** Counters over all flats, for the page and the load test. */
-    record Totals(long messages, long bad, long duplicates, long refusedFlats, int flats) { }
+    /**
+     * @param keys the flats followed and their keys: messages of other flats are ignored, and each message of a
+     *             flat must be signed with its key (docs/central-board.md, "Security"); null = no check
+     */
+    Board(String prefix, int maxFlats, FlatKeys keys) {
+        this.prefix = prefix;
+        this.maxFlats = maxFlats;
+        this.keys = keys;
+    }
+
+    /**
+     * Counters over all flats, for the page and the load test.
+     *
+     * @param unknownFlats messages of flats the board has no key for, ignored
+     * @param unsigned     messages of known flats not signed (or badly) with their key, or empty alerts: ignored
+     */
+    record Totals(long messages, long bad, long duplicates, long refusedFlats, int flats, long unknownFlats,
+            long unsigned) { }
 
     /**
      * Applies one message.
@@ -44,17 +63,48 @@ final class Board {
             return false;
         }
         Topic t = parsed.get();
+        byte[] key = keys == null ? null : keys.of(t.flat());
+        if (keys != null && key == null) {
+            unknownFlats.incrementAndGet(); // a flat this board has no key for: never shown (no fake flats)
+            return false;
+        }
         Flat flat = flat(t.flat(), at);
         if (flat == null) {
             return false;
         }
         try {
-            return apply(flat, t, Payloads.text(payload), at);
+            String text = Payloads.text(payload);
+            if (key != null && t.kind() != Topic.Kind.STATUS) {
+                text = signed(flat, t.flat(), topic, text, key, at);
+                if (text == null) {
+                    return false;
+                }
+            }
+            return apply(flat, t, text, at);
         } catch (IllegalArgumentException e) {
             bad.incrementAndGet();
             flat.bad(topic, e.getMessage(), at);
             return false;
         }
+    }
+
+    /**
+     * @return the message without its signature, null when it is ignored: empty (a retained alert or health being
+     *         emptied cannot be signed; the flat's signed CLEARED ends an alert) or not signed with the flat's key
+     */
+    private String signed(Flat flat, String flatId, String topic, String text, byte[] key, Instant at) {
+        if (text.isEmpty()) {
+            unsigned.incrementAndGet();
+            return null;
+        }
+        Signatures.Checked c = Signatures.check(key, topic, text);
+        if (!c.valid()) {
+            unsigned.incrementAndGet();
+            flat.bad(topic, (c.signed() ? "wrong signature" : "not signed") + ": not sent with flat "
+                    + flatId + "'s key, ignored (a fake or a bridge with another key)", at);
+            return null;
+        }
+        return c.unsigned();
     }
 
     private boolean apply(Flat flat, Topic t, String text, Instant at) {
@@ -112,7 +162,8 @@ final class Board {
     }
 
     Totals totals() {
-        return new Totals(messages.get(), bad.get(), duplicates.get(), refusedFlats.get(), flats.size());
+        return new Totals(messages.get(), bad.get(), duplicates.get(), refusedFlats.get(), flats.size(),
+                unknownFlats.get(), unsigned.get());
     }
 
     String prefix() {

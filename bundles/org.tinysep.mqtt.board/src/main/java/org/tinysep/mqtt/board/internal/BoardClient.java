@@ -8,9 +8,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.GeneralSecurityException;
 import java.security.KeyStore;
+import java.security.SecureRandom;
 import java.time.Clock;
 import java.time.Instant;
 import java.util.Arrays;
+import java.util.HexFormat;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -38,6 +40,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
 
     static final int RETRY_SECONDS = 5;
     private static final Logger LOG = LoggerFactory.getLogger(BoardClient.class);
+    private static final SecureRandom RANDOM = new SecureRandom();
 
     /** Where to connect; the passwords live only here and in ConfigAdmin. */
     record Settings(String url, String clientId, String username, char[] password, String trustStore,
@@ -153,10 +156,17 @@ final class BoardClient implements MqttCallback, AutoCloseable {
     public void authPacketArrived(int reasonCode, MqttProperties properties) {
     }
 
-    /** Publishes {@code {"by":…}} to the alert's ack topic (QoS 1) and waits for the broker to take it. */
-    void acknowledge(String flat, String alertId, String by) throws MqttException {
-        String body = new JsonWriter().open('{').field("by", by).close('}').toString();
-        client.publish(Topic.ack(settings.prefix(), flat, alertId), body.getBytes(StandardCharsets.UTF_8), 1, false)
+    /**
+     * Publishes {@code {"by":…,"at":…,"nonce":…,"sig":…}} to the alert's ack topic (QoS 1), signed with the flat's
+     * key (the flat carries out only signed acknowledgements, fresh and not replayed), and waits for the broker.
+     */
+    void acknowledge(String flat, String alertId, String by, byte[] key) throws MqttException {
+        byte[] n = new byte[12];
+        RANDOM.nextBytes(n);
+        String topic = Topic.ack(settings.prefix(), flat, alertId);
+        String body = new JsonWriter().open('{').field("by", by).field("at", Instant.now(Clock.systemUTC()).toString())
+                .field("nonce", HexFormat.of().formatHex(n)).close('}').toString();
+        client.publish(topic, Signatures.sign(key, topic, body).getBytes(StandardCharsets.UTF_8), 1, false)
                 .waitForCompletion(10_000);
     }
 

@@ -14,12 +14,30 @@ public @interface BoardConfig {
     @AttributeDefinition(description = "MQTT client id of the board (each board on a broker needs its own)")
     String clientId() default "tinysep-board";
 
-    @AttributeDefinition(description = "Broker user name; empty = none")
+    @AttributeDefinition(description = "Broker user name; empty = anonymous, refused unless allowAnonymous")
     String username() default "";
 
-    @AttributeDefinition(description = "Broker password (kept by ConfigAdmin only; never shown, logged or written by the board)",
+    @AttributeDefinition(description = "File whose first line is the broker password (owner-only, chmod 600), read "
+            + "when the board starts; empty = ${tinysep.var}/secrets/mqtt-board.password")
+    String passwordFile() default "";
+
+    @AttributeDefinition(description = "Deprecated: the broker password inline (kept in ConfigAdmin's files); still "
+            + "used with a warning, put it into passwordFile instead",
             type = org.osgi.service.metatype.annotations.AttributeType.PASSWORD)
     String password() default "";
+
+    @AttributeDefinition(description = "true = connect without a login; anyone on such a broker can fake flats and "
+            + "alerts and acknowledge alerts. Default false: without a login the board does not connect")
+    boolean allowAnonymous() default false;
+
+    @AttributeDefinition(description = "Folder of the flats' keys, one file <flatId>.key per flat (its first line is "
+            + "the key of that flat's bridge, keyFile); the board follows only these flats and only their signed "
+            + "messages; empty = ${tinysep.var}/secrets/flats")
+    String flatKeyDir() default "";
+
+    @AttributeDefinition(description = "Flat ids the board follows, comma separated; empty or * = every flat with a "
+            + "key file in flatKeyDir")
+    String flats() default "*";
 
     @AttributeDefinition(description = "Trust store (PKCS12 or JKS file) for ssl:// brokers; empty = the JVM's")
     String trustStore() default "";

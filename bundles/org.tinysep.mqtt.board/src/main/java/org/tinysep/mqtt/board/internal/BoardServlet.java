@@ -4,9 +4,11 @@ import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
 import jakarta.servlet.http.HttpServletResponse;
+import java.io.File;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.time.Clock;
 import java.util.Map;
 import java.util.regex.Matcher;
@@ -14,10 +16,16 @@ import java.util.regex.Pattern;
 import org.eclipse.paho.mqttv5.common.MqttException;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
 import org.tinysep.json.JsonWriter;
 
 /**
@@ -43,11 +51,35 @@ public final class BoardServlet extends HttpServlet {
 
     private transient Central central;
 
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policyOption = ReferencePolicyOption.GREEDY)
+    private transient EventLog events;
+
     @Activate
-    void activate(BoardConfig config) throws MqttException {
-        central = new Central(config, Clock.systemUTC(), null);
+    void activate(BundleContext context, BoardConfig config) throws MqttException {
+        central = new Central(config, Clock.systemUTC(), null, var(context), this::problem);
         LOG.info("Central board at /board/: {}", config.brokerUrl().isBlank() ? "idle, no broker configured"
                 : "following " + config.topicPrefix() + "/+/… on " + BoardClient.shown(config.brokerUrl()));
+    }
+
+    /** @return {@code tinysep.var}, else {@code tinysep.home/var}, else the bundle's data area */
+    private static Path var(BundleContext context) {
+        String var = context.getProperty("tinysep.var");
+        String home = context.getProperty("tinysep.home");
+        if (var != null && !var.isBlank()) {
+            return Path.of(var.strip());
+        }
+        if (home != null && !home.isBlank()) {
+            return Path.of(home.strip(), "var");
+        }
+        File data = context.getDataFile("var");
+        return data == null ? Path.of("var").toAbsolutePath() : data.toPath();
+    }
+
+    private void problem(String message) {
+        EventLog log = events;
+        if (log != null) {
+            log.record(EventKind.PROBLEM, "CentralBoard", message);
+        }
     }
 
     @Deactivate

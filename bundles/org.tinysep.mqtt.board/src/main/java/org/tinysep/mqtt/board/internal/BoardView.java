@@ -37,7 +37,8 @@ final class BoardView {
         JsonWriter j = new JsonWriter().open('{').field("connected", connected).field("link", link)
                 .field("at", now.toString());
         j.key("totals").open('{').field("flats", t.flats()).field("messages", t.messages()).field("badPayloads", t.bad())
-                .field("duplicates", t.duplicates()).field("refusedFlats", t.refusedFlats()).close('}');
+                .field("duplicates", t.duplicates()).field("refusedFlats", t.refusedFlats())
+                .field("unknownFlats", t.unknownFlats()).field("unsigned", t.unsigned()).close('}');
         j.key("flats").open('[');
         for (Row r : rows) {
             flat(j, r.s(), r.v(), rules, now);

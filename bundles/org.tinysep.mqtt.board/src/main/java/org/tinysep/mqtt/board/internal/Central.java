@@ -1,7 +1,9 @@
 package org.tinysep.mqtt.board.internal;
 
+import java.nio.file.Path;
 import java.time.Clock;
 import java.time.ZoneId;
+import java.util.function.Consumer;
 import org.eclipse.paho.mqttv5.common.MqttException;
 import org.tinysep.mqtt.board.internal.Liveness.Rules;
 
@@ -18,25 +20,38 @@ final class Central implements AutoCloseable {
     private final Clock clock;
     private final String defaultBy;
 
-    Central(BoardConfig c, Clock clock, Intake.Applied applied) throws MqttException {
+    private final String refusal;
+    private final FlatKeys keys;
+
+    /**
+     * @param var     the state folder ({@code tinysep.var}): default places of the password file and the flats' keys
+     * @param problem records a PROBLEM in the event log (plain words)
+     */
+    Central(BoardConfig c, Clock clock, Intake.Applied applied, Path var, Consumer<String> problem)
+            throws MqttException {
         this.clock = clock;
-        this.board = new Board(c.topicPrefix(), Math.max(1, c.maxFlats()));
+        BoardLogin login = c.brokerUrl().isBlank() ? null : BoardLogin.of(c, var, problem);
+        refusal = login == null ? null : login.refusal();
+        this.keys = login == null || refusal != null ? null : FlatKeys.read(c.flatKeyDir().isBlank()
+                ? var.resolve("secrets").resolve("flats") : Path.of(c.flatKeyDir().strip()), c.flats(), problem);
+        this.board = new Board(c.topicPrefix(), Math.max(1, c.maxFlats()), keys);
         this.intake = new Intake(board, clock, applied);
         this.rules = new Rules(Math.max(1, c.missedHeartbeats()), Math.max(1, c.summaryHours()), c.lowBatteryPercent(),
                 c.timeZone().isBlank() ? ZoneId.systemDefault() : ZoneId.of(c.timeZone()));
         this.defaultBy = c.acknowledgedBy().isBlank() ? "care centre" : c.acknowledgedBy();
-        if (c.brokerUrl().isBlank()) {
+        if (login == null || refusal != null) {
             client = null;
         } else {
-            client = new BoardClient(new BoardClient.Settings(c.brokerUrl(), c.clientId(), c.username(),
-                    c.password().toCharArray(), c.trustStore(), c.trustStorePassword().toCharArray(), c.topicPrefix()),
+            client = new BoardClient(new BoardClient.Settings(c.brokerUrl(), c.clientId(), login.username(),
+                    login.password(), c.trustStore(), c.trustStorePassword().toCharArray(), c.topicPrefix()),
                     intake, clock.withZone(rules.zone())); // its zone: the times of its link words
             client.start();
         }
     }
 
     String json() {
-        String link = client == null ? "idle: no broker configured (set brokerUrl in pid org.tinysep.mqtt.board)" : client.link();
+        String link = refusal != null ? refusal : client == null
+                ? "idle: no broker configured (set brokerUrl in pid org.tinysep.mqtt.board)" : client.link();
         return BoardView.json(board, rules, clock.instant(), link, client != null && client.connected());
     }
 
@@ -58,7 +73,12 @@ final class Central implements AutoCloseable {
         if (client == null || !client.connected()) {
             throw new IllegalStateException("the board is not connected to the broker: the acknowledgement cannot travel to flat " + flatId);
         }
-        client.acknowledge(flatId, alertId, who);
+        byte[] key = keys == null ? null : keys.of(flatId);
+        if (key == null) {
+            throw new IllegalStateException("the board has no key for flat " + flatId + ": the flat would refuse an "
+                    + "unsigned acknowledgement");
+        }
+        client.acknowledge(flatId, alertId, who, key);
         flat.ackSent(alertId, who, clock.instant());
         return "acknowledgement of alert " + alertId + " sent to flat " + flatId + " by " + who
                 + "; the board shows it as acknowledged once the flat confirms";

@@ -20,6 +20,8 @@ final class Flat {
 
     static final int MAX_ALERTS = 64;
     static final int MAX_DEVICES = 256;
+    /** The most a flat's alert {@code seq} may jump above the highest it sent so far (else: refused as implausible). */
+    static final long MAX_SEQ_JUMP = 100_000;
 
     /** An alert as the board shows it: the flat's newest message and what the board did about it. */
     record Entry(AlertMessage alert, Instant received, String ackSentBy, Instant ackSentAt, Instant confirmedAt) { }
@@ -49,6 +51,7 @@ final class Flat {
     };
     private final Map<String, Health> devices = new LinkedHashMap<>();
     private long bad;
+    private long highestSeq = -1;
     private String lastBad = "";
     private long duplicates;
     private long dropped;
@@ -83,8 +86,15 @@ final class Flat {
         heard(at, "occupancy " + o.state() + (o.explanation().isEmpty() ? "" : " (" + Payloads.cut(o.explanation(), 120) + ")"));
     }
 
-    /** @return false when the message is a duplicate or older than what the board has (by {@code seq}) */
+    /**
+     * @return false when the message is a duplicate or older than what the board has (by {@code seq})
+     * @throws IllegalArgumentException its {@code seq} jumps more than {@link #MAX_SEQ_JUMP} above the flat's highest
+     */
     synchronized boolean alert(AlertMessage a, Instant at) {
+        if (highestSeq >= 0 && a.seq() > highestSeq + MAX_SEQ_JUMP) {
+            throw new IllegalArgumentException("alert seq " + a.seq() + " jumps more than " + MAX_SEQ_JUMP
+                    + " above this flat's highest " + highestSeq + ": ignored");
+        }
         Entry old = alerts.get(a.id());
         Long gone = forgotten.get(a.id());
         if ((old != null && old.alert().seq() >= a.seq()) || (old == null && gone != null && gone >= a.seq())) {
@@ -95,6 +105,7 @@ final class Flat {
         if (a.state().equals("ACKNOWLEDGED") && (old == null || !old.alert().state().equals("ACKNOWLEDGED"))) {
             confirmed = at;
         }
+        highestSeq = Math.max(highestSeq, a.seq());
         alerts.remove(a.id());
         alerts.put(a.id(), new Entry(a, at, old == null ? null : old.ackSentBy(), old == null ? null : old.ackSentAt(), confirmed));
         while (alerts.size() > MAX_ALERTS) {
