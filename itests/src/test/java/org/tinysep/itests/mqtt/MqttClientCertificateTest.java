@@ -71,6 +71,14 @@ public class MqttClientCertificateTest extends MqttBridgeSupport {
             c.remove("keyStore");
             c.remove("keyStorePasswordFile");
             configure(PID, c);
+            // no login of its own: the bridge does not even try (issue 25, item 2) ...
+            await(WAIT, () -> d.status().state() == DeviceStatus.State.ERROR
+                    && d.status().detail().contains("no broker login is configured"),
+                    "no login refused by the bridge itself: " + d.status());
+            plainWords(d.status().detail());
+            // ... and told it may (allowAnonymous), it is refused by the broker, in words
+            c.put("allowAnonymous", "true");
+            configure(PID, c);
             await(WAIT, () -> d.status().state() == DeviceStatus.State.ERROR
                     && d.status().detail().contains("the broker requires a client certificate"),
                     "no certificate refused in words: " + d.status());
