@@ -16,6 +16,9 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class BuildInputsStayInRepoTest {
 
+    /** The planted references climb to a handover folder of this name; the real check climbs to its own. */
+    private static final String HANDOUT = "handout";
+
     @TempDir
     Path tmp;
 
@@ -32,21 +35,22 @@ class BuildInputsStayInRepoTest {
         write("pom.xml", "<project><artifactId>tinysep-parent</artifactId></project>");
         write("simulator/pom.xml", "<relativePath>../pom.xml</relativePath>\n<directory>../../outside</directory>");
         write("simulator/src/test/java/X.java", String.join("\n",
-                "Path a = Path.of(\"../../shared/data/ordonez\");",
+                "Path a = Path.of(\"../../handout/data/ordonez\");",
                 "Path b = Path.of(\"..\", \"..\", \"other\");",
                 "Path c = Path.of(\"..\", \"itests\");",
-                "Path d = Path.of(\"/work/shared/data\");",
-                "Path e = repo.resolve(\"../shared/data\");",
-                "Path f = Path.of(\"..\", \"shared\");"));
+                "Path d = Path.of(\"/work/handout/data\");",
+                "Path e = repo.resolve(\"../handout/data\");",
+                "Path f = Path.of(\"..\", \"handout\");"));
         write("simulator/src/test/resources/a.txt", "ok ../x\nfar ../../../x");
         write("scripts/x.sh", "cat ../simulator/pom.xml\ncat ../../elsewhere/file");
-        write("evaluate.sh", "DATA=../shared/data/ordonez");
-        write("README.md", "see ../shared/reference/tinysep-thesis.txt");
-        write("simulator/target/classes/Y.java", "Path.of(\"../../shared\")");
-        write("data/x/notes.txt", "copied from /work/shared/data/x");
+        write("evaluate.sh", "DATA=../handout/data/ordonez");
+        write("README.md", "see ../handout/reference/tinysep-thesis.txt");
+        write("simulator/target/classes/Y.java", "Path.of(\"../../handout\")");
+        write("data/x/notes.txt", "copied from /work/handout/data/x");
         write("var/house.xml", "<file>/work/main/var/house.xml</file>");
 
-        List<String> found = OutsideReferences.scan(tmp).stream().map(l -> l.substring(0, l.indexOf(" — "))).toList();
+        List<String> found = OutsideReferences.scan(tmp, HANDOUT).stream()
+                .map(l -> l.substring(0, l.indexOf(" — "))).toList();
 
         assertEquals(List.of(
                 "evaluate.sh:1: climbs to a shared folder beside the clone",

@@ -16,7 +16,8 @@ import java.util.stream.Stream;
 /**
  * Finds build and test inputs that reach outside the repository (issue 32): in every source, pom, bnd file, script,
  * configuration and test resource, (1) an absolute path into this machine's {@code /work}, (2) a path that climbs
- * to a sibling {@code shared} folder ({@code ../shared}, {@code "..", "shared"}), (3) a relative path whose
+ * to the sibling folder material is handed over in ({@link #HANDOVER_FOLDER}; written with slashes or as listed path
+ * parts), (3) a relative path whose
  * {@code ..} steps, taken from the folder the file is read in (a module's folder: Maven's working directory and the
  * base of its pom; a script's own folder: the scripts {@code cd} there), climb above the repository root.
  */
@@ -40,7 +41,8 @@ final class OutsideReferences {
     private static final Set<String> SKIPPED_DIRS = Set.of("target", "node_modules", "felix-cache");
 
     private static final Pattern MACHINE = Pattern.compile("(?<![\\w.])/work/");
-    private static final Pattern SHARED = Pattern.compile("\\.\\.(?:[\\s/\\\\\",]|\"\\)\\.resolve\\(\")*shared\\b");
+    /** The folder beside a clone where material is handed to the project: no build input may climb to it. */
+    static final String HANDOVER_FOLDER = "shared";
     private static final Pattern UPS_SLASHED = Pattern.compile("(?<![\\w./-])((?:\\.\\./)+|\\.\\.(?=\"))");
     private static final Pattern UPS_LISTED = Pattern.compile("\"\\.\\.\"(?:\\s*,\\s*\"\\.\\.\")*");
 
@@ -49,10 +51,17 @@ final class OutsideReferences {
 
     /** @return one line per reference found: {@code path:line: what — the line} */
     static List<String> scan(Path root) {
+        return scan(root, HANDOVER_FOLDER);
+    }
+
+    /** {@link #scan(Path)} with another name for the handover folder (the tests plant references to their own). */
+    static List<String> scan(Path root, String handoverFolder) {
+        Pattern sibling = Pattern.compile("\\.\\.(?:[\\s/\\\\\",]|\"\\)\\.resolve\\(\")*"
+                + Pattern.quote(handoverFolder) + "\\b");
         List<String> found = new ArrayList<>();
         try (Stream<Path> files = Files.walk(root)) {
             files.filter(Files::isRegularFile).filter(f -> scanned(root, f)).sorted()
-                    .forEach(f -> scanFile(root, f, found));
+                    .forEach(f -> scanFile(root, f, sibling, found));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot walk " + root, e);
         }
@@ -76,7 +85,7 @@ final class OutsideReferences {
         return INPUTS.contains(ext) || INPUTS_UNDER_SRC.contains(ext) && slashed.contains("src/");
     }
 
-    private static void scanFile(Path root, Path file, List<String> found) {
+    private static void scanFile(Path root, Path file, Pattern sibling, List<String> found) {
         List<String> lines;
         try {
             lines = List.of(new String(Files.readAllBytes(file), StandardCharsets.UTF_8).split("\n", -1));
@@ -86,19 +95,22 @@ final class OutsideReferences {
         int depth = root.relativize(base(root, file)).toString().isEmpty() ? 0
                 : root.relativize(base(root, file)).getNameCount();
         for (int i = 0; i < lines.size(); i++) {
-            String why = check(lines.get(i), depth);
+            String why = check(lines.get(i), depth, sibling);
             if (why != null) {
                 found.add(root.relativize(file) + ":" + (i + 1) + ": " + why + " — " + lines.get(i).strip());
             }
         }
     }
 
-    /** @return why the line reaches outside, or null; {@code depth}: folders between the root and the base */
-    static String check(String line, int depth) {
+    /**
+     * @return why the line reaches outside, or null; {@code depth}: folders between the root and the base,
+     *         {@code sibling}: a climb to the handover folder
+     */
+    static String check(String line, int depth, Pattern sibling) {
         if (MACHINE.matcher(line).find()) {
             return "absolute path into this machine's /work";
         }
-        if (SHARED.matcher(line).find()) {
+        if (sibling.matcher(line).find()) {
             return "climbs to a shared folder beside the clone";
         }
         int ups = Math.max(most(UPS_SLASHED.matcher(line), true), most(UPS_LISTED.matcher(line), false));

@@ -26,10 +26,10 @@ class RepoFilesTest {
     @Test
     void refusesAPathBesideTheClone() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> RepoFiles.resolve("..", "shared", "data", "ordonez"));
+                () -> RepoFiles.resolve("..", "beside", "data", "ordonez"));
         assertTrue(e.getMessage().contains("outside the repository"), e.getMessage());
-        assertThrows(IllegalArgumentException.class, () -> RepoFiles.resolve("data/../../shared/data/ordonez"));
-        assertThrows(IllegalArgumentException.class, () -> RepoFiles.require("simulator", "..", "..", "shared"));
+        assertThrows(IllegalArgumentException.class, () -> RepoFiles.resolve("data/../../beside/data/ordonez"));
+        assertThrows(IllegalArgumentException.class, () -> RepoFiles.require("simulator", "..", "..", "beside"));
     }
 
     @Test
@@ -45,7 +45,7 @@ class RepoFilesTest {
         Files.writeString(repo.resolveSibling("pom.xml"), "<project><artifactId>tinysep-parent</artifactId></project>");
         Files.writeString(repo.resolve("pom.xml"), "<project><parent><artifactId>tinysep-parent</artifactId>"
                 + "</parent></project>");
-        Path outside = Files.createDirectories(tmp.resolve("shared/data"));
+        Path outside = Files.createDirectories(tmp.resolve("beside/data"));
         Files.writeString(outside.resolve("x.txt"), "beside the clone");
         Files.createSymbolicLink(repo.resolveSibling("data"), outside);
 
