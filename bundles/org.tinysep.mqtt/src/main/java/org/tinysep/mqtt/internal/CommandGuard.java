@@ -10,6 +10,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
+import org.tinysep.json.JsonSignature;
 
 /**
  * Who may act through MQTT (docs/mqtt.md, "Commands: who may act"). MQTT carries no sender, so a command proves its
@@ -65,7 +66,7 @@ final class CommandGuard {
             return refuse(topic, what + " over MQTT are switched off in flat " + flat + " (" + key + "=off)");
         }
         String text = new String(payload, StandardCharsets.UTF_8);
-        Signatures.Checked c = Signatures.check(this.key, topic, text);
+        JsonSignature.Checked c = JsonSignature.check(this.key, topic, text);
         if (!c.signed()) {
             return policy == CommandPolicy.UNSIGNED ? new Verdict(null, payload)
                     : refuse(topic, "unsigned command refused: " + what + " must be signed with the flat's key ("

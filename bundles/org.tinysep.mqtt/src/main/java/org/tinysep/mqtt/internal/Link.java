@@ -14,6 +14,7 @@ import org.eclipse.paho.mqttv5.common.MqttException;
 import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.eclipse.paho.mqttv5.common.MqttSubscription;
 import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
+import org.tinysep.json.JsonSignature;
 
 /**
  * The connection to the broker (Eclipse Paho MQTT v5, asynchronous: nothing here blocks). Persistent session
@@ -144,7 +145,7 @@ final class Link {
         String base = topics.status().substring(0, topics.status().length() - "status".length()); // P/F/
         if (k != null && m.topic().startsWith(base) && payload.length > 1 && payload[0] == '{'
                 && payload[payload.length - 1] == '}') { // the flat's own JSON topics; discovery configs stay as they are
-            payload = Signatures.sign(k, m.topic(), m.text()).getBytes(StandardCharsets.UTF_8);
+            payload = JsonSignature.sign(k, m.topic(), m.text()).getBytes(StandardCharsets.UTF_8);
         }
         MqttMessage msg = new MqttMessage(payload, Message.QOS, m.retained(), null);
         try {

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.tinysep.json.JsonSignature;
 import org.tinysep.testsupport.mqtt.Signed;
 
 /**
@@ -89,9 +90,9 @@ class CommandGuardTest {
     @Test
     void theBridgeSignsWhatTheBoardChecks() {
         String json = "{\"id\":\"3\",\"state\":\"OPEN\",\"seq\":4}";
-        String signed = Signatures.sign(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/flat-7/alert/3", json);
+        String signed = JsonSignature.sign(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/flat-7/alert/3", json);
         assertEquals(Signed.sign(KEY, "tinysep/flat-7/alert/3", json), signed);
-        assertEquals(json, Signatures.check(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/flat-7/alert/3", signed)
+        assertEquals(json, JsonSignature.check(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/flat-7/alert/3", signed)
                 .unsigned());
     }
 }

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
+import org.tinysep.json.JsonSignature;
 
 /**
  * The board's state machine: takes every message of the subscribed topics and keeps one {@link Flat} per flat.
@@ -97,7 +98,7 @@ final class Board {
             unsigned.incrementAndGet();
             return null;
         }
-        Signatures.Checked c = Signatures.check(key, topic, text);
+        JsonSignature.Checked c = JsonSignature.check(key, topic, text);
         if (!c.valid()) {
             unsigned.incrementAndGet();
             flat.bad(topic, (c.signed() ? "wrong signature" : "not signed") + ": not sent with flat "

@@ -29,6 +29,7 @@ import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.json.JsonSignature;
 import org.tinysep.json.JsonWriter;
 
 /**
@@ -166,7 +167,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
         String topic = Topic.ack(settings.prefix(), flat, alertId);
         String body = new JsonWriter().open('{').field("by", by).field("at", Instant.now(Clock.systemUTC()).toString())
                 .field("nonce", HexFormat.of().formatHex(n)).close('}').toString();
-        client.publish(topic, Signatures.sign(key, topic, body).getBytes(StandardCharsets.UTF_8), 1, false)
+        client.publish(topic, JsonSignature.sign(key, topic, body).getBytes(StandardCharsets.UTF_8), 1, false)
                 .waitForCompletion(10_000);
     }
 

@@ -4,31 +4,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.GeneralSecurityException;
-import java.security.MessageDigest;
-import java.util.HexFormat;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
 
 /**
- * The signature of a JSON message, the same as the bridge's (org.tinysep.mqtt, docs/mqtt.md, "Signed messages"), as the time synchroniser signs its requests:
- * {@code sig} = lower-case hex HMAC-SHA256(key, topic + "\n" + the JSON object without {@code sig}), written as the
- * object's last field. The exact bytes are signed: no canonical form, a receiver strips the trailing
- * {@code ,"sig":"…"} and checks the rest. The topic is signed too, so a message cannot be moved to another topic
- * (an alert's message is no command, flat A's no message of flat B).
+ * The key of the signed JSON messages ({@link org.tinysep.json.JsonSignature}, docs/mqtt.md, "Signed messages"):
+ * read from its file, in plain words when it is missing or too short.
  */
 final class Signatures {
 
     /** The shortest key accepted, in characters. */
     static final int MIN_KEY = 16;
-
-    private static final Pattern SIGNED = Pattern.compile("(?s)(\\{.*?),?\"sig\":\"([0-9a-f]{64})\"\\}");
-
-    /** What a check found: the signed object without {@code sig} when {@link #valid}. */
-    record Checked(boolean signed, boolean valid, String unsigned) {
-    }
 
     private Signatures() {
     }
@@ -47,37 +31,5 @@ final class Signatures {
                     + MIN_KEY + " are needed (e.g. openssl rand -hex 32)");
         }
         return k.getBytes(StandardCharsets.UTF_8);
-    }
-
-    /** @return the JSON object {@code json} with its {@code sig} as last field */
-    static String sign(byte[] key, String topic, String json) {
-        String body = json.strip();
-        body = body.substring(0, body.length() - 1).stripTrailing();
-        return body + (body.endsWith("{") ? "" : ",") + "\"sig\":\"" + mac(key, topic, body + "}") + "\"}";
-    }
-
-    /** @return whether {@code text} carries a {@code sig} and whether it is right for {@code topic} and {@code key} */
-    static Checked check(byte[] key, String topic, String text) {
-        Matcher m = SIGNED.matcher(text.strip());
-        if (!m.matches()) {
-            return new Checked(false, false, text);
-        }
-        String unsigned = m.group(1).stripTrailing() + "}";
-        if (key == null) {
-            return new Checked(true, false, unsigned);
-        }
-        boolean ok = MessageDigest.isEqual(mac(key, topic, unsigned).getBytes(StandardCharsets.US_ASCII),
-                m.group(2).getBytes(StandardCharsets.US_ASCII));
-        return new Checked(true, ok, unsigned);
-    }
-
-    static String mac(byte[] key, String topic, String json) {
-        try {
-            Mac mac = Mac.getInstance("HmacSHA256");
-            mac.init(new SecretKeySpec(key, "HmacSHA256"));
-            return HexFormat.of().formatHex(mac.doFinal((topic + "\n" + json).getBytes(StandardCharsets.UTF_8)));
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
-        }
     }
 }

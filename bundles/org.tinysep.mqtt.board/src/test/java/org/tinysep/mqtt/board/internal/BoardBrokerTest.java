@@ -23,6 +23,7 @@ import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
 import org.eclipse.paho.mqttv5.common.MqttMessage;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.json.JsonSignature;
 import org.tinysep.mqtt.board.loadtest.MessageCallback;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.Signed;
@@ -90,7 +91,7 @@ class BoardBrokerTest {
             String ack = acks.poll(60, TimeUnit.SECONDS);
             assertTrue(ack.startsWith("tinysep/17/command/alert/3/ack {\"by\":\"Eva\",\"at\":\""), ack);
             String payload = ack.substring(ack.indexOf(' ') + 1);
-            assertTrue(Signatures.check(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/17/command/alert/3/ack", payload)
+            assertTrue(JsonSignature.check(KEY.getBytes(StandardCharsets.UTF_8), "tinysep/17/command/alert/3/ack", payload)
                     .valid(), "the acknowledgement signed with flat 17's key: " + payload);
             assertTrue(payload.contains("\"nonce\":\""), payload);
             assertTrue(central.json().contains("acknowledgement sent by Eva at "), central.json());
