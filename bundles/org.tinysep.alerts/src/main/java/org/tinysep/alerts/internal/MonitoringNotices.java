@@ -41,7 +41,11 @@ public final class MonitoringNotices {
     private static final Duration QUIET = Duration.ofMinutes(30);
     private static final Logger LOG = LoggerFactory.getLogger(MonitoringNotices.class);
 
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
     private volatile EventLog eventLog;
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
     private volatile MailManagerProvider mail;
     private NoticeFeed feed;
     private NoticeText text;
@@ -72,30 +76,6 @@ public final class MonitoringNotices {
         this.feed = new NoticeFeed(load(file), QUIET);
         this.executor = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "tinysep-notices"));
         executor.scheduleWithFixedDelay(this::pollSafely, 0, PERIOD_SECONDS, TimeUnit.SECONDS);
-    }
-
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    void bindEventLog(EventLog e) {
-        eventLog = e;
-    }
-
-    void unbindEventLog(EventLog e) {
-        if (eventLog == e) {
-            eventLog = null;
-        }
-    }
-
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    void bindMail(MailManagerProvider m) {
-        mail = m;
-    }
-
-    void unbindMail(MailManagerProvider m) {
-        if (mail == m) {
-            mail = null;
-        }
     }
 
     @Deactivate

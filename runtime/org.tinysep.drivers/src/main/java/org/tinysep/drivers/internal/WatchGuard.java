@@ -49,6 +49,8 @@ public final class WatchGuard implements SynchronousBundleListener, FrameworkLis
         t.setDaemon(true);
         return t;
     });
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
     private volatile MailManagerProvider mail;
 
     @Activate
@@ -64,18 +66,6 @@ public final class WatchGuard implements SynchronousBundleListener, FrameworkLis
         context.addFrameworkListener(this);
         if (context.getBundle(0).getState() == Bundle.ACTIVE) {
             disabledAtStart(); // this bundle restarted on a running platform
-        }
-    }
-
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    void bindMail(MailManagerProvider m) {
-        mail = m;
-    }
-
-    void unbindMail(MailManagerProvider m) {
-        if (mail == m) {
-            mail = null;
         }
     }
 
