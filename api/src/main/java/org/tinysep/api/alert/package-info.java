@@ -2,9 +2,10 @@
  * Alerts a caregiver can trust (issue 12): an alert stays open until someone acknowledges it or its cause ends, is
  * repeated and escalated along a contact list while nobody does, and every step of it is kept. The shell, the web
  * console and an MQTT bridge all use {@link org.tinysep.api.alert.AlertService}.
+ * 1.1: alert kinds HELP and FALL (the person node, issue 26).
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.api.alert;
 
 import org.osgi.annotation.bundle.Export;

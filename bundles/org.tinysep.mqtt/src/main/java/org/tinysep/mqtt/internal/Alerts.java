@@ -34,6 +34,8 @@ final class Alerts {
             case INACTIVITY -> "inactivity (the person may need help)";
             case SENSOR_OFFLINE -> "sensor offline";
             case PLATFORM -> "platform";
+            case HELP -> "help button (the person asked for help)";
+            case FALL -> "fall (the person may have fallen)";
         };
     }
 
