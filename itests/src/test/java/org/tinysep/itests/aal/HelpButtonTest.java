@@ -24,6 +24,7 @@ import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.alert.Notification;
 import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
@@ -51,6 +52,8 @@ public class HelpButtonTest extends AalTestSupport {
     private static final String CARER = "carer@care.test";
     private static final String FIRST = "first@care.test";
     private static final String ANNA = "0014.4F01.0000.A001";
+    /** The Sun SPOT Person device (the node's bus device has the same address and node type). */
+    private static final String PERSON_DEVICE = "(" + DeviceProperties.DRIVER_NAME + "=SunSpotPerson)";
 
     @Override
     protected List<Option> options() {
@@ -124,7 +127,7 @@ public class HelpButtonTest extends AalTestSupport {
             node.send(STILL);
             String filter = "(tinysep.node.address=" + ANNA + ")";
             awaitService(PersonNodeProvider.class, filter, TIMEOUT);
-            Device device = awaitService(Device.class, "(&" + filter + "(tinysep.node.type=person))", TIMEOUT);
+            Device device = awaitService(Device.class, "(&" + filter + PERSON_DEVICE + ")", TIMEOUT);
             device.setParameter("person", "Anna");
 
             // a short press: logged, no call (and proof that the help button listens to the node)
@@ -194,8 +197,8 @@ public class HelpButtonTest extends AalTestSupport {
             awaitService(Device.class, "(&(tinysep.node.address=" + roomNode + ")(tinysep.node.type=movement))",
                     TIMEOUT);
             node.send(new ButtonReport(1, true)); // ... that now sends a (forged) button report
-            Device device = awaitService(Device.class, "(&(tinysep.node.address=" + roomNode
-                    + ")(tinysep.node.type=person))", TIMEOUT);
+            Device device = awaitService(Device.class, "(&(tinysep.node.address=" + roomNode + ")" + PERSON_DEVICE
+                    + ")", TIMEOUT);
             String origin = device.uid();
             node.send(new ButtonReport(1, true));
             await(TIMEOUT, () -> events(origin).stream().anyMatch(s -> s.startsWith("switch 1 pressed on a node that "

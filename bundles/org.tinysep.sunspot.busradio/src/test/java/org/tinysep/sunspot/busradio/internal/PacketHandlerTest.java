@@ -22,7 +22,11 @@ import org.junit.jupiter.api.Test;
 import org.tinysep.api.bus.BusRadioSunSpotProvider;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.PacketEntry;
+import org.tinysep.sunspot.protocol.AccelerationSample;
+import org.tinysep.sunspot.protocol.BurstChunk;
+import org.tinysep.sunspot.protocol.ButtonReport;
 import org.tinysep.sunspot.protocol.LightStatus;
+import org.tinysep.sunspot.protocol.MovementSummaryReport;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.PetMovementDetection;
 import org.tinysep.sunspot.protocol.Position;
@@ -159,6 +163,28 @@ class PacketHandlerTest {
         assertEquals(Set.of("movement"), bus.node(SPOT_A).nodeTypes());
         assertEquals(List.of(), got);
         assertEquals(1, bus.rejects.count(RejectReason.BAD_VALUE));
+    }
+
+    @Test
+    void personNodeFramesAreAcceptedAndImpossibleOnesCountedAsBadValues() {
+        feed(frame(SPOT_B, new ButtonReport(1, true)));
+        SunSpotBusDevice person = bus.node(SPOT_B);
+        assertNotNull(person, "a person node (sensor type 6, protocol 2.2.0) is a Sun SPOT node like the others");
+        assertEquals(Set.of("person"), person.nodeTypes());
+        List<Integer> got = new ArrayList<>();
+        person.connect((src, type, payload, at) -> got.add(type));
+        feed(frame(SPOT_B, new MovementSummaryReport(2000, new AccelerationSample(0, -1000, 0), 5, 1010)));
+        BurstChunk.split(1, 50, 50, java.util.Collections.nCopies(150, new AccelerationSample(0, -1000, 0)))
+                .forEach(c -> feed(frame(SPOT_B, c)));
+        assertEquals(List.of(6, 6, 6, 6, 6, 6), got, "a summary and the five chunks of a burst");
+
+        feed(SunSpotCodec.encode(SunSpotFrame.of(SPOT_B, new byte[] {6, 0x11, 3, 1}))); // switch 3
+        feed(SunSpotCodec.encode(SunSpotFrame.of(SPOT_B, new byte[] {6, 0x31, 1, 0, 1, 50, 0, 0, // x = 16001 mg
+                0x3E, (byte) 0x81, 0, 0, 0, 0})));
+        feed(SunSpotCodec.encode(SunSpotFrame.of(SPOT_B, new byte[] {6, 0x12, 1, 1}))); // unknown version
+        assertEquals(6, got.size(), "refused frames reach no listener");
+        assertEquals(2, bus.rejects.count(RejectReason.BAD_VALUE));
+        assertEquals(1, bus.rejects.count(RejectReason.UNKNOWN_PAYLOAD));
     }
 
     @Test

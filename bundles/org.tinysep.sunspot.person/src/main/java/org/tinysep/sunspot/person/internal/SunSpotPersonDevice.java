@@ -40,6 +40,7 @@ final class SunSpotPersonDevice extends SensorDevice<PersonNodeListener, PersonR
 
     private final BusRadioSunSpotProvider bus;
     private final BurstAssembler bursts = new BurstAssembler();
+    private final Stillness stillness = new Stillness();
     private final AtomicLong burstsReceived = new AtomicLong();
     private final AtomicLong burstsGivenUp = new AtomicLong();
     private final AtomicLong ignored = new AtomicLong();
@@ -82,6 +83,7 @@ final class SunSpotPersonDevice extends SensorDevice<PersonNodeListener, PersonR
         }
         if (report instanceof PersonReport.Summary s) {
             lastSummary = s.summary();
+            stillness.add(s.summary());
         } else if (report instanceof PersonReport.Button b) {
             lastButton = b.event();
         } else if (report instanceof PersonReport.Chunk c) {
@@ -161,14 +163,22 @@ final class SunSpotPersonDevice extends SensorDevice<PersonNodeListener, PersonR
     @Override
     protected Object shownState() {
         MovementSummary s = lastSummary;
-        return s == null ? "" : "peak " + s.peakMg() + " mg, spread " + s.magnitudeSdMg() + " mg";
+        if (s == null) {
+            return "";
+        }
+        Instant still = stillness.since();
+        return (still == null ? "moving" : "still since " + still) + " (last summary: peak " + s.peakMg()
+                + " mg, spread " + s.magnitudeSdMg() + " mg)";
     }
 
     @Override
     protected List<Parameter> readings() {
         ButtonEvent b = lastButton;
-        return List.of(Parameter.readOnly("state", shownState(), "the last movement summary"),
+        return List.of(Parameter.readOnly("state", shownState(), "moving or still since when, and the last summary"),
                 Parameter.readOnly("lastUpdate", lastUpdate(), "when the latest report arrived"),
+                Parameter.readOnly("stillSince", stillness.since(), "since when the node lies still (spread at most "
+                        + Stillness.STILL_SD_MG + " mg, same posture); empty while it moves. A worn node is rarely "
+                        + "still for hours"),
                 Parameter.readOnly("lastButton", b == null ? "" : "switch " + b.button() + " "
                         + b.action().name().toLowerCase(java.util.Locale.ROOT) + " at " + b.at(), "the last switch change"),
                 Parameter.readOnly("burstsReceived", burstsReceived.get(), "acceleration bursts received complete"),

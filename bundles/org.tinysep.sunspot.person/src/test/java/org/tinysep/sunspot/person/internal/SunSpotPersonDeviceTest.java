@@ -158,6 +158,23 @@ class SunSpotPersonDeviceTest {
     }
 
     @Test
+    void theDeviceTellsSinceWhenTheNodeLiesStill() {
+        SunSpotPersonDevice d = device("person");
+        AccelerationSample flat = new AccelerationSample(0, 0, 1000);
+        deliver(d, new MovementSummaryReport(2000, new AccelerationSample(100, -900, 300), 240, 1700), 2_000);
+        assertEquals("", parameter(d, "stillSince"));
+        assertTrue(parameter(d, "state").startsWith("moving"), parameter(d, "state"));
+        deliver(d, new MovementSummaryReport(2000, flat, 8, 1010), 4_000);
+        deliver(d, new MovementSummaryReport(2000, new AccelerationSample(20, -30, 998), 5, 1003), 6_000);
+        assertEquals(T0.plusSeconds(2).toString(), parameter(d, "stillSince"), "still from the start of its period");
+        assertTrue(parameter(d, "state").startsWith("still since " + T0.plusSeconds(2)), parameter(d, "state"));
+        deliver(d, new MovementSummaryReport(2000, new AccelerationSample(0, -1000, 0), 6, 1004), 8_000);
+        assertEquals(T0.plusSeconds(6).toString(), parameter(d, "stillSince"), "turned over: a new still run");
+        deliver(d, new MovementSummaryReport(2000, new AccelerationSample(0, -1000, 0), 31, 1100), 10_000);
+        assertEquals("", parameter(d, "stillSince"));
+    }
+
+    @Test
     void theWearersNameIsCheckedWhenSet() {
         SunSpotPersonDevice d = device("person");
         try {

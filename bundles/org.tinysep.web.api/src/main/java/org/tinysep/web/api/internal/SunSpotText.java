@@ -1,7 +1,10 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.sunspot.protocol.BurstChunk;
+import org.tinysep.sunspot.protocol.ButtonReport;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
+import org.tinysep.sunspot.protocol.MovementSummaryReport;
 import org.tinysep.sunspot.protocol.PetMovementDetection;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -39,6 +42,17 @@ final class SunSpotText {
         }
         if (p instanceof PetMovementDetection pm) {
             return pm.detected() ? "pet movement detected" : "no pet movement";
+        }
+        if (p instanceof ButtonReport b) {
+            return "switch " + b.button() + (b.pressed() ? " pressed" : " released");
+        }
+        if (p instanceof MovementSummaryReport s) {
+            return "movement summary over " + s.spanMillis() + " ms: mean (" + s.mean().xMg() + ", " + s.mean().yMg()
+                    + ", " + s.mean().zMg() + ") mg, spread " + s.magnitudeSdMg() + " mg, peak " + s.peakMg() + " mg";
+        }
+        if (p instanceof BurstChunk c) {
+            return "acceleration burst " + c.burstId() + ", chunk " + (c.chunkIndex() + 1) + " of " + c.chunkCount()
+                    + ": " + c.samples().size() + " samples at " + c.sampleRateHz() + " Hz";
         }
         return String.valueOf(p);
     }
