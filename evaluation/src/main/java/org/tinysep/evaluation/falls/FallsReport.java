@@ -62,8 +62,9 @@ final class FallsReport {
     }
 
     private static void budget(PrintStream out, List<Scored> scored) {
-        out.println("Radio budget (person-node payload bytes; " + RadioBudget.SUMMARY_BYTES + " B a summary, "
-                + RadioBudget.CHUNKS_PER_BURST + " frames a burst):");
+        out.println("Radio budget (frames of " + RadioBudget.FRAME_HEADER_BYTES + " header bytes plus the payload: "
+                + (RadioBudget.FRAME_HEADER_BYTES + RadioBudget.SUMMARY_BYTES) + " B a summary, "
+                + RadioBudget.CHUNKS_PER_BURST + " frames and 1000 B a burst of 150 samples; docs/protocols/sunspot.md):");
         RadioBudget resting = new RadioBudget();
         for (int i = 0; i < 1800; i++) {
             resting.summary(); // an hour of lying still: no sample reaches the trigger, one summary every 2 s

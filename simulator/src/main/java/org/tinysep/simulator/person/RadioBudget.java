@@ -4,14 +4,16 @@ import java.time.Duration;
 import java.util.Locale;
 
 /**
- * What the person node's rule costs on the radio: frames and payload bytes, counted from the rule's output. A
- * summary is one frame of {@value #SUMMARY_BYTES} bytes ({@code 6 0x21 span-ms(u16) meanX meanY meanZ (s16) sd(u16)
- * peak(u16)}); a burst is {@value #CHUNKS_PER_BURST} chunk frames of {@code 6 0x31 id idx count rateHz before(u16)}
- * ({@value #CHUNK_HEADER_BYTES} bytes) plus 6 bytes a sample. Bytes are the person-node payload only (the radio's
- * and the Sun SPOT header's bytes come on top, the same for every frame).
+ * What the person node's rule costs on the radio: frames and bytes, counted from the rule's output as
+ * docs/protocols/sunspot.md ("Radio budget") counts them: every frame is {@value #FRAME_HEADER_BYTES} bytes of
+ * header plus its payload. A summary's payload is {@value #SUMMARY_BYTES} bytes ({@code 6 0x21 span-ms(u16) meanX
+ * meanY meanZ (s16) sd(u16) peak(u16)}); a burst is {@value #CHUNKS_PER_BURST} chunk frames (chunks of at most 32
+ * samples) of {@code 6 0x31 id idx count rateHz before(u16)} ({@value #CHUNK_HEADER_BYTES} bytes) plus 6 bytes a
+ * sample.
  */
 public final class RadioBudget {
 
+    public static final int FRAME_HEADER_BYTES = 12;
     public static final int SUMMARY_BYTES = 14;
     public static final int CHUNK_HEADER_BYTES = 8;
     public static final int CHUNKS_PER_BURST = 5;
@@ -51,7 +53,8 @@ public final class RadioBudget {
     }
 
     public long bytes() {
-        return summaries * SUMMARY_BYTES + bursts * CHUNKS_PER_BURST * CHUNK_HEADER_BYTES
+        return summaries * (FRAME_HEADER_BYTES + SUMMARY_BYTES)
+                + bursts * CHUNKS_PER_BURST * (FRAME_HEADER_BYTES + CHUNK_HEADER_BYTES)
                 + burstSamples * BYTES_PER_SAMPLE;
     }
 
