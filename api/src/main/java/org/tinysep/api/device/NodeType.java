@@ -29,6 +29,11 @@ public final class NodeType {
      * Since 1.1.
      */
     public static final String PRESENCE_PREFIX = "presence-";
+    /**
+     * Person node (issue 26): a node worn by one person at the waist or as a pendant, reporting its switches, its
+     * movement and the raw acceleration around peaks ({@code org.tinysep.api.sensor.person}). Since 1.2.
+     */
+    public static final String PERSON = "person";
 
     private NodeType() {
     }

@@ -8,7 +8,7 @@
  * device manager role of announcing interfaces; events never pass through the device manager.
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package org.tinysep.api.device;
 
 import org.osgi.annotation.bundle.Export;

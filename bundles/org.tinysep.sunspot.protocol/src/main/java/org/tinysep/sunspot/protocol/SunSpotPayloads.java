@@ -4,7 +4,8 @@ import java.util.Objects;
 import org.tinysep.link.frame.PayloadRules;
 
 /**
- * Converts between payload bytes (thesis Table 3.2, plus Movement Detection version 2) and {@link SunSpotPayload}
+ * Converts between payload bytes (thesis Table 3.2, plus Movement Detection version 2 and the person node's reports of
+ * protocol 2.2.0, see {@code PersonPayloads}) and {@link SunSpotPayload}
  * records. A payload is named by its first two bytes: the sensor type and the payload version. Lengths are exact
  * (10 bytes for Movement Detection version 2, 4 for the others), the third byte is 0 where the table shows it, and
  * values must be in range. Multi-byte numbers are signed 16-bit big-endian. Stateless and thread-safe.
@@ -65,12 +66,17 @@ public final class SunSpotPayloads {
         if (type == PET_MOVEMENT) {
             return new PetMovementDetection(RULES.flag("pet movement detection", payload, STATUS_LENGTH));
         }
+        SunSpotPayload person = PersonPayloads.decode(RULES, type, payload);
+        if (person != null) {
+            return person;
+        }
         throw RULES.unknown(payload);
     }
 
     /**
      * @param payload a payload
-     * @return its bytes: 10 for a {@link MovementDetection} with a position, 4 for the others
+     * @return its bytes: 10 for a {@link MovementDetection} with a position, 14 for a {@link MovementSummaryReport},
+     *         8 + 6 per sample for a {@link BurstChunk}, 4 for the others
      */
     public static byte[] encode(SunSpotPayload payload) {
         Objects.requireNonNull(payload, "payload");
@@ -94,7 +100,9 @@ public final class SunSpotPayloads {
         if (payload instanceof LightStatus l) {
             return PayloadRules.status(LIGHT, l.percent());
         }
-        PetMovementDetection p = (PetMovementDetection) payload; // the interface is sealed: nothing else remains
-        return PayloadRules.status(PET_MOVEMENT, p.detected() ? 1 : 0);
+        if (payload instanceof PetMovementDetection p) {
+            return PayloadRules.status(PET_MOVEMENT, p.detected() ? 1 : 0);
+        }
+        return PersonPayloads.encode(payload); // the interface is sealed: only the person node's reports remain
     }
 }

@@ -17,7 +17,9 @@ public enum SunSpotSensorType {
     /** Light sensor node (brightness only, no actuator), code 4. */
     LIGHT(4, "light-sensor"),
     /** Pet collar (pet movement), code 5. */
-    PET_COLLAR(5, "pet-collar");
+    PET_COLLAR(5, "pet-collar"),
+    /** Person node (issue 26): a Sun SPOT worn by a person; buttons, movement summaries, bursts. Code 6. Since 2.2. */
+    PERSON(6, "person");
 
     /** The sensor type byte and the type name; the lookups are the shared {@link TypeCode}'s. */
     private final TypeCode wire;
@@ -44,9 +46,9 @@ public enum SunSpotSensorType {
         return TypeCode.byCode(values(), t -> t.wire, code);
     }
 
-    /** @return true if {@code code} is one of the four sensor types, without allocating */
+    /** @return true if {@code code} is one of the sensor types (2..6), without allocating */
     static boolean isKnown(int code) {
-        return code >= MOVEMENT.code() && code <= PET_COLLAR.code();
+        return code >= MOVEMENT.code() && code <= PERSON.code();
     }
 
     /**

@@ -4,7 +4,7 @@ import org.tinysep.link.frame.FrameStream;
 
 /**
  * Finds Sun SPOT frames in a byte stream, such as the serial link to a basestation that writes framed packets.
- * Once its twelve header bytes are buffered a candidate must have S = L and a known sensor type (2..5, see
+ * Once its twelve header bytes are buffered a candidate must have S = L and a known sensor type (2..6, see
  * {@link SunSpotSensorType}); once complete it must pass the checksum and have a payload whose first byte is the
  * sensor type.
  * <p>

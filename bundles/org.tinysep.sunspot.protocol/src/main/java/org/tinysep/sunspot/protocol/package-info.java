@@ -17,7 +17,7 @@
  * {@link org.tinysep.sunspot.protocol.RejectReason}.
  */
 @Export
-@Version("2.1.0")
+@Version("2.2.0")
 package org.tinysep.sunspot.protocol;
 
 import org.osgi.annotation.bundle.Export;

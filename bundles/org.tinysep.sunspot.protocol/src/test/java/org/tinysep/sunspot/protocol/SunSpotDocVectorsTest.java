@@ -35,7 +35,8 @@ class SunSpotDocVectorsTest extends DocVectorsContract<SunSpotFrame, SunSpotPayl
     void documentHasTheRequiredVectors() throws IOException {
         DocVectors.assertRequired(vectors(), "payload", List.of("MovementDetection[detected=true, position=null]",
                 "TemperatureStatus[celsius=21.5]", "LightStatus[percent=", "PetMovementDetection[",
-                "position=Position["));
+                "position=Position[", "ButtonReport[button=1, pressed=true]", "ButtonReport[button=2, pressed=false]",
+                "MovementSummaryReport[", "BurstChunk[burstId=3, chunkIndex=0, chunkCount=1", "chunkIndex=4, chunkCount=5"));
         DocVectors.assertEveryReasonUsed(vectors(), RejectReason.values(), List.of());
     }
 

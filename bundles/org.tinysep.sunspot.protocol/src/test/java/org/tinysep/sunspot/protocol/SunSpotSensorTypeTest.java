@@ -26,17 +26,20 @@ class SunSpotSensorTypeTest {
         assertEquals(3, SunSpotSensorType.TEMPERATURE.code());
         assertEquals(4, SunSpotSensorType.LIGHT.code());
         assertEquals(5, SunSpotSensorType.PET_COLLAR.code());
+        assertEquals(6, SunSpotSensorType.PERSON.code());
         for (SunSpotPayload p : new SunSpotPayload[] {new MovementDetection(true), new TemperatureStatus(20),
-                new LightStatus(5), new PetMovementDetection(true)}) {
+                new LightStatus(5), new PetMovementDetection(true), new ButtonReport(2, true),
+                new MovementSummaryReport(2000, new AccelerationSample(0, 1000, 0), 0, 1000),
+                new BurstChunk(0, 0, 1, 50, 0, java.util.List.of(new AccelerationSample(1, 2, 3)))}) {
             assertEquals(p.sensorType().code(), SunSpotPayloads.encode(p)[0], p.toString());
         }
     }
 
     @Test
-    void fromCodeKnowsExactlyTwoToFive() {
+    void fromCodeKnowsExactlyTwoToSix() {
         for (int code = -300; code < 300; code++) {
             Optional<SunSpotSensorType> t = SunSpotSensorType.fromCode(code);
-            assertEquals(code >= 2 && code <= 5, t.isPresent(), "code " + code);
+            assertEquals(code >= 2 && code <= 6, t.isPresent(), "code " + code);
             assertEquals(t.isPresent(), SunSpotSensorType.isKnown(code), "code " + code);
             t.ifPresent(type -> assertEquals(type.code(), (int) SunSpotSensorType.fromCode(type.code())
                     .orElseThrow().code()));
