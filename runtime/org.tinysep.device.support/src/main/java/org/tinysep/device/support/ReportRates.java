@@ -9,14 +9,15 @@ import org.tinysep.api.device.NodeType;
  * The report periods the thesis's node types promise (3.9.1 AmICA, 3.9.2 Sun SPOT): a movement or pet collar node
  * reports every 2 s, a reed switch (door, window) and a presence node (issue 11: a mat, flush or appliance sending
  * Reed-Switch Status) every second, lights, heaters, speakers and the Sun SPOT
- * temperature and light sensors every 10 s. Used to tell a silent node (sensor health) and to rate its link.
+ * temperature and light sensors every 10 s, a person node (issue 26) sends its movement summary every 2 s. Used to tell a silent node (sensor health) and to rate its link.
  */
 public final class ReportRates {
 
-    private static final Map<String, Integer> PERIOD_SECONDS = Map.of(
-            NodeType.MOVEMENT, 2, NodeType.PET_COLLAR, 2, NodeType.DOOR, 1, NodeType.WINDOW, 1,
-            NodeType.SIMPLE_LIGHT, 10, NodeType.DIMMABLE_LIGHT, 10, NodeType.HEATER, 10, NodeType.SPEAKER, 10,
-            NodeType.TEMPERATURE, 10, NodeType.LIGHT_SENSOR, 10);
+    private static final Map<String, Integer> PERIOD_SECONDS = Map.ofEntries(
+            Map.entry(NodeType.MOVEMENT, 2), Map.entry(NodeType.PET_COLLAR, 2), Map.entry(NodeType.DOOR, 1),
+            Map.entry(NodeType.WINDOW, 1), Map.entry(NodeType.SIMPLE_LIGHT, 10), Map.entry(NodeType.DIMMABLE_LIGHT, 10),
+            Map.entry(NodeType.HEATER, 10), Map.entry(NodeType.SPEAKER, 10), Map.entry(NodeType.TEMPERATURE, 10),
+            Map.entry(NodeType.LIGHT_SENSOR, 10), Map.entry(NodeType.PERSON, 2));
 
     private ReportRates() {
     }

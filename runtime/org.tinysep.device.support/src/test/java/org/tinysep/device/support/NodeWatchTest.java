@@ -23,6 +23,8 @@ class NodeWatchTest {
         assertEquals(Duration.ofSeconds(10), ReportRates.interval(Set.of(NodeType.TEMPERATURE), Duration.ZERO));
         assertEquals(Duration.ofMinutes(1), ReportRates.interval(Set.of(), Duration.ofMinutes(1)));
         assertEquals(0.5, ReportRates.perSecond(Set.of(NodeType.MOVEMENT)), 1e-9);
+        assertEquals(Duration.ofSeconds(2), ReportRates.interval(Set.of(NodeType.PERSON), Duration.ofMinutes(1)),
+                "a person node sends a movement summary every 2 s (issue 26)");
     }
 
     @Test
