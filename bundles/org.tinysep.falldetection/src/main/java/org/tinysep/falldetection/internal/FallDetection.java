@@ -17,6 +17,7 @@ import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.person.AccelerationBurst;
 import org.tinysep.api.sensor.person.MovementSummary;
@@ -69,8 +70,10 @@ public final class FallDetection {
     }
 
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC)
-    void addNode(PersonNodeProvider node) {
-        connections.put(node, node.connect(new Listener(node, new FallDetector(settings))));
+    void addNode(PersonNodeProvider node, Map<String, Object> properties) {
+        Object address = properties.get(DeviceProperties.NODE_ADDRESS);
+        String label = address == null ? node.deviceUid() : String.valueOf(address);
+        connections.put(node, node.connect(new Listener(node, label, new FallDetector(settings))));
     }
 
     void removeNode(PersonNodeProvider node) {
@@ -90,10 +93,12 @@ public final class FallDetection {
     /** One node's reports into its detector; a fall becomes an alert. */
     final class Listener implements PersonNodeListener {
         private final PersonNodeProvider node;
+        private final String label;
         private final FallDetector detector;
 
-        Listener(PersonNodeProvider node, FallDetector detector) {
+        Listener(PersonNodeProvider node, String label, FallDetector detector) {
             this.node = node;
+            this.label = label;
             this.detector = detector;
         }
 
@@ -107,14 +112,14 @@ public final class FallDetection {
             try {
                 detector.burst(burst).ifPresent(this::raise);
             } catch (IllegalArgumentException e) {
-                log.event(EventKind.PROBLEM, "a burst from node " + node.deviceUid() + " was refused: "
+                log.event(EventKind.PROBLEM, "a burst from node " + label + " was refused: "
                         + e.getMessage());
             }
         }
 
         private void raise(Fall f) {
             String person = person(node);
-            String text = words.text(f, person, node.deviceUid());
+            String text = words.text(f, person, label);
             alerts.raise(new AlertRequest(AlertKind.FALL, SOURCE + ":" + node.deviceUid(), "", "", f.detectedAt(),
                     words.subject(f, person), text));
             log.event(EventKind.DEVICE_EVENT, "FALL alert handed to the alert service: " + text);

@@ -14,14 +14,14 @@ public @interface FallDetectionConfig {
 
     @AttributeDefinition(description = "Change of the body's orientation (mean acceleration before the impact "
             + "against the still period after it) that counts as a new posture, degrees", min = "0", max = "180")
-    double postureChangeDegrees() default 45;
+    double postureChangeDegrees() default 30;
 
     @AttributeDefinition(description = "A movement summary whose magnitude SD is at most this is still, milli-g",
             min = "0")
-    int stillSdMg() default 100;
+    int stillSdMg() default 50;
 
     @AttributeDefinition(description = "Seconds the person must stay still after the impact", min = "1")
-    int stillSeconds() default 4;
+    int stillSeconds() default 6;
 
     @AttributeDefinition(description = "The stillness must begin within this many seconds after the impact",
             min = "1")

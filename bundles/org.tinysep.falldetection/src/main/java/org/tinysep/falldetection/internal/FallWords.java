@@ -21,7 +21,7 @@ final class FallWords {
 
     /**
      * @return e.g. "a fall was detected at 14:03: a hard impact (3.1 g), then lying still for 4 s; the body turned
-     *         by 78° from how it was before the impact (node pendant-anna)."
+     *         by 78° from how it was before the impact (node 0014.4F01.0000.A001)."
      */
     String text(Fall f, String person, String node) {
         return String.format(Locale.ROOT, "a fall %swas detected at %s: a hard impact (%.1f g), then lying still for "

@@ -12,12 +12,14 @@ import java.time.Instant;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.device.Connection;
+import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.sensor.person.Acceleration;
@@ -40,7 +42,7 @@ class FallDetectionTest {
     private final PersonNodeProvider node = new PersonNodeProvider() {
         @Override
         public String deviceUid() {
-            return "pendant-anna";
+            return "5958875f-aa67-30f9-a3dc-bbb7e25beb4e";
         }
 
         @Override
@@ -87,13 +89,13 @@ class FallDetectionTest {
                 });
         DriverContext ctx = new DriverContext(null, FallDetection.PID, "Fall Detection",
                 new Reporter(() -> log, () -> null), new PlatformClock(Instant::now));
-        return new FallDetection(ctx, FallSettings.DEFAULT, ZoneOffset.UTC, alerts);
+        return new FallDetection(ctx, FallDetectorTest.SETTINGS, ZoneOffset.UTC, alerts);
     }
 
     @Test
     void aFallOnTheNodeRaisesAFallAlertThatExplainsItself() {
         FallDetection c = component();
-        c.addNode(node);
+        c.addNode(node, Map.of(DeviceProperties.NODE_ADDRESS, "0014.4F01.0000.A001"));
         for (int t = 2; t <= 10; t += 2) {
             listener.movementSummarised(node, summary(t, UPRIGHT, 250, 1500));
         }
@@ -107,7 +109,7 @@ class FallDetectionTest {
         assertEquals("Fall: Anna fell at 14:00", r.subject());
         assertTrue(r.text().contains("a hard impact (3.1 g), then lying still for 4 s"), r.text());
         assertTrue(r.text().contains("turned by 8") || r.text().contains("turned by 9"), r.text());
-        assertTrue(r.text().contains("pendant-anna") && r.text().contains("Please check on Anna"), r.text());
+        assertTrue(r.text().contains("(node 0014.4F01.0000.A001)") && r.text().contains("Please check on Anna"), r.text());
         assertTrue(events.stream().anyMatch(e -> e.startsWith("DEVICE_EVENT FALL alert handed")), events.toString());
         c.removeNode(node);
         assertTrue(closed, "the node's connection is closed when it goes");
@@ -116,12 +118,12 @@ class FallDetectionTest {
     @Test
     void anImpossibleBurstIsRefusedAndLoggedNotAlerted() {
         FallDetection c = component();
-        c.addNode(node);
+        c.addNode(node, Map.of(DeviceProperties.NODE_ADDRESS, "0014.4F01.0000.A001"));
         List<Acceleration> s = new ArrayList<>(burst(1, UPRIGHT, 3000, LYING).samples());
         s.set(70, new Acceleration(0, 0, -32_000));
         listener.burstReceived(node, new AccelerationBurst(Nodes.T0, 50, 50, s));
         assertEquals(List.of(), raised);
-        assertTrue(events.stream().anyMatch(e -> e.startsWith("PROBLEM a burst from node pendant-anna was refused")),
+        assertTrue(events.stream().anyMatch(e -> e.startsWith("PROBLEM a burst from node 0014.4F01.0000.A001 was refused")),
                 events.toString());
     }
 }
