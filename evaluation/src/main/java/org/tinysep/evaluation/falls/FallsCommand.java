@@ -22,26 +22,42 @@ import org.tinysep.simulator.person.SisfallRecording;
 public final class FallsCommand {
 
     static final String USAGE = """
-            usage: ./evaluate.sh falls [folder] [--loso] [--why]
+            usage: ./evaluate.sh falls [folder] [--loso] [--why] [--in-process] [--parallel P]
               folder   laid out like SisFall: <subject>/<code>_<subject>_<trial>.txt[.gz]
                        (default: $TINYSEP_SISFALL, else data/sisfall in the repository)
               --loso   leave-one-subject-out: each subject judged with settings chosen on the others only
                        (default: Fall Detection's default settings on every recording)
               --why    list every missed fall and every false alert with the setting that decided it
+              --in-process  judge with Fall Detection's detector class in this process (seconds; settings are
+                       always chosen this way) instead of through the real distribution (the default: one platform
+                       process per subject, the recordings played over UDP in lock-step, the alerts read back from
+                       its event log; needs runtime/org.tinysep.launcher/target/tinysep, which ./evaluate.sh builds)
+              --parallel P  platform processes at once (default 2)
             """;
 
     private FallsCommand() {
     }
 
     /** @return the process's exit code */
-    public static int main(String[] args, Path repo, PrintStream out) throws IOException {
+    public static int main(String[] args, Path repo, PrintStream out) throws Exception {
         Path folder = null;
         boolean loso = false;
         boolean why = false;
-        for (String a : args) {
+        boolean inProcess = false;
+        int parallel = 2;
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
             switch (a) {
                 case "--loso" -> loso = true;
                 case "--why" -> why = true;
+                case "--in-process" -> inProcess = true;
+                case "--parallel" -> {
+                    try {
+                        parallel = Integer.parseInt(i + 1 < args.length ? args[++i] : "");
+                    } catch (NumberFormatException e) {
+                        throw new IllegalArgumentException("falls: --parallel needs a whole number\n" + USAGE);
+                    }
+                }
                 case "-h", "--help" -> {
                     out.print(USAGE);
                     return 0;
@@ -69,18 +85,31 @@ public final class FallsCommand {
         }
         List<Scored> scored = new ArrayList<>();
         List<String> settingsLines = new ArrayList<>();
+        Map<String, FallSettings> chosen = new TreeMap<>();
         if (loso) {
             for (Loso.Fold f : Loso.run(bySubject)) {
                 scored.addAll(f.scored());
+                chosen.put(f.subject(), f.chosen());
                 settingsLines.add("| " + f.subject() + " | " + FallsReport.settings(f.chosen()) + " |");
             }
         } else {
             for (List<NodeStream> streams : bySubject.values()) {
                 scored.addAll(streams.parallelStream().map(s -> Scored.run(s, FallSettings.DEFAULT)).toList());
             }
+            bySubject.keySet().forEach(subject -> chosen.put(subject, FallSettings.DEFAULT));
             settingsLines.add("| all | " + FallsReport.settings(FallSettings.DEFAULT) + " (the defaults) |");
         }
-        FallsReport.print(out, folder, loso, scored, settingsLines);
+        String how = "judged in process (Fall Detection's detector class fed by the node's rule)";
+        if (!inProcess) {
+            long wall = System.nanoTime();
+            scored = ThroughPlatform.run(repo.resolve("runtime/org.tinysep.launcher/target/tinysep"),
+                    repo.resolve("evaluation/target/falls-platforms"), bySubject, chosen::get, parallel);
+            how = String.format(java.util.Locale.ROOT, "judged through the real distribution: one platform per "
+                    + "subject (%d at once), the recordings played as the person node's frames over UDP in lock-step "
+                    + "(%d s apart), the FALL alerts read back from the platform's event log; %d s wall time", parallel,
+                    org.tinysep.evaluation.FallPlatforms.gapSeconds(), (System.nanoTime() - wall) / 1_000_000_000L);
+        }
+        FallsReport.print(out, folder, loso, scored, settingsLines, how);
         if (why) {
             Why.print(out, scored);
         }

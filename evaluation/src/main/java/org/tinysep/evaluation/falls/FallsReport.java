@@ -25,11 +25,13 @@ final class FallsReport {
                 + s.within().toSeconds() + " s";
     }
 
-    static void print(PrintStream out, Path folder, boolean loso, List<Scored> scored, List<String> settings) {
+    static void print(PrintStream out, Path folder, boolean loso, List<Scored> scored, List<String> settings,
+            String how) {
         long falls = scored.stream().filter(Scored::fall).count();
         out.println("Fall detection on " + folder + ": " + scored.size() + " recordings (" + falls + " falls, "
                 + (scored.size() - falls) + " ADLs). " + CITATION + ".");
         out.println("Node model: " + FallsCommand.nodeModel() + ".");
+        out.println("How: " + how + ".");
         out.println("Impact instant: the recording's sample of largest magnitude (200 Hz); a fall counts as detected "
                 + "when a FALL alert comes between it and 30 s after it; an ADL recording counts as correct without "
                 + "any FALL alert.");

@@ -22,9 +22,10 @@ import org.tinysep.simulator.person.SisfallRecording;
  * @param impact    the instant of the recording's largest magnitude at 200 Hz (a fall's impact)
  * @param recorded  the recording's length without the padding
  * @param budget    the radio budget of the recorded part (frames sent while the recording lasted)
+ * @param samples   the node's 50 Hz samples, padding included (what the platform runs play over UDP)
  */
 record NodeStream(SisfallRecording recording, List<Event> events, Instant impact, Duration recorded,
-        RadioBudget budget) {
+        RadioBudget budget, List<Acceleration> samples) {
 
     static final int REST_SECONDS = 20;
     static final Instant T0 = Instant.parse("2026-01-05T09:00:00Z");
@@ -67,7 +68,7 @@ record NodeStream(SisfallRecording recording, List<Event> events, Instant impact
         Duration recorded = Duration.ofMillis(1000L * recordedSamples / rate);
         budget.recorded(recorded);
         Instant impact = T0.plusMillis(1000L * r.peakIndex() / SisfallRecording.RATE_HZ);
-        return new NodeStream(r, List.copyOf(events), impact, recorded, budget);
+        return new NodeStream(r, List.copyOf(events), impact, recorded, budget, List.copyOf(samples));
     }
 
     private static Acceleration mean(List<Acceleration> v) {

@@ -34,7 +34,7 @@ class FallsCommandTest {
     void looReportHasEverySubjectEveryCodeTheBudgetAndTheLastLine() throws Exception {
         SyntheticRecordings.write(dir.resolve("set"), "SX01", 1);
         SyntheticRecordings.write(dir.resolve("set"), "SX02", 2);
-        String out = run(dir.resolve("set").toString(), "--loso", "--why");
+        String out = run(dir.resolve("set").toString(), "--loso", "--why", "--in-process");
         List<String> lines = out.lines().toList();
         assertTrue(lines.get(0).contains("10 recordings (4 falls, 6 ADLs)"), lines.get(0));
         assertTrue(out.contains("| SX01 | impact ≥ "), out);

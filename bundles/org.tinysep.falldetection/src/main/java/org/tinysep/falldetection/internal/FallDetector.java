@@ -22,6 +22,8 @@ public final class FallDetector {
     /** Largest magnitude a sample may claim (three axes at ±16 g, more than any accelerometer on a node), mg. */
     static final double IMPOSSIBLE_MG = 16_000 * Math.sqrt(3) + 1;
     private static final Duration KEEP = Duration.ofSeconds(90);
+    /** A summary that ended longer than this before the trigger does not tell the posture before it. */
+    static final Duration POSTURE_BEFORE_AGE = Duration.ofSeconds(4);
 
     private record Candidate(Instant impact, int peakMg, Acceleration before) {
     }
@@ -77,11 +79,14 @@ public final class FallDetector {
         return check();
     }
 
-    /** The mean of the last summary ended at the trigger, else of the burst's samples before the trigger. */
+    /**
+     * The mean of the last summary that ended at the trigger (at most 4 s before it), else of the burst's samples
+     * before the trigger (the node was just switched on, or summaries were lost).
+     */
     private Acceleration postureBefore(AccelerationBurst b) {
         MovementSummary last = null;
         for (MovementSummary m : summaries) {
-            if (!m.end().isAfter(b.trigger())) {
+            if (!m.end().isAfter(b.trigger()) && !m.end().isBefore(b.trigger().minus(POSTURE_BEFORE_AGE))) {
                 last = m;
             }
         }
