@@ -33,6 +33,8 @@ public final class FallsCommand {
                        process per subject, the recordings played over UDP in lock-step, the alerts read back from
                        its event log; needs runtime/org.tinysep.launcher/target/tinysep, which ./evaluate.sh builds)
               --parallel P  platform processes at once (default 2)
+              --dist DIR    the distribution (default runtime/org.tinysep.launcher/target/tinysep)
+              --work DIR    where the platforms' home and state folders go (default evaluation/target/falls-platforms)
             """;
 
     private FallsCommand() {
@@ -45,12 +47,16 @@ public final class FallsCommand {
         boolean why = false;
         boolean inProcess = false;
         int parallel = 2;
+        Path dist = repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
+        Path work = repo.resolve("evaluation/target/falls-platforms");
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
                 case "--loso" -> loso = true;
                 case "--why" -> why = true;
                 case "--in-process" -> inProcess = true;
+                case "--dist" -> dist = Path.of(value(args, ++i, a));
+                case "--work" -> work = Path.of(value(args, ++i, a));
                 case "--parallel" -> {
                     try {
                         parallel = Integer.parseInt(i + 1 < args.length ? args[++i] : "");
@@ -102,8 +108,7 @@ public final class FallsCommand {
         String how = "judged in process (Fall Detection's detector class fed by the node's rule)";
         if (!inProcess) {
             long wall = System.nanoTime();
-            scored = ThroughPlatform.run(repo.resolve("runtime/org.tinysep.launcher/target/tinysep"),
-                    repo.resolve("evaluation/target/falls-platforms"), bySubject, chosen::get, parallel);
+            scored = ThroughPlatform.run(dist, work, bySubject, chosen::get, parallel);
             how = String.format(java.util.Locale.ROOT, "judged through the real distribution: one platform per "
                     + "subject (%d at once), the recordings played as the person node's frames over UDP in lock-step "
                     + "(%d s apart), the FALL alerts read back from the platform's event log; %d s wall time", parallel,
@@ -115,6 +120,13 @@ public final class FallsCommand {
         }
         out.println(Figures.of(scored).lastLine());
         return 0;
+    }
+
+    private static String value(String[] args, int i, String option) {
+        if (i >= args.length) {
+            throw new IllegalArgumentException("falls: " + option + " needs a value\n" + USAGE);
+        }
+        return args[i];
     }
 
     static Map<String, List<NodeStream>> load(Path folder) throws IOException {

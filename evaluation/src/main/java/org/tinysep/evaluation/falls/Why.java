@@ -32,6 +32,10 @@ final class Why {
     }
 
     private static String missReason(NodeStream s, FallSettings d) {
+        if (alerts(s, d)) {
+            return "the detector alerts on it in process with these settings: lost only through the platform "
+                    + "(reports stamped with whole seconds, or a frame that did not arrive)";
+        }
         if (alerts(s, d.withImpactMg(1))) {
             return "no impact reached " + d.impactMg() + " mg (or no burst was sent)";
         }
@@ -45,6 +49,9 @@ final class Why {
     }
 
     private static String alertReason(NodeStream s, FallSettings d) {
+        if (!alerts(s, d)) {
+            return "only through the platform: the detector in process is quiet with these settings";
+        }
         for (int impact : new int[] {2500, 3000, 4000}) {
             if (!alerts(s, d.withImpactMg(impact))) {
                 return "peak below " + impact + " mg";

@@ -22,6 +22,11 @@ public final class FallDetector {
     /** Largest magnitude a sample may claim (three axes at ±16 g, more than any accelerometer on a node), mg. */
     static final double IMPOSSIBLE_MG = 16_000 * Math.sqrt(3) + 1;
     private static final Duration KEEP = Duration.ofSeconds(90);
+    /**
+     * How much earlier than the impact a still summary may seem to begin: the platform stamps a report with the
+     * whole second it arrived in, up to 1 s early. A summary that really held the impact is not still anyway.
+     */
+    static final Duration STAMP_TOLERANCE = Duration.ofSeconds(1);
     /** A summary that ended longer than this before the trigger does not tell the posture before it. */
     static final Duration POSTURE_BEFORE_AGE = Duration.ofSeconds(4);
 
@@ -80,13 +85,15 @@ public final class FallDetector {
     }
 
     /**
-     * The mean of the last summary that ended at the trigger (at most 4 s before it), else of the burst's samples
-     * before the trigger (the node was just switched on, or summaries were lost).
+     * The mean of the last summary that ended before the trigger (at most 4 s before it), else of the burst's samples
+     * before the trigger (the node was just switched on, or summaries were lost). Strictly before: the platform
+     * stamps reports with its whole second, so a summary stamped in the trigger's second may have ended after it
+     * and hold the fall itself.
      */
     private Acceleration postureBefore(AccelerationBurst b) {
         MovementSummary last = null;
         for (MovementSummary m : summaries) {
-            if (!m.end().isAfter(b.trigger()) && !m.end().isBefore(b.trigger().minus(POSTURE_BEFORE_AGE))) {
+            if (m.end().isBefore(b.trigger()) && !m.end().isBefore(b.trigger().minus(POSTURE_BEFORE_AGE))) {
                 last = m;
             }
         }
@@ -120,7 +127,7 @@ public final class FallDetector {
         Instant limit = c.impact().plus(settings.within());
         for (MovementSummary m : summaries) {
             Instant start = m.end().minus(m.span());
-            if (start.isBefore(c.impact())) {
+            if (start.isBefore(c.impact().minus(STAMP_TOLERANCE))) {
                 continue;
             }
             if (m.magnitudeSdMg() > settings.stillSdMg()) {
