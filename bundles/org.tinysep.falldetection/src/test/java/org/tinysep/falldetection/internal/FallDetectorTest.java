@@ -83,6 +83,25 @@ class FallDetectorTest {
         assertTrue(f.isEmpty(), "stillness from 32 s on is more than 20 s after the impact");
     }
 
+    /**
+     * As the platform delivers them: every report stamped with the whole second it arrived in. The summary stamped
+     * 7 s really ended at 7.98 s and holds the fall; the one stamped 9 s really began after the impact.
+     */
+    @Test
+    void wholeSecondStampsNeitherHideThePostureBeforeNorDelayTheStillness() {
+        for (int t = 1; t <= 5; t += 2) {
+            detector.summary(summary(t, UPRIGHT, 250, 1600)).ifPresent(falls::add);
+        }
+        detector.summary(summary(7, new Acceleration(-363, -107, -634), 1052, 6000)).ifPresent(falls::add);
+        detector.burst(burst(7, UPRIGHT, 3000, LYING)).ifPresent(falls::add); // chunk 0 arrived in second 7
+        for (int t = 9; t <= 21; t += 2) {
+            detector.summary(summary(t, LYING, 5, 1010)).ifPresent(falls::add);
+        }
+        assertEquals(1, falls.size(), "a fall: " + falls);
+        assertTrue(falls.get(0).angleDeg() > 80, "the posture before is the upright one: " + falls.get(0));
+        assertEquals(T0.plusSeconds(11), falls.get(0).detectedAt(), "stillness from the summary stamped 9 s on");
+    }
+
     @Test
     void aBurstNoAccelerometerCouldSendIsRefused() {
         List<Acceleration> s = new ArrayList<>(burst(1, UPRIGHT, 3000, LYING).samples());
