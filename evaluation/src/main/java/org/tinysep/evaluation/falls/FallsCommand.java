@@ -116,7 +116,7 @@ public final class FallsCommand {
         }
         FallsReport.print(out, folder, loso, scored, settingsLines, how);
         if (why) {
-            Why.print(out, scored);
+            Why.print(out, scored, chosen::get);
         }
         out.println(Figures.of(scored).lastLine());
         return 0;

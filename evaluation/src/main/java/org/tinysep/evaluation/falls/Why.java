@@ -8,18 +8,20 @@ import org.tinysep.falldetection.internal.FallSettings;
 
 /**
  * {@code --why}: for each missed fall, which single setting, relaxed, would have alerted; for each false alert,
- * when it came and which setting, tightened, would have kept it quiet. Uses the default settings as the reference.
+ * when it came and which setting, tightened, would have kept it quiet. The reference is the settings each
+ * recording was judged with (its fold's under leave-one-subject-out).
  */
 final class Why {
 
     private Why() {
     }
 
-    static void print(PrintStream out, java.util.List<Scored> scored) {
-        FallSettings d = FallSettings.DEFAULT;
-        out.println("Why (relative to the default settings):");
+    static void print(PrintStream out, java.util.List<Scored> scored,
+            java.util.function.Function<String, FallSettings> settings) {
+        out.println("Why (relative to the settings each recording was judged with):");
         for (Scored s : scored) {
             String name = s.stream().recording().name();
+            FallSettings d = settings.apply(s.stream().recording().subject());
             if (s.fall() && s.delay().isEmpty()) {
                 out.println("- missed " + name + ": " + missReason(s.stream(), d)
                         + (s.alerts().isEmpty() ? "" : "; alerts outside the 30 s window at "

@@ -44,7 +44,7 @@ class FallsCommandTest {
         }
         assertTrue(out.lines().anyMatch(l -> l.matches("\\| \\*\\*all\\*\\* \\| \\d/4 \\| .*")), out);
         assertTrue(out.contains("- resting (still, no burst): 1800 frames/h, 46.8 kB/h"), out);
-        assertTrue(out.contains("Why (relative to the default settings):"), out);
+        assertTrue(out.contains("Why (relative to the settings each recording was judged with):"), out);
         String last = lines.get(lines.size() - 1);
         assertTrue(last.matches("falls: sensitivity [0-9.]+ %, specificity [0-9.]+ %, false alerts per ADL hour "
                 + "[0-9.]+, delay p50 ([0-9.]+|n/a) s, p95 ([0-9.]+|n/a) s"), last);
