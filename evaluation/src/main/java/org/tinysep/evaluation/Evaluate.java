@@ -21,6 +21,11 @@ public final class Evaluate {
 
     public static void main(String[] args) {
         try {
+            if (args.length > 0 && args[0].equals("falls")) { // issue 26: fall detection on SisFall
+                System.exit(org.tinysep.evaluation.falls.FallsCommand.main(
+                        java.util.Arrays.copyOfRange(args, 1, args.length),
+                        Path.of(System.getProperty("tinysep.repo", ".")), System.out));
+            }
             run(EvalOptions.parse(args, Path.of(System.getProperty("tinysep.repo", "."))));
             System.exit(0);
         } catch (IllegalArgumentException e) {

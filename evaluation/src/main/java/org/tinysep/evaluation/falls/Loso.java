@@ -1,0 +1,80 @@
+package org.tinysep.evaluation.falls;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.tinysep.falldetection.internal.FallSettings;
+
+/**
+ * Leave-one-subject-out: for each subject, the settings are chosen on the other subjects only (the grid point with
+ * the highest sensitivity + specificity, then the fewest false alerts, then the lowest p95 delay, then the earlier
+ * grid point), and the subject is judged with them. No figure comes from a subject its settings were chosen on.
+ */
+final class Loso {
+
+    static final int[] IMPACT_MG = {2000, 2500, 3000};
+    static final double[] ANGLE_DEG = {45, 30, 60};
+    static final int[] STILL_SD_MG = {100, 50, 150};
+    static final int[] STILL_S = {4, 6};
+
+    /** A fold: the subject held out, the settings chosen without it, and its recordings judged with them. */
+    record Fold(String subject, FallSettings chosen, List<Scored> scored) {
+    }
+
+    private Loso() {
+    }
+
+    static List<FallSettings> grid() {
+        List<FallSettings> g = new ArrayList<>();
+        for (int impact : IMPACT_MG) {
+            for (double angle : ANGLE_DEG) {
+                for (int sd : STILL_SD_MG) {
+                    for (int still : STILL_S) {
+                        g.add(new FallSettings(impact, angle, sd, Duration.ofSeconds(still),
+                                FallSettings.DEFAULT.within()));
+                    }
+                }
+            }
+        }
+        return g;
+    }
+
+    static List<Fold> run(Map<String, List<NodeStream>> bySubject) {
+        List<FallSettings> grid = grid();
+        // every grid point on every subject once; a fold sums the other subjects' judgements
+        Map<FallSettings, Map<String, List<Scored>>> all = new LinkedHashMap<>();
+        for (FallSettings s : grid) {
+            Map<String, List<Scored>> per = new LinkedHashMap<>();
+            bySubject.forEach((subject, streams) -> per.put(subject,
+                    streams.parallelStream().map(x -> Scored.run(x, s)).toList()));
+            all.put(s, per);
+        }
+        List<Fold> folds = new ArrayList<>();
+        for (String held : bySubject.keySet()) {
+            FallSettings best = null;
+            Figures bestFigures = null;
+            for (FallSettings s : grid) {
+                List<Scored> training = new ArrayList<>();
+                all.get(s).forEach((subject, scored) -> {
+                    if (!subject.equals(held)) {
+                        training.addAll(scored);
+                    }
+                });
+                Figures f = Figures.of(training);
+                if (bestFigures == null || BETTER.compare(f, bestFigures) < 0) {
+                    best = s;
+                    bestFigures = f;
+                }
+            }
+            folds.add(new Fold(held, best, all.get(best).get(held)));
+        }
+        return folds;
+    }
+
+    private static final Comparator<Figures> BETTER = Comparator.comparingDouble((Figures f) -> -f.balanced())
+            .thenComparingInt(Figures::falseAlerts)
+            .thenComparingDouble(f -> Double.isNaN(f.delay(0.95)) ? Double.MAX_VALUE : f.delay(0.95));
+}
