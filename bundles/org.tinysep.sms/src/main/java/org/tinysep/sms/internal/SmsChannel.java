@@ -55,6 +55,8 @@ public final class SmsChannel implements MessageChannel {
     private Spool spool;
     private int maxParts;
     private volatile DeviceStatus said;
+    /** Whether anything was sent: an SMS channel nobody set up or used stays quiet in the log. */
+    private volatile boolean used;
 
     @Activate
     void activate(BundleContext context, SmsConfig c) {
@@ -103,6 +105,7 @@ public final class SmsChannel implements MessageChannel {
 
     @Override
     public ChannelDelivery send(String address, ChannelMessage m) {
+        used = true;
         DeviceStatus s = status();
         if (s.state() == DeviceStatus.State.ERROR) {
             return ChannelDelivery.failed(s.detail());
@@ -138,6 +141,9 @@ public final class SmsChannel implements MessageChannel {
         try {
             DeviceStatus now = health.status();
             DeviceStatus before = said;
+            if (!used && !java.nio.file.Files.isDirectory(spool.base())) {
+                return; // not set up and not used: nothing to say, no inbox to read
+            }
             if (before == null || before.state() != now.state() || !before.detail().equals(now.detail())) {
                 said = now;
                 if (now.state() == DeviceStatus.State.ERROR) {
