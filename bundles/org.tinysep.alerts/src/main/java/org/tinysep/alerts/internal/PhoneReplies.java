@@ -32,7 +32,7 @@ final class PhoneReplies {
     }
 
     Optional<String> reply(String scheme, String from, String text) {
-        String said = text == null ? "" : text.strip();
+        String said = text == null ? "" : text.strip().replaceAll("\\s+", " ");
         String shown = said.length() > 60 ? said.substring(0, 60) + "..." : said;
         String by = ChannelSender.word(scheme);
         Optional<ContactBook.Contact> who = "sms".equals(scheme) ? contacts.byPhone(from) : Optional.empty();

@@ -165,7 +165,9 @@ public final class SmsChannel implements MessageChannel {
 
     private void handle(ReplyHandler h, Spool.Incoming in) throws IOException {
         spool.handled(in); // first, so that a reply is never acted on twice
-        event("SMS received from " + in.from() + ": '" + in.text().strip() + "'");
+        String said = in.text().strip().replaceAll("\\s+", " ");
+        event("SMS received from " + in.from() + ": '" + (said.length() > 60 ? said.substring(0, 60) + "..." : said)
+                + "'");
         Optional<String> answer = h.reply("sms", in.from(), in.text());
         if (answer.isPresent()) {
             ChannelDelivery d = queue(in.from(), SmsText.fit(answer.get(), "", maxParts));
