@@ -205,6 +205,9 @@ public class AlertsByPhoneTest extends AalTestSupport {
                     + "eva@care.test (handed to the Mail Manager), because SMS to " + EVA_PHONE + " failed: "
                     + "gammu-smsd is not running"));
             assertTrue(events(), events().contains("SMS channel in ERROR: gammu-smsd is not running"));
+            String channels = shell("tinysep:channels");
+            assertTrue(channels, channels.contains("sms: SMS through the GSM modem (gammu-smsd) - ERROR (gammu-smsd is "
+                    + "not running") && channels.contains("push: push notification (ntfy) - "));
         }
     }
 
