@@ -206,7 +206,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
         List<Alert> changed = new ArrayList<>();
         synchronized (this) {
             for (Alert a : book.all()) {
-                Alert next = notifier.refresh(advance(a, now));
+                Alert next = notifier.refresh(advance(a, now), now);
                 if (!next.equals(a)) {
                     book.put(next);
                     changed.add(next);

@@ -167,10 +167,19 @@ final class Notifier {
 
     /** @return {@code a} with the Mail Manager's latest word on each message not finished yet */
     Alert refresh(Alert a) {
+        return refresh(a, null);
+    }
+
+    /**
+     * @param at the platform time: a channel message of a named contact that failed later (an SMS gammu-smsd moved to
+     *           {@code error/}) is then followed by the contact's next channels at once; null = no fallback
+     */
+    Alert refresh(Alert a, Instant at) {
         if (a.notifications().stream().noneMatch(Notifier::unfinished)) {
             return a;
         }
         List<Notification> now = new ArrayList<>();
+        List<Notification> failedLater = new ArrayList<>();
         boolean changed = false;
         for (Notification n : a.notifications()) {
             Optional<ChannelDelivery> d = unfinished(n) ? sender.latest(n) : Optional.empty();
@@ -185,12 +194,45 @@ final class Notifier {
                 }
                 if (d.get().outcome() == MailDelivery.Outcome.FAILED) {
                     problems.accept("alert " + a.id() + ": its " + which + " was NOT delivered: " + d.get().detail());
+                    failedLater.add(now.get(now.size() - 1));
                 }
             } else {
                 now.add(n);
             }
         }
+        if (at != null && a.isOpen()) {
+            failedLater.forEach(n -> now.addAll(fallBack(a, n, now, at)));
+        }
         return !changed ? a : Copies.notifications(a, now, a.contactsReached());
+    }
+
+    /** @return the attempts on the channels after {@code failed}'s, when it was the contact's last attempt so far */
+    private List<Notification> fallBack(Alert a, Notification failed, List<Notification> all, Instant at) {
+        Optional<ContactBook.Contact> c = failed.to().size() == 1 ? contacts.get(failed.to().get(0))
+                .filter(x -> !x.plain()) : Optional.empty();
+        if (c.isEmpty() || all.indexOf(failed) < 0 || all.subList(all.indexOf(failed) + 1, all.size()).stream()
+                .anyMatch(x -> x.to().equals(failed.to()))) {
+            return List.of(); // a plain address, or the contact was tried again since
+        }
+        List<ContactBook.Address> rest = c.get().addresses();
+        int i = rest.stream().map(ContactBook.Address::scheme).toList().indexOf(failed.channel());
+        if (i < 0 || i + 1 >= rest.size()) {
+            return List.of();
+        }
+        ContactBook.Contact next = new ContactBook.Contact(c.get().key(), rest.subList(i + 1, rest.size()), false);
+        String subject = switch (failed.step()) {
+            case FIRST -> words.firstSubject(a);
+            case REPEAT -> words.repeatSubject(a, at);
+            case ESCALATION -> words.escalationSubject(a, at);
+            case ALL_CLEAR -> words.allClearSubject(a);
+        };
+        ChannelSender.Reach r = sender.reach(next, at, failed.step(), subject, words.body(a, toldSoFar(a), at),
+                new ChannelMessage(a.id(), subject, "Not acknowledged yet. Reply OK " + a.id() + " if you take care "
+                        + "of it."));
+        (r.reached() ? events : problems).accept("alert " + a.id() + ": " + ChannelSender.word(failed.channel())
+                + " to " + next.key() + " failed, so the " + failed.step().name().toLowerCase().replace('_', ' ')
+                + " message went on " + r.words());
+        return r.tried();
     }
 
     /** Sends a message that belongs to no alert (the daily summary) to the Mail Manager's recipients. */

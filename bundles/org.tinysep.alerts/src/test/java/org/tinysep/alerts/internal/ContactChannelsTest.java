@@ -108,4 +108,60 @@ class ContactChannelsTest {
                 + "+4915112345678 failed: no SMS channel is running (bundle org.tinysep.sms); e-mail to "
                 + "eva@example.org failed: no Mail Manager is running"), events);
     }
+
+    @Test
+    void anSmsThatFailsLaterIsFollowedByTheContactsNextChannel() {
+        List<String> pushSent = new ArrayList<>();
+        Map<String, MessageChannel> channels = Map.of("sms", new LaterFailing(), "push", new Fake("push", true,
+                pushSent));
+        List<String> events = new ArrayList<>();
+        AlertSettings s = new AlertSettings(List.of("Eva"), 10, 15, null, ZoneOffset.UTC);
+        Notifier n = new Notifier(s, ContactBook.parse("Eva <sms:+4915112345678 push:eva-topic>"), channels::get,
+                new Words(ZoneOffset.UTC), () -> null, events::add, events::add);
+        Alert a = Copies.raised("5", new AlertRequest(AlertKind.FALL, "fall", "", "", T, "TinySEP: fall", ""));
+        a = n.send(a, new Escalation.Step(NotificationStep.FIRST, List.of("Eva"), 1), T);
+        assertEquals(1, a.notifications().size());
+        assertTrue(pushSent.isEmpty());
+        LaterFailing.failed = true; // gammu-smsd moved it to error/
+        a = n.refresh(a, T.plusSeconds(20));
+        assertEquals(2, a.notifications().size(), a.notifications().toString());
+        assertEquals(MailDelivery.Outcome.FAILED, a.notifications().get(0).outcome());
+        assertEquals("push", a.notifications().get(1).channel());
+        assertEquals(T.plusSeconds(20), a.notifications().get(1).at());
+        assertEquals(1, pushSent.size());
+        assertTrue(events.contains("alert 5: SMS to Eva failed, so the first message went on by push to eva-topic "
+                + "(handed to the server)"), events.toString());
+        assertEquals(a, n.refresh(a, T.plusSeconds(21)), "once: the contact was tried again since");
+    }
+
+    /** An SMS channel that queues, and later says the SMS failed. */
+    private static final class LaterFailing implements MessageChannel {
+        static volatile boolean failed;
+
+        @Override
+        public String scheme() {
+            return "sms";
+        }
+
+        @Override
+        public String name() {
+            return "SMS";
+        }
+
+        @Override
+        public DeviceStatus status() {
+            return DeviceStatus.online(T);
+        }
+
+        @Override
+        public ChannelDelivery send(String address, ChannelMessage m) {
+            return new ChannelDelivery("s1", MailDelivery.Outcome.QUEUED, "handed to gammu-smsd");
+        }
+
+        @Override
+        public java.util.Optional<ChannelDelivery> delivery(String id) {
+            return java.util.Optional.of(failed ? new ChannelDelivery(id, MailDelivery.Outcome.FAILED, "gammu-smsd "
+                    + "could not send it") : new ChannelDelivery(id, MailDelivery.Outcome.QUEUED, "handed to gammu-smsd"));
+        }
+    }
 }
