@@ -31,6 +31,7 @@ final class Notifier {
     private final Consumer<String> problems;
     private final ContactBook contacts;
     private final ChannelSender sender;
+    private final LateFallback late;
     private boolean saidNoMail;
     /** What a queued message's entry adds: it is not delivered yet, and where the outcome will be told. */
     static final String QUEUED_NOTE = " (not delivered yet: its delivery or failure is logged when the Mail Manager "
@@ -46,6 +47,7 @@ final class Notifier {
             Supplier<MailManagerProvider> mail, Consumer<String> events, Consumer<String> problems) {
         this.contacts = contacts;
         this.sender = new ChannelSender(mail, channels);
+        this.late = new LateFallback(contacts, sender, words, events, problems);
         this.settings = settings;
         this.words = words;
         this.mail = mail;
@@ -67,12 +69,7 @@ final class Notifier {
 
     /** @return {@code a} with the message of {@code step} sent, or {@code a} itself when there is no Mail Manager */
     Alert send(Alert a, Escalation.Step step, Instant now) {
-        String subject = switch (step.step()) {
-            case FIRST -> words.firstSubject(a);
-            case REPEAT -> words.repeatSubject(a, now);
-            case ESCALATION -> words.escalationSubject(a, now);
-            case ALL_CLEAR -> words.allClearSubject(a);
-        };
+        String subject = LateFallback.subject(words, a, step.step(), now);
         List<String> told = step.step() == NotificationStep.ESCALATION ? union(toldSoFar(a), step.to()) : toldSoFar(a);
         Dispatch d = dispatch(now, step.step(), step.to(), subject, words.body(a, told, now), new ChannelMessage(a.id(),
                 subject, "Not acknowledged yet. Reply OK " + a.id() + " if you take care of it."));
@@ -201,38 +198,9 @@ final class Notifier {
             }
         }
         if (at != null && a.isOpen()) {
-            failedLater.forEach(n -> now.addAll(fallBack(a, n, now, at)));
+            failedLater.forEach(n -> now.addAll(late.after(a, n, now, at, toldSoFar(a))));
         }
         return !changed ? a : Copies.notifications(a, now, a.contactsReached());
-    }
-
-    /** @return the attempts on the channels after {@code failed}'s, when it was the contact's last attempt so far */
-    private List<Notification> fallBack(Alert a, Notification failed, List<Notification> all, Instant at) {
-        Optional<ContactBook.Contact> c = failed.to().size() == 1 ? contacts.get(failed.to().get(0))
-                .filter(x -> !x.plain()) : Optional.empty();
-        if (c.isEmpty() || all.indexOf(failed) < 0 || all.subList(all.indexOf(failed) + 1, all.size()).stream()
-                .anyMatch(x -> x.to().equals(failed.to()))) {
-            return List.of(); // a plain address, or the contact was tried again since
-        }
-        List<ContactBook.Address> rest = c.get().addresses();
-        int i = rest.stream().map(ContactBook.Address::scheme).toList().indexOf(failed.channel());
-        if (i < 0 || i + 1 >= rest.size()) {
-            return List.of();
-        }
-        ContactBook.Contact next = new ContactBook.Contact(c.get().key(), rest.subList(i + 1, rest.size()), false);
-        String subject = switch (failed.step()) {
-            case FIRST -> words.firstSubject(a);
-            case REPEAT -> words.repeatSubject(a, at);
-            case ESCALATION -> words.escalationSubject(a, at);
-            case ALL_CLEAR -> words.allClearSubject(a);
-        };
-        ChannelSender.Reach r = sender.reach(next, at, failed.step(), subject, words.body(a, toldSoFar(a), at),
-                new ChannelMessage(a.id(), subject, "Not acknowledged yet. Reply OK " + a.id() + " if you take care "
-                        + "of it."));
-        (r.reached() ? events : problems).accept("alert " + a.id() + ": " + ChannelSender.word(failed.channel())
-                + " to " + next.key() + " failed, so the " + failed.step().name().toLowerCase().replace('_', ' ')
-                + " message went on " + r.words());
-        return r.tried();
     }
 
     /** Sends a message that belongs to no alert (the daily summary) to the Mail Manager's recipients. */
