@@ -3,12 +3,14 @@
 #   java, maven  - build
 #   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
 #   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
+#   gammu-smsd   - SMS daemon driving a GSM modem; its dummy modem for the SMS channel tests (docs/alerts-by-phone.md)
 #   mosquitto    - real MQTT broker for the MQTT bridge tests (testsupport/org.tinysep.testsupport.mqtt, docs/mqtt.md)
 set -euo pipefail
 need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v mvn >/dev/null || need+=(maven)
 command -v socat >/dev/null || need+=(socat)
+command -v gammu-smsd >/dev/null || [ -x /usr/bin/gammu-smsd ] || need+=(gammu-smsd)
 command -v chromium >/dev/null || need+=(chromium)
 command -v chromedriver >/dev/null || need+=(chromium-driver)
 command -v mosquitto >/dev/null || [ -x /usr/sbin/mosquitto ] || need+=(mosquitto)

@@ -69,6 +69,9 @@ async function alerts() {
         try { await Tiny.api('POST', 'alerts/' + encodeURIComponent(alert.id) + '/acknowledge'); await alerts(); }
         catch (e) { out.textContent = e.message; }
       }}, 'Acknowledge'), ' ', out));
+    if (alert.reached && alert.reached.length) { // which channel reached whom (issue 27)
+      list.append(Tiny.el('ul', {class: 'muted reached'}, ...alert.reached.map(r => Tiny.el('li', {}, r))));
+    }
   }
   const i = a.inactivity;
   if (!i) {

@@ -14,9 +14,20 @@ import org.tinysep.api.service.MailDelivery;
  * @param mailId   the Mail Manager's id of the message (empty when it could not be handed over)
  * @param outcome  what became of it, as far as known ({@link MailDelivery.Outcome})
  * @param detail   the outcome in plain words, e.g. "delivered to carer@example.org" or "no Mail Manager"
+ * @param channel  which channel it went by: {@value #MAIL} or a {@link org.tinysep.api.channel.MessageChannel}'s
+ *                 scheme ({@code sms}, {@code push}); with {@code to} it says which channel reached whom (since 1.2)
  */
 public record Notification(Instant at, NotificationStep step, List<String> to, String mailId,
-        MailDelivery.Outcome outcome, String detail) {
+        MailDelivery.Outcome outcome, String detail, String channel) {
+
+    /** The channel of e-mail through the Mail Manager. */
+    public static final String MAIL = "mail";
+
+    /** A notification by e-mail (before 1.2 every notification was one). */
+    public Notification(Instant at, NotificationStep step, List<String> to, String mailId,
+            MailDelivery.Outcome outcome, String detail) {
+        this(at, step, to, mailId, outcome, detail, MAIL);
+    }
 
     public Notification {
         Objects.requireNonNull(at, "at");
@@ -25,10 +36,11 @@ public record Notification(Instant at, NotificationStep step, List<String> to, S
         mailId = mailId == null ? "" : mailId;
         Objects.requireNonNull(outcome, "outcome");
         detail = detail == null ? "" : detail;
+        channel = channel == null || channel.isBlank() ? MAIL : channel;
     }
 
     /** @return this notification with a newer outcome */
     public Notification with(MailDelivery.Outcome next, String why) {
-        return new Notification(at, step, to, mailId, next, why);
+        return new Notification(at, step, to, mailId, next, why, channel);
     }
 }

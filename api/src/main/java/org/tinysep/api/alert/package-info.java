@@ -3,9 +3,10 @@
  * repeated and escalated along a contact list while nobody does, and every step of it is kept. The shell, the web
  * console and an MQTT bridge all use {@link org.tinysep.api.alert.AlertService}.
  * 1.1: alert kinds HELP and FALL (the person node, issue 26).
+ * 1.2: {@link org.tinysep.api.alert.Notification#channel()}: which channel (mail, SMS, push) reached whom (issue 27).
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package org.tinysep.api.alert;
 
 import org.osgi.annotation.bundle.Export;

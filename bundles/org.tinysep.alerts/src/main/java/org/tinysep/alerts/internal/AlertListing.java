@@ -25,7 +25,9 @@ final class AlertListing {
             }
             for (Notification n : a.notifications()) {
                 b.append("    ").append(n.at()).append(' ').append(n.step()).append(" to ").append(Words.who(n.to()))
-                        .append(n.mailId().isEmpty() ? "" : " (mail #" + n.mailId() + ")").append(": ")
+                        .append(Notification.MAIL.equals(n.channel()) ? "" : " by " + ChannelSender.word(n.channel()))
+                        .append(n.mailId().isEmpty() ? "" : Notification.MAIL.equals(n.channel())
+                                ? " (mail #" + n.mailId() + ")" : " (#" + n.mailId() + ")").append(": ")
                         .append(n.outcome()).append(n.detail().isEmpty() ? "" : " - " + n.detail()).append('\n');
             }
         }

@@ -20,6 +20,8 @@ import org.tinysep.api.alert.AlertListener;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.alert.AlertState;
+import org.tinysep.api.channel.MessageChannel;
+import org.tinysep.api.channel.ReplyHandler;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
@@ -33,9 +35,9 @@ import org.tinysep.device.support.StateFolder;
  * Time Controller's, virtual time included): one {@link PlatformTicker} tick per second drives the schedule
  * ({@link Escalation}), the delivery outcomes ({@link Notifier#refresh}) and the daily summary.
  */
-@Component(service = AlertService.class, configurationPid = "org.tinysep.alerts", immediate = true)
+@Component(service = {AlertService.class, ReplyHandler.class}, configurationPid = "org.tinysep.alerts", immediate = true)
 @Designate(ocd = AlertsConfig.class)
-public final class AlertManager implements AlertService {
+public final class AlertManager implements AlertService, ReplyHandler {
 
     private final FanOut fanOut = new FanOut();
     private final AlertLog log = new AlertLog();
@@ -45,6 +47,11 @@ public final class AlertManager implements AlertService {
     private DailySummary summary;
     private PlatformTicker ticker;
     private volatile MailManagerProvider mail;
+    /** The SMS and push channels (issue 27), by DS field injection. */
+    @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    private volatile List<MessageChannel> channels;
+    private PhoneReplies replies;
 
     @Activate
     synchronized void activate(BundleContext context, AlertsConfig config) {
@@ -59,7 +66,10 @@ public final class AlertManager implements AlertService {
         Path file = StateFolder.resolveOrDataArea(config.stateFile(), context, "alerts/alerts.properties");
         this.clock = PlatformClock.tracking(context);
         this.book = new AlertBook(new AlertStore(file), log::problem);
-        this.notifier = new Notifier(s, new Words(s.zone()), () -> mail, log::event, log::problem);
+        ContactBook contacts = problem == null ? ContactBook.parse(config.contacts()) : ContactBook.EMPTY;
+        this.notifier = new Notifier(s, contacts, this::channel, new Words(s.zone()), () -> mail, log::event,
+                log::problem);
+        this.replies = new PhoneReplies(contacts, this, log::event, log::problem);
         this.summary = new DailySummary(context, s, StateFolder.resolve(null, context, "").orElse(file.getParent()),
                 log::signals);
         if (problem != null) {
@@ -158,6 +168,17 @@ public final class AlertManager implements AlertService {
         return cleared;
     }
 
+    /** A reply from a phone (issue 27): see {@link PhoneReplies}. */
+    @Override
+    public Optional<String> reply(String scheme, String from, String text) {
+        return replies.reply(scheme, from, text);
+    }
+
+    private MessageChannel channel(String scheme) {
+        List<MessageChannel> all = channels;
+        return all == null ? null : all.stream().filter(c -> scheme.equals(c.scheme())).findFirst().orElse(null);
+    }
+
     @Override
     public synchronized List<Alert> open() {
         return book.open();
@@ -185,7 +206,7 @@ public final class AlertManager implements AlertService {
         List<Alert> changed = new ArrayList<>();
         synchronized (this) {
             for (Alert a : book.all()) {
-                Alert next = notifier.refresh(advance(a, now));
+                Alert next = notifier.refresh(advance(a, now), now);
                 if (!next.equals(a)) {
                     book.put(next);
                     changed.add(next);

@@ -3,9 +3,7 @@ package org.tinysep.alerts.internal;
 import java.time.LocalTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeParseException;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Pattern;
 
 /**
  * The validated configuration of the alerts component.
@@ -16,24 +14,12 @@ import java.util.regex.Pattern;
 record AlertSettings(List<String> contacts, int repeatMinutes, int escalateMinutes, LocalTime summaryTime,
         ZoneId zone) {
 
-    private static final Pattern ADDRESS = Pattern.compile("[^@\\s<>,;\"]+@[^@\\s<>,;\"]+");
-
     static final AlertSettings DEFAULTS = new AlertSettings(List.of(), 10, 15, LocalTime.of(8, 0),
             ZoneId.systemDefault());
 
     /** @throws IllegalArgumentException one plain sentence naming the key and the bad value */
     static AlertSettings parse(AlertsConfig c) {
-        List<String> contacts = new ArrayList<>();
-        for (String part : c.contacts().split(",")) {
-            String a = part.strip();
-            if (a.isEmpty()) {
-                continue;
-            }
-            if (!ADDRESS.matcher(a).matches()) {
-                throw new IllegalArgumentException("contacts: '" + a + "' is not an e-mail address");
-            }
-            contacts.add(a);
-        }
+        List<String> contacts = ContactBook.parse(c.contacts()).keys(); // plain addresses or named contacts
         if (c.repeatMinutes() < 0 || c.escalateMinutes() < 0) {
             throw new IllegalArgumentException("repeatMinutes and escalateMinutes must be 0 or more, were "
                     + c.repeatMinutes() + " and " + c.escalateMinutes());

@@ -72,6 +72,7 @@ final class AlertStore {
                 p.setProperty(nk + "mailId", n.mailId());
                 p.setProperty(nk + "outcome", n.outcome().name());
                 p.setProperty(nk + "detail", n.detail());
+                p.setProperty(nk + "channel", n.channel());
             }
         }
         StringWriter w = new StringWriter();
@@ -111,7 +112,8 @@ final class AlertStore {
             ns.add(new Notification(Instant.parse(p.getProperty(nk + "at")),
                     NotificationStep.valueOf(p.getProperty(nk + "step")),
                     to.isBlank() ? List.of() : List.of(to.split(",")), p.getProperty(nk + "mailId"),
-                    MailDelivery.Outcome.valueOf(p.getProperty(nk + "outcome")), p.getProperty(nk + "detail")));
+                    MailDelivery.Outcome.valueOf(p.getProperty(nk + "outcome")), p.getProperty(nk + "detail"),
+                    p.getProperty(nk + "channel", Notification.MAIL)));
         }
         String closedAt = p.getProperty(k + "closedAt", "");
         return new Alert(id, AlertKind.valueOf(p.getProperty(k + "kind")), p.getProperty(k + "source"),
