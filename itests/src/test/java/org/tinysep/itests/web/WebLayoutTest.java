@@ -54,16 +54,18 @@ public class WebLayoutTest extends WebTestSupport {
             + "   if (tops.size > 1) broken.push(m[0]); }"
             + " return broken.join(' '); })()";
 
-    /** Each graph box whose name is not the device's whole name, or one of whose labels leaves the box. */
-    private static final String CLIPPED_LABELS = "Tiny.api('GET', 'devices').then(ds => { const bad = [];"
-            + " const names = new Map(ds.map(d => [d.uid, d.name]));"
+    /**
+     * Each graph box whose first label is not the device's whole name (its tooltip begins {@code <name> — }), or one
+     * of whose labels leaves the box.
+     */
+    private static final String CLIPPED_LABELS = "(() => { const bad = [];"
             + " for (const a of document.querySelectorAll('#graph a.node')) {"
-            + "   const uid = decodeURIComponent(a.getAttribute('href').split('#')[1]);"
+            + "   const name = a.querySelector('title').textContent.split(' \u2014 ')[0];"
             + "   const box = a.querySelector('rect').getBBox(); const texts = a.querySelectorAll('text');"
-            + "   if (names.has(uid) && texts[0].textContent !== names.get(uid)) bad.push('cut: ' + texts[0].textContent);"
+            + "   if (texts[0].textContent !== name) bad.push('cut: ' + texts[0].textContent);"
             + "   for (const t of texts) { const b = t.getBBox();"
             + "     if (b.x < box.x || b.x + b.width > box.x + box.width) bad.push('outside its box: ' + t.textContent); } }"
-            + " return bad.join(' | '); })";
+            + " return bad.join(' | '); })()";
 
     @Override
     protected List<Option> options() {
