@@ -42,10 +42,13 @@ async function refresh() {
     const a = c.inactivity.alert;
     if (a) detail.append(Tiny.el('p', {class: 'error'}, 'No activity in ' + a.room + ' since ' + Tiny.time(a.lastActivityAt)
       + ' (' + a.lastActivity + '); help was called at ' + Tiny.time(a.raisedAt) + '.'));
+  } else if (c.inactivity.blind) { // every sensor of the watch offline (or none): it cannot see a fall
+    setState('inactivity', 'BLIND', 'blind');
+    detail.textContent = c.inactivity.sight;
   } else {
     setState('inactivity', c.inactivity.state, c.inactivity.state === 'WATCHING' ? 'watching' : 'not watching');
-    detail.textContent = c.inactivity.state === 'WATCHING' ? 'Someone is home; an alert is raised when activity stops for longer than the room\'s limit.'
-      : 'Nobody seems to be home: not watching.';
+    detail.textContent = (c.inactivity.state === 'WATCHING' ? 'Someone is home; an alert is raised when activity stops for longer than the room\'s limit.'
+      : 'Nobody seems to be home: not watching.') + (c.inactivity.sight ? ' ' + c.inactivity.sight : '');
   }
   const body = Tiny.clear(document.getElementById('rooms'));
   for (const r of c.rooms) {
@@ -82,7 +85,8 @@ async function alerts() {
       + Tiny.time(i.alert.raisedAt) + '.'));
   } else {
     list.append(Tiny.el('p', {id: 'inactivity-alert', class: 'ok'}, 'Inactivity Recognition: no alert ('
-      + (i.state === 'WATCHING' ? 'watching' : 'not watching: nobody seems to be home') + ').'));
+      + (i.blind ? 'blind' : i.state === 'WATCHING' ? 'watching' : 'not watching: nobody seems to be home') + ').'
+      + (i.blind ? ' ' + i.sight : '')));
   }
 }
 

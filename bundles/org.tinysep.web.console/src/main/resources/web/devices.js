@@ -4,6 +4,13 @@
 let rooms = [];
 let settingsShown = 0;
 
+// Text with a line-break opportunity after each dot between letters or digits: a node address
+// (0014.4F01.0000.0102) or a name with one may wrap between its groups, so a narrow column does not force a break
+// inside a word (console.css breaks lines between words only).
+function dotted(text) {
+  return String(text ?? '').split(/(?<=\w\.)(?=\w)/).flatMap((p, i) => i ? [Tiny.el('wbr', {}), p] : [p]);
+}
+
 function stateCell(status) {
   return Tiny.el('td', {title: status.detail || ''},
     Tiny.el('span', {class: 'state state-' + status.state}, status.state),
@@ -16,11 +23,11 @@ async function load() {
   const body = Tiny.clear(document.getElementById('devices'));
   for (const d of devices) {
     body.append(Tiny.el('tr', {'data-uid': d.uid},
-      Tiny.el('td', {}, Tiny.el('a', {href: '#' + d.uid, class: 'device-link'}, d.name)),
+      Tiny.el('td', {}, Tiny.el('a', {href: '#' + d.uid, class: 'device-link'}, dotted(d.name))),
       stateCell(d.status), Tiny.el('td', {}, d.type), Tiny.el('td', {}, d.room ? d.room.name : ''),
-      Tiny.el('td', {}, d.nodeAddress),
-      Tiny.el('td', {}, d.connections.map(c => Tiny.el('div', {}, c.interface + ' ← ' + (c.providerName || c.providerUid)
-        + (c.vital ? ' (vital)' : ' (optional)'))))));
+      Tiny.el('td', {}, dotted(d.nodeAddress)),
+      Tiny.el('td', {}, d.connections.map(c => Tiny.el('div', {}, c.interface + ' ← ', dotted(c.providerName || c.providerUid),
+        c.vital ? ' (vital)' : ' (optional)')))));
   }
   document.getElementById('devices-box').dataset.count = devices.length;
   await settings();

@@ -28,6 +28,11 @@ public @interface AlertsConfig {
             + "empty = the system's")
     String timeZone() default "";
 
+    @AttributeDefinition(description = "Seconds a sensor must stay away before the caregivers get a 'monitoring "
+            + "reduced' notice about it; a sensor back within this time (a platform start, a driver update) mails "
+            + "nothing. 0 = at once")
+    int noticeGraceSeconds() default 60;
+
     @AttributeDefinition(description = "File the alerts are kept in; empty = ${tinysep.var}/alerts/alerts.properties")
     String stateFile() default "";
 }

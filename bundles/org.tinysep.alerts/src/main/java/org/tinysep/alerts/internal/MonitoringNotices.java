@@ -5,11 +5,13 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
+import java.time.Instant;
 import java.time.ZoneId;
 import java.util.List;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -32,7 +34,9 @@ import org.tinysep.device.support.StateFolder;
  * to the caregivers (the Mail Manager's recipients), once per cause (issue 25, items 3 and 7). A notice is not an
  * alert: it is neither repeated nor escalated. The log is read every {@value #PERIOD_SECONDS} s; the last entry
  * handled is saved ({@code notices.properties} next to the alerts), so a restart neither repeats nor loses one.
- * Without a Mail Manager the signals wait and go out when one appears.
+ * Without a Mail Manager the signals wait and go out when one appears. A signal about one sensor that went away waits
+ * {@code noticeGraceSeconds} first and is dropped when the sensor is back by then ({@link NoticeGrace}), so a
+ * platform start does not mail "monitoring reduced" notices.
  */
 @Component(service = {}, immediate = true, configurationPid = "org.tinysep.alerts")
 public final class MonitoringNotices {
@@ -50,6 +54,8 @@ public final class MonitoringNotices {
     private NoticeFeed feed;
     private NoticeText text;
     private Path file;
+    private NoticeGrace grace = new NoticeGrace(Duration.ZERO);
+    private Supplier<Instant> clock = Instant::now;
     private ScheduledExecutorService executor;
 
     public MonitoringNotices() {
@@ -60,6 +66,13 @@ public final class MonitoringNotices {
         this.feed = feed;
         this.text = text;
         this.file = file;
+    }
+
+    /** Test seam: with a grace for sensor notices and the clock it is measured on. */
+    MonitoringNotices(NoticeFeed feed, NoticeText text, Path file, Duration grace, Supplier<Instant> clock) {
+        this(feed, text, file);
+        this.grace = new NoticeGrace(grace);
+        this.clock = clock;
     }
 
     @Activate
@@ -74,6 +87,7 @@ public final class MonitoringNotices {
         this.file = StateFolder.resolveOrDataArea(config.stateFile(), context, "alerts/alerts.properties")
                 .resolveSibling("notices.properties");
         this.feed = new NoticeFeed(load(file), QUIET);
+        this.grace = new NoticeGrace(Duration.ofSeconds(Math.max(0, config.noticeGraceSeconds())));
         this.executor = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "tinysep-notices"));
         executor.scheduleWithFixedDelay(this::pollSafely, 0, PERIOD_SECONDS, TimeUnit.SECONDS);
     }
@@ -101,7 +115,13 @@ public final class MonitoringNotices {
             recent = log.recent(Integer.MAX_VALUE);
         }
         long before = feed.last();
-        List<EventEntry> signals = feed.take(recent);
+        List<EventEntry> fresh = recent.stream().filter(e -> e.sequence() > before).toList();
+        int dropped = grace.dropped();
+        List<EventEntry> signals = grace.pass(feed.take(recent), fresh, clock.get());
+        if (grace.dropped() != dropped) {
+            LOG.info("Notices: {} sensor notice(s) not sent: the sensor was back within the grace",
+                    grace.dropped() - dropped);
+        }
         if (!signals.isEmpty()) {
             m.send(text.subject(signals), text.body(signals));
             log.record(EventKind.DEVICE_EVENT, AlertLog.ORIGIN, "notice sent to the caregivers ("

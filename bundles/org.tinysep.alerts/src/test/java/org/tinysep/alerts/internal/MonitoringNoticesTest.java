@@ -82,6 +82,61 @@ class MonitoringNoticesTest {
         assertEquals(1, mail.sent.size(), "the last entry handled is saved");
     }
 
+    /** Device support's words (LostSources) when a watcher loses a sensor, and when it is back. */
+    private static final String LOST = "Monitoring reduced: Inactivity recognition can no longer see the Bathroom: "
+            + "its sensor \"Bathroom movement\" (m-1) went away at 2026-11-28 03:00:00 UTC; activity in the Bathroom "
+            + "is not noticed until the sensor is back. Check the sensor and its radio node (tinysep:devices lists "
+            + "them); an open alert stays open.";
+    private static final String BACK = "monitoring restored: the sensor \"Bathroom movement\" in the Bathroom is "
+            + "back and watched again";
+
+    private Instant wall = Instant.parse("2026-11-28T03:00:00Z");
+
+    private MonitoringNotices withGrace(Duration grace) {
+        return new MonitoringNotices(new NoticeFeed(0, Duration.ofMinutes(30)), new NoticeText(ZoneOffset.UTC),
+                dir.resolve("notices.properties"), grace, () -> wall);
+    }
+
+    @Test
+    void aSensorBackWithinTheGraceMailsNothing() {
+        MonitoringNotices n = withGrace(Duration.ofSeconds(60));
+        log.record(EventKind.PROBLEM, "inactivity", LOST);
+        n.poll(log, mail);
+        assertEquals(0, mail.sent.size(), "held for the grace");
+        wall = wall.plusSeconds(20);
+        log.record(EventKind.DEVICE_EVENT, "inactivity", BACK);
+        n.poll(log, mail);
+        wall = wall.plusSeconds(120);
+        n.poll(log, mail);
+        assertEquals(0, mail.sent.size(), "the sensor came back within 60 s: " + mail.sent);
+    }
+
+    @Test
+    void aSensorStillAwayAfterTheGraceIsMailedAndOtherSignalsAreNotHeld() {
+        MonitoringNotices n = withGrace(Duration.ofSeconds(60));
+        log.record(EventKind.PROBLEM, "inactivity", LOST);
+        log.record(EventKind.DEVICE_EVENT, "flat-occupancy", BACK); // another watcher's sensor: not this one's
+        log.record(EventKind.PROBLEM, "drivers-list", DISABLED);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size(), "a signal about no sensor goes at once");
+        assertTrue(mail.sent.get(0)[0].contains("Inactivity Recognition"), mail.sent.get(0)[0]);
+        wall = wall.plusSeconds(59);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size(), "still within the grace");
+        wall = wall.plusSeconds(1);
+        n.poll(log, mail);
+        assertEquals(2, mail.sent.size(), "the sensor stayed away for the grace");
+        assertTrue(mail.sent.get(1)[1].contains("can no longer see the Bathroom"), mail.sent.get(1)[1]);
+    }
+
+    @Test
+    void aGraceOfZeroMailsAtOnce() {
+        MonitoringNotices n = withGrace(Duration.ZERO);
+        log.record(EventKind.PROBLEM, "inactivity", LOST);
+        n.poll(log, mail);
+        assertEquals(1, mail.sent.size());
+    }
+
     private static final class Log implements EventLog {
         final List<EventEntry> entries = new ArrayList<>();
         Instant now = Instant.parse("2026-11-28T03:00:00Z");

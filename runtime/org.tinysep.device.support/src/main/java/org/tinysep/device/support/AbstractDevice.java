@@ -34,6 +34,7 @@ public abstract class AbstractDevice implements Device {
     private final DeviceBackup backup = new DeviceBackup(this);
     private final DeviceParameters parameters;
     private final LostSources lost = new LostSources();
+    private final NodeFollow follow = new NodeFollow();
 
     protected AbstractDevice(DriverContext context, String uid, String type, String name) {
         this.context = Objects.requireNonNull(context, "context");
@@ -86,6 +87,7 @@ public abstract class AbstractDevice implements Device {
     /** Connects {@code listener} to {@code provider} and remembers the connection. */
     protected final <L> void connect(Provider<L> provider, Class<?> providerInterface, L listener, boolean vital) {
         registration.connect(provider, providerInterface, listener, vital);
+        follow.connected(provider);
         LostSources.Lost back = lost.back(provider.deviceUid());
         if (back != null) {
             context.reporter().event(EventKind.DEVICE_EVENT, uid, LostSources.backWords(back));
@@ -114,6 +116,7 @@ public abstract class AbstractDevice implements Device {
      * @return whether the device still holds a vital connection afterwards
      */
     final boolean providerGone(String providerUid) {
+        follow.gone(providerUid);
         return registration.providerGone(providerUid);
     }
 
@@ -126,6 +129,7 @@ public abstract class AbstractDevice implements Device {
         boolean hadVital = registration.connections().stream()
                 .anyMatch(c -> c.providerDeviceUid().equals(providerUid) && c.vital());
         Object provider = registration.provider(providerUid);
+        follow.gone(providerUid);
         boolean stillVital = registration.providerGone(providerUid);
         if (!watchesThePerson()) {
             return stillVital;
@@ -149,6 +153,7 @@ public abstract class AbstractDevice implements Device {
         backup.deactivate();
         parameters.close();
         registration.unregister();
+        follow.clear();
         onDispose();
     }
 
@@ -244,9 +249,13 @@ public abstract class AbstractDevice implements Device {
 
     // ---- status, events, functions (DeviceStatusHolder)
 
+    /**
+     * @return the device's own status; but OFFLINE, with the reason, while the bus device of its node is OFFLINE
+     *         ({@link NodeFollow}: no STATUS entry of its own for that)
+     */
     @Override
     public final DeviceStatus status() {
-        return status.get();
+        return follow.apply(status.get());
     }
 
     /** Changes the status; a change is recorded in the event log. */

@@ -36,7 +36,7 @@ final class AlertsApi {
         out.put("message", open.isPresent() ? (open.get().isEmpty() ? "No open alert." : "Open alerts:")
                 : NO_SERVICE);
         out.put("alerts", open.orElse(List.of()).stream().map(AlertsApi::json).toList());
-        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, CaregiverApi::inactivity)
+        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, r -> CaregiverApi.inactivity(r, platform))
                 .orElse(null));
         return out;
     }

@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.LogQuery;
@@ -46,7 +48,7 @@ public final class CaregiverApi {
             m.put("since", f.since());
             return m;
         }).orElse(null));
-        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, CaregiverApi::inactivity)
+        out.put("inactivity", platform.withService(InactivityRecognitionProvider.class, r -> inactivity(r, platform))
                 .orElse(null));
         Map<String, String> sensorRoom = sensorRooms(platform);
         Map<String, EventEntry> lastByRoom = new HashMap<>();
@@ -106,10 +108,22 @@ public final class CaregiverApi {
         return m;
     }
 
-    static Map<String, Object> inactivity(InactivityRecognitionProvider r) {
+    /**
+     * @return the watch's state, its alert, and whether it can see ({@link WatchSight}: {@code blind},
+     *         {@code sensors}, {@code sensorsOffline}, {@code sight}) when the watch is a device
+     */
+    static Map<String, Object> inactivity(InactivityRecognitionProvider r, PlatformView platform) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("state", r.state());
         m.put("alert", r.alert().map(CaregiverApi::alert).orElse(null));
+        if (r instanceof Device watch) {
+            Map<String, WatchSight.Named> devices = new HashMap<>();
+            for (PlatformView.DeviceRef d : platform.devices()) {
+                DeviceStatus s = Safe.get(d.device()::status, null);
+                devices.put(d.uid(), s == null ? null : new WatchSight.Named(Safe.name(d.device(), d.uid()), s));
+            }
+            m.putAll(WatchSight.of(Safe.get(watch::connections, List.of()), devices::get).json());
+        }
         return m;
     }
 
