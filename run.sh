@@ -99,8 +99,9 @@ elif "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
     fi >&2
   ) &
   # a simulated day makes tens of thousands of events in seconds: keep them off the console (they are in the event
-  # log: tinysep:events ..., the demo's log/); warnings, the mail text and the rest of the log still show
-  demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn"
+  # log: tinysep:events ..., the demo's log/); so are the texts of the mails the demo does not send (logger tinysep.mail):
+  # the console gets one line per alert (tinysep:alerts, the web console and the event log have the rest)
+  demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn -Dorg.slf4j.simpleLogger.log.tinysep.mail=warn"
 else
   mkdir -p "$var"
 fi
