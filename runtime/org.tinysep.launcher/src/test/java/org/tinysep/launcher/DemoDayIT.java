@@ -1,0 +1,76 @@
+package org.tinysep.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.LocalDate;
+import java.time.ZoneOffset;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Issue 32 item 3 (the demo clock) with the real {@code ./run.sh}, distribution and simulator: the demo day is
+ * played up to {@code TINYSEP_DEMO_UNTIL} and the platform's clock then stays there (EXTERNAL, no return to real
+ * time), so the console shows the demo day as it was; {@code tinysep:time real} returns to real time.
+ */
+class DemoDayIT {
+
+    private static final Path REPO = Path.of("").toAbsolutePath().resolve("../..").normalize();
+    private static final String PROMPT = "g! ";
+
+    @TempDir
+    Path root;
+
+    @Test
+    void theClockStaysOnTheDemoDayAtTheGivenHour() throws Exception {
+        Path dist = root.resolve("runtime/org.tinysep.launcher/target/tinysep");
+        new TestDistribution(dist, null);
+        try (var shipped = Files.list(Path.of("src/main/dist/etc"))) { // etc/ as shipped: the demo picks its ports
+            for (Path f : Files.list(dist.resolve("etc")).toList()) {
+                Files.delete(f);
+            }
+            for (Path f : shipped.toList()) {
+                Files.copy(f, dist.resolve("etc").resolve(f.getFileName()));
+            }
+        }
+        Files.copy(REPO.resolve("run.sh"), root.resolve("run.sh"));
+        Files.createDirectories(root.resolve("scripts"));
+        Files.copy(REPO.resolve("scripts/demo-flat.sh"), root.resolve("scripts/demo-flat.sh"));
+        Files.createSymbolicLink(root.resolve("simulator"), REPO.resolve("simulator"));
+        Map<String, String> env = Map.of("SKIP_BUILD", "1", "TZ", "UTC", "TINYSEP_DEMO_FROM", "06:30",
+                "TINYSEP_DEMO_UNTIL", "07:00", "TINYSEP_DEMO_DIR", root.resolve("demo").toString(),
+                "TINYSEP_VAR", root.resolve("var").toString());
+        try (ShellProcess tinysep = new ShellProcess("./run.sh", root, env)) {
+            String console = tinysep.await(0, s -> s.contains("DEMO: the simulated day is played")
+                    || s.contains("DEMO: the demo day was NOT sent") || s.contains("FAILED"), Duration.ofSeconds(240),
+                    "the end of the demo day");
+            assertTrue(console.contains("DEMO: the simulated day is played up to 07:00; the clock stays there"),
+                    console);
+            assertTrue(console.contains("Web console: http://127.0.0.1:"), "the bound address is said: " + console);
+            String day = LocalDate.now(ZoneOffset.UTC) + "T07:00:00Z";
+            String time = ask(tinysep, "tinysep:time");
+            assertTrue(time.contains("mode       EXTERNAL") && time.contains("now        " + day), time);
+            Thread.sleep(5_000); // no TICK comes any more: the clock is held, it neither runs nor jumps back
+            time = ask(tinysep, "tinysep:time");
+            assertTrue(time.contains("mode       EXTERNAL") && time.contains("now        " + day), time);
+            time = ask(tinysep, "tinysep:time real");
+            assertTrue(time.contains("mode       REAL"), time);
+            assertFalse(time.contains("now        " + day), time);
+            tinysep.type("stop 0");
+            assertEquals(0, tinysep.waitFor(Duration.ofSeconds(60)), tinysep.output());
+            assertFalse(tinysep.output().contains("FAILED"), tinysep.output());
+        }
+    }
+
+    private static String ask(ShellProcess tinysep, String command) throws Exception {
+        int mark = tinysep.length();
+        tinysep.type(command);
+        String since = tinysep.await(mark, s -> s.contains(PROMPT), Duration.ofSeconds(60), "the answer to " + command);
+        return since.substring(0, since.indexOf(PROMPT));
+    }
+}
