@@ -52,7 +52,11 @@ class DemoDayIT {
             assertTrue(console.contains("DEMO: the simulated day is played up to 07:00; the clock stays there"),
                     console);
             assertTrue(console.contains("Web console: http://127.0.0.1:"), "the bound address is said: " + console);
-            String day = LocalDate.now(ZoneOffset.UTC) + "T07:00:00Z";
+            // the simulator plays the platform's day, or the next one once its 06:30 has passed (UTC)
+            java.time.LocalDateTime now = java.time.LocalDateTime.now(ZoneOffset.UTC);
+            LocalDate date = now.toLocalTime().isBefore(java.time.LocalTime.of(6, 30)) ? now.toLocalDate()
+                    : now.toLocalDate().plusDays(1);
+            String day = date + "T07:00:00Z";
             String time = ask(tinysep, "tinysep:time");
             assertTrue(time.contains("mode       EXTERNAL") && time.contains("now        " + day), time);
             Thread.sleep(5_000); // no TICK comes any more: the clock is held, it neither runs nor jumps back
