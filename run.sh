@@ -19,7 +19,7 @@ if [[ "${SKIP_BUILD:-0}" != "1" ]] && needs_build; then
   scripts/install-deps.sh
   # one line per module as Maven builds it; the whole log: target/build.log
   mkdir -p target
-  echo "Building TinySEP (mvn -B -DskipTests package, about 2 minutes on a 2-core machine; log: target/build.log;"
+  echo "Building TinySEP (mvn -B -DskipTests package, a few minutes on a 2-core machine; log: target/build.log;"
   echo "  SKIP_BUILD=1 ./run.sh starts without building)"
   build_start=$SECONDS
   set +e
