@@ -22,6 +22,7 @@ if [[ "${SKIP_BUILD:-0}" != "1" ]] && needs_build; then
   echo "Building TinySEP (mvn -B -DskipTests package, a few minutes on a 2-core machine; log: target/build.log;"
   echo "  SKIP_BUILD=1 ./run.sh starts without building)"
   build_start=$SECONDS
+  touch target/build.stamp.next # sources changed while Maven runs are newer than it: the next start builds again
   set +e
   mvn -B -DskipTests package 2>&1 | tee target/build.log \
     | sed -un 's/^\[INFO\] Building \(.*\) [0-9][^ ]* *\[\([0-9]*\/[0-9]*\)\]$/  [\2] \1/p'
@@ -32,7 +33,7 @@ if [[ "${SKIP_BUILD:-0}" != "1" ]] && needs_build; then
     echo "Build failed (mvn exit code $build_status); the whole log: target/build.log" >&2
     exit "$build_status"
   fi
-  touch target/build.stamp
+  mv -f target/build.stamp.next target/build.stamp
   echo "Built in $((SECONDS - build_start)) s"
 elif [[ "${SKIP_BUILD:-0}" != "1" ]]; then
   echo "No source changed since the last build (target/build.stamp): not building (FORCE_BUILD=1 builds anyway)"
