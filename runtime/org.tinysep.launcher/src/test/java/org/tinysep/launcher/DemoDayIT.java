@@ -49,6 +49,7 @@ class DemoDayIT {
             String console = tinysep.await(0, s -> s.contains("DEMO: the simulated day is played")
                     || s.contains("DEMO: the demo day was NOT sent") || s.contains("FAILED"), Duration.ofSeconds(240),
                     "the end of the demo day");
+            System.out.println("=== the console of a demo start ===\n" + console);
             assertTrue(console.contains("DEMO: the simulated day is played up to 07:00; the clock stays there"),
                     console);
             assertTrue(console.contains("Web console: http://127.0.0.1:"), "the bound address is said: " + console);
@@ -56,7 +57,7 @@ class DemoDayIT {
             java.time.LocalDateTime now = java.time.LocalDateTime.now(ZoneOffset.UTC);
             LocalDate date = now.toLocalTime().isBefore(java.time.LocalTime.of(6, 30)) ? now.toLocalDate()
                     : now.toLocalDate().plusDays(1);
-            String day = date + "T07:00:00Z";
+            String day = date + "T06:59:59Z"; // the last second the span 06:30-07:00 plays
             String time = ask(tinysep, "tinysep:time");
             assertTrue(time.contains("mode       EXTERNAL") && time.contains("now        " + day), time);
             Thread.sleep(5_000); // no TICK comes any more: the clock is held, it neither runs nor jumps back
