@@ -38,6 +38,13 @@ class DemoDayIT {
                 Files.copy(f, dist.resolve("etc").resolve(f.getFileName()));
             }
         }
+        // ports nobody holds now (on a shared machine another TinySEP may hold the shipped ones: then the demo would
+        // rightly refuse, DemoFlatScriptTest)
+        Path etc = dist.resolve("etc");
+        Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + freeUdp() + "\nbindAddress=127.0.0.1\n");
+        Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"),
+                "udpPort=" + freeUdp() + "\nudpBindAddress=127.0.0.1\n");
+        Files.writeString(etc.resolve("org.tinysep.timecontroller.cfg"), "syncPort=" + freeUdp() + "\n");
         Files.copy(REPO.resolve("run.sh"), root.resolve("run.sh"));
         Files.createDirectories(root.resolve("scripts"));
         Files.copy(REPO.resolve("scripts/demo-flat.sh"), root.resolve("scripts/demo-flat.sh"));
@@ -69,6 +76,12 @@ class DemoDayIT {
             tinysep.type("stop 0");
             assertEquals(0, tinysep.waitFor(Duration.ofSeconds(60)), tinysep.output());
             assertFalse(tinysep.output().contains("FAILED"), tinysep.output());
+        }
+    }
+
+    private static int freeUdp() throws java.io.IOException {
+        try (java.net.DatagramSocket s = new java.net.DatagramSocket(0, java.net.InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
         }
     }
 
