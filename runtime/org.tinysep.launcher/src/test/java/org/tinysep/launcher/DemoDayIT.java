@@ -26,8 +26,8 @@ class DemoDayIT {
     @TempDir
     Path root;
 
-    @Test
-    void theClockStaysOnTheDemoDayAtTheGivenHour() throws Exception {
+    /** A scratch checkout: run.sh, the script, a copy of the distribution with free ports, the simulator. */
+    private void scratchCheckout() throws Exception {
         Path dist = root.resolve("runtime/org.tinysep.launcher/target/tinysep");
         new TestDistribution(dist, null);
         try (var shipped = Files.list(Path.of("src/main/dist/etc"))) { // etc/ as shipped: the demo picks its ports
@@ -49,6 +49,11 @@ class DemoDayIT {
         Files.createDirectories(root.resolve("scripts"));
         Files.copy(REPO.resolve("scripts/demo-flat.sh"), root.resolve("scripts/demo-flat.sh"));
         Files.createSymbolicLink(root.resolve("simulator"), REPO.resolve("simulator"));
+    }
+
+    @Test
+    void theClockStaysOnTheDemoDayAtTheGivenHour() throws Exception {
+        scratchCheckout();
         Map<String, String> env = Map.of("SKIP_BUILD", "1", "TZ", "UTC", "TINYSEP_DEMO_FROM", "06:30",
                 "TINYSEP_DEMO_UNTIL", "07:00", "TINYSEP_DEMO_DIR", root.resolve("demo").toString(),
                 "TINYSEP_VAR", root.resolve("var").toString());
@@ -77,6 +82,40 @@ class DemoDayIT {
             assertEquals(0, tinysep.waitFor(Duration.ofSeconds(60)), tinysep.output());
             assertFalse(tinysep.output().contains("FAILED"), tinysep.output());
         }
+    }
+
+    @Test
+    void stoppingThePlatformEarlyStopsTheSimulatorWithIt() throws Exception {
+        scratchCheckout();
+        Map<String, String> env = Map.of("SKIP_BUILD", "1", "TZ", "UTC", "TINYSEP_DEMO_FROM", "00:00",
+                "TINYSEP_DEMO_UNTIL", "24:00", "TINYSEP_DEMO_DIR", root.resolve("demo").toString(),
+                "TINYSEP_VAR", root.resolve("var").toString());
+        try (ShellProcess tinysep = new ShellProcess("./run.sh", root, env)) {
+            tinysep.await(0, s -> s.contains(PROMPT), Duration.ofSeconds(180), "the shell prompt");
+            // the simulator is running (or about to): its log names it
+            Path log = root.resolve("demo/simulator.log");
+            long deadline = System.nanoTime() + Duration.ofSeconds(60).toNanos();
+            while (!(Files.exists(log) && Files.readString(log).contains("platform time")) && System.nanoTime() < deadline) {
+                Thread.sleep(200);
+            }
+            assertTrue(simulatorRunning(), "the simulator runs during the demo day");
+            tinysep.type("stop 0");
+            assertEquals(0, tinysep.waitFor(Duration.ofSeconds(60)), tinysep.output());
+            deadline = System.nanoTime() + Duration.ofSeconds(10).toNanos();
+            while (simulatorRunning() && System.nanoTime() < deadline) {
+                Thread.sleep(200);
+            }
+            assertFalse(simulatorRunning(), "the simulator stopped with the platform");
+            Thread.sleep(3_000);
+            assertFalse(tinysep.output().contains("FAILED") || tinysep.output().contains("NOT sent"), tinysep.output());
+        }
+    }
+
+    /** @return whether a simulator of this test's demo (its key file on the command line) is running */
+    private boolean simulatorRunning() {
+        String key = root.resolve("demo/var/sync.key").toString();
+        return ProcessHandle.allProcesses().anyMatch(p -> p.info().commandLine().map(c -> c.contains(key)
+                && c.contains("org.tinysep.simulator")).orElse(false));
     }
 
     private static int freeUdp() throws java.io.IOException {
