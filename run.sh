@@ -102,7 +102,7 @@ elif "$repo/scripts/demo-flat.sh" wanted "$PWD"; then
   # a simulated day makes tens of thousands of events in seconds: keep them off the console (they are in the event
   # log: tinysep:events ..., the demo's log/); so are the texts of the mails the demo does not send (logger tinysep.mail):
   # the console gets one line per alert (tinysep:alerts, the web console and the event log have the rest)
-  demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn -Dorg.slf4j.simpleLogger.log.tinysep.mail=warn"
+  demo_opts="-Dorg.slf4j.simpleLogger.log.tinysep.events=warn -Dorg.slf4j.simpleLogger.log.tinysep.mail=error"
 else
   mkdir -p "$var"
 fi
