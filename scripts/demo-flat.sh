@@ -11,15 +11,23 @@
 #     start the platform with:  java -jar <dist>/tinysep.jar --home <demo>/home --var <demo>/var
 #     (a demo home, not a launcher option for another etc/: whatever finds etc/ through tinysep.home - FileInstall,
 #     tinysep:backup/restore, drivers-list paths - sees the demo's)
-#   scripts/demo-flat.sh simulate <dist> <demo> runs the simulated day against that platform (waits for it first),
-#       (up to TINYSEP_DEMO_WAIT=60 s), then BYE returns the platform clock to real time (TINYSEP_DEMO_FROM /
-#       TINYSEP_DEMO_UNTIL: the span, HH:MM)
+#     prepare keeps the demo's web passwords (<demo>/var/web/) across demo starts, and gives the demo free ports:
+#     the configured ones (AmICA 47011, Sun SPOT 47012, clock 47020 UDP; web 8080 TCP) when free, else free ones
+#     (written into <demo>/home/etc; <demo>/ports says which)
+#   scripts/demo-flat.sh ports-ours <demo> <pid> exit 0 when every UDP port the simulator will send to is bound by the
+#       process <pid> (the platform this run started); exit 3 with a plain message when another program holds one,
+#       or when <pid> has not bound them within TINYSEP_DEMO_WAIT (default 60) s
+#   scripts/demo-flat.sh simulate <dist> <demo> [<pid>] runs the simulated day against that platform (waits for it
+#       first, up to TINYSEP_DEMO_WAIT=60 s; with <pid>, refuses - exit 3 - unless the ports are that process's).
+#       TINYSEP_DEMO_FROM / TINYSEP_DEMO_UNTIL: the span, HH:MM (default 06:30-23:00). The platform's clock stays
+#       on the demo day afterwards (syncTimeout=0, no BYE) until the user says `tinysep:time real`;
+#       TINYSEP_DEMO_RELEASE=1 returns it to real time at the end instead
 #   scripts/demo-flat.sh forget-old-demo <dist> removes the etc/ files an older demo (before the demo had its own
 #       state) wrote into <dist>/etc: they froze the clock in EXTERNAL mode after the demo
 set -euo pipefail
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 flat="$repo/simulator/src/main/resources/flats/flat-a"
-usage="usage: demo-flat.sh wanted|forget-old-demo <dist> | prepare|simulate <dist> <demo folder>"
+usage="usage: demo-flat.sh wanted|forget-old-demo <dist> | prepare <dist> <demo folder> | simulate <dist> <demo folder> [<platform pid>] | ports-ours <demo folder> <platform pid>"
 cmd="${1:?$usage}"
 dist="${2:?$usage}"
 etc="$dist/etc"
@@ -45,6 +53,73 @@ cfg_value() { # cfg_value <file> <key> <default>: the key's value in a ConfigAdm
   echo "${v:-$3}"
 }
 
+set_key() { # set_key <cfg file> <key> <value>: the key's line replaced (or added)
+  local f="$1" tmp
+  tmp=$(mktemp "$f.XXXXXX")
+  { [ -f "$f" ] && grep -Ev "^[[:space:]]*$2[[:space:]]*[=:]" "$f"; echo "$2=$3"; } > "$tmp" || true
+  mv -f "$tmp" "$f"
+}
+
+port_busy() { # port_busy udp|tcp <port>: exit 0 when some socket on this machine is bound to it
+  local flag=-lun
+  [ "$1" = tcp ] && flag=-ltn
+  [ -n "$(ss -H $flag "sport = :$2" 2>/dev/null)" ]
+}
+
+free_port() { # free_port udp|tcp <preferred>: the preferred port when free, else a free one (from 20000 up)
+  local p="$2" tries=0
+  while port_busy "$1" "$p" || { [ "$1" = udp ] && port_busy tcp "$p"; }; do
+    p=$((20000 + RANDOM % 30000)); tries=$((tries + 1))
+    [ $tries -lt 200 ] || { echo "demo flat: no free $1 port found" >&2; return 1; }
+  done
+  echo "$p"
+}
+
+demo_ports() { # lines "udp <port> <what>" the simulator sends to
+  local e="$demo/home/etc"
+  echo "udp $(cfg_value "$e/org.tinysep.amica.busradio.udp.cfg" port 47011) AmICA bus radio"
+  echo "udp $(cfg_value "$e/org.tinysep.sunspot.busradio.cfg" udpPort 47012) Sun SPOT bus radio"
+  echo "udp $(cfg_value "$e/org.tinysep.timecontroller.cfg" syncPort 47020) platform clock (time sync)"
+}
+
+holder() { # holder udp|tcp <port>: "pid=N (name)" of the process bound to the port, or "" when none (or not visible)
+  local flag=-lunp
+  [ "$1" = tcp ] && flag=-ltnp
+  ss -H $flag "sport = :$2" 2>/dev/null | sed -n 's/.*users:(("\([^"]*\)",pid=\([0-9]*\).*/pid=\2 (\1)/p' | head -1
+}
+
+ports_ours() { # ports_ours <pid> <wait seconds>: 0 when every demo port is bound by <pid>; 3 with a message if not
+  local pid="$1" deadline=$((SECONDS + $2)) proto port what h
+  while :; do
+    local missing="" foreign=""
+    while read -r proto port what; do
+      h=$(holder "$proto" "$port")
+      if [ -z "$h" ]; then
+        if port_busy "$proto" "$port"; then foreign+="  $proto port $port ($what) is held by a program this user cannot see"$'\n'
+        else missing+="  $proto port $port ($what) is not bound yet"$'\n'; fi
+      elif [ "${h#pid=$pid }" = "$h" ]; then
+        foreign+="  $proto port $port ($what) is held by another program, $h, not by the platform started here (pid $pid)"$'\n'
+      fi
+    done < <(demo_ports)
+    if [ -n "$foreign" ]; then
+      printf 'demo flat: not sending the demo day: it would go to another program.\n%s' "$foreign" >&2
+      echo "  Stop that program, or start the demo again (./run.sh picks free ports when the configured ones are taken)." >&2
+      return 3
+    fi
+    [ -z "$missing" ] && return 0
+    if ! kill -0 "$pid" 2>/dev/null; then
+      echo "demo flat: the platform (pid $pid) has stopped: not sending the demo day" >&2
+      return 3
+    fi
+    if [ $SECONDS -ge $deadline ]; then
+      printf 'demo flat: not sending the demo day: the platform (pid %s) did not bind its ports within %s s.\n%s' \
+        "$pid" "$2" "$missing" >&2
+      return 3
+    fi
+    sleep 1
+  done
+}
+
 demo_folder() {
   demo="${3:?$usage}"
   case "$demo" in /*) ;; *) demo="$PWD/$demo" ;; esac
@@ -66,9 +141,17 @@ case "$cmd" in
       echo "demo flat: $demo exists and is not a demo folder (no $marker): not wiping it" >&2
       exit 1
     fi
+    kept=""
+    if [ -d "$demo/var/web" ]; then # the web passwords (hashes) survive demo starts
+      kept=$(mktemp -d "${TMPDIR:-/tmp}/tinysep-demo-web.XXXXXX")
+      cp -pr "$demo/var/web" "$kept/"
+    fi
     rm -rf "$demo"
     mkdir -p "$demo/home/etc" "$demo/home/deploy" "$demo/var"
     chmod 700 "$demo/var"
+    if [ -n "$kept" ]; then
+      cp -pr "$kept/web" "$demo/var/" && rm -rf "$kept"
+    fi
     echo "state of the TinySEP demo flat, thrown away at the next demo start (scripts/demo-flat.sh)" > "$demo/$marker"
     ln -s "$(cd "$dist" && pwd)/bundles" "$demo/home/bundles"
     for f in "$etc"/*; do
@@ -84,7 +167,7 @@ case "$cmd" in
       echo "placements=$(placements)"
     } > "$demo/home/etc/org.tinysep.houseinformation.placement.cfg"
     {
-      echo "# demo flat A: the simulator drives the clock; it returns to real time when the simulated day ends"
+      echo "# demo flat A: the simulator drives the clock; it stays on the demo day until tinysep:time real"
       echo "# (demo state, scripts/demo-flat.sh)"
       if [ -f "$etc/org.tinysep.timecontroller.cfg" ]; then # keep the user's port, address and key settings
         grep -Ev '^[[:space:]]*mode[[:space:]]*[=:]' "$etc/org.tinysep.timecontroller.cfg" || true
@@ -92,6 +175,20 @@ case "$cmd" in
       echo "mode=EXTERNAL"
       echo "syncKeyFile=$demo/var/sync.key"
     } > "$demo/home/etc/org.tinysep.timecontroller.cfg"
+    # the clock stays on the demo day after it is played (no return to real time after 120 s without a TICK)
+    set_key "$demo/home/etc/org.tinysep.timecontroller.cfg" syncTimeout 0
+    # free ports: the configured ones when nobody holds them, else others (the demo never sends to a stranger)
+    e="$demo/home/etc"
+    : > "$demo/ports"
+    for spec in "udp org.tinysep.amica.busradio.udp.cfg port 47011" "udp org.tinysep.sunspot.busradio.cfg udpPort 47012" \
+        "udp org.tinysep.timecontroller.cfg syncPort 47020" "tcp org.apache.felix.http.cfg org.osgi.service.http.port 8080"; do
+      read -r proto file key def <<< "$spec"
+      want=$(cfg_value "$e/$file" "$key" "$def")
+      got=$(free_port "$proto" "$want")
+      set_key "$e/$file" "$key" "$got"
+      echo "$proto $key=$got ($file)" >> "$demo/ports"
+      [ "$got" = "$want" ] || echo "DEMO: $proto port $want ($key, $file) is taken by another program; the demo uses $got"
+    done
     cp "$flat/house.xml" "$demo/var/house.xml"
     (umask 077 && od -An -N32 -tx1 /dev/urandom | tr -d ' \n' > "$demo/var/sync.key" && echo >> "$demo/var/sync.key") ;;
   simulate)
@@ -99,12 +196,22 @@ case "$cmd" in
     jar=$(ls "$repo"/simulator/target/org.tinysep.simulator-*.jar 2>/dev/null | grep -v -- '-sources\|-tests' | head -1)
     [ -n "$jar" ] || { echo "demo flat: simulator jar missing (build first)" >&2; exit 1; }
     demo_etc="$demo/home/etc"
-    sleep "${TINYSEP_DEMO_DELAY:-8}" # let the platform start and read its etc/
+    if [ -n "${4:-}" ]; then # the platform's pid: send only to ports it holds itself
+      ports_ours "$4" "${TINYSEP_DEMO_WAIT:-60}" || exit 3
+      sleep 2 # its drivers have bound: a moment for the rest of the start
+    else
+      sleep "${TINYSEP_DEMO_DELAY:-8}" # let the platform start and read its etc/
+    fi
+    release=()
+    [ "${TINYSEP_DEMO_RELEASE:-0}" = "1" ] && release=(--release-clock)
     exec java -jar "$jar" --lockstep --wait-platform "${TINYSEP_DEMO_WAIT:-60}" \
       --from "${TINYSEP_DEMO_FROM:-06:30}" --until "${TINYSEP_DEMO_UNTIL:-23:00}" \
-      --progress 120 --release-clock --sync-key "$demo/var/sync.key" \
+      --progress 120 ${release[@]+"${release[@]}"} --sync-key "$demo/var/sync.key" \
       --amica-port "$(cfg_value "$demo_etc/org.tinysep.amica.busradio.udp.cfg" port 47011)" \
       --sunspot-port "$(cfg_value "$demo_etc/org.tinysep.sunspot.busradio.cfg" udpPort 47012)" \
       --sync-port "$(cfg_value "$demo_etc/org.tinysep.timecontroller.cfg" syncPort 47020)" ;;
+  ports-ours)
+    demo="$dist"; case "$demo" in /*) ;; *) demo="$PWD/$demo" ;; esac
+    ports_ours "${3:?$usage}" "${TINYSEP_DEMO_WAIT:-60}" ;;
   *) echo "$usage" >&2; exit 2 ;;
 esac

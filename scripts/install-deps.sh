@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the build and tests need beyond the JDK and Maven. Idempotent; safe to run on every build.
 #   java, maven  - build
+#   iproute2     - ss: the demo checks which process holds its UDP ports (scripts/demo-flat.sh ports-ours)
 #   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
 #   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
 #   gammu-smsd   - SMS daemon driving a GSM modem; its dummy modem for the SMS channel tests (docs/alerts-by-phone.md)
@@ -10,6 +11,7 @@ need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v mvn >/dev/null || need+=(maven)
 command -v socat >/dev/null || need+=(socat)
+command -v ss >/dev/null || need+=(iproute2)
 command -v gammu-smsd >/dev/null || [ -x /usr/bin/gammu-smsd ] || need+=(gammu-smsd)
 command -v chromium >/dev/null || need+=(chromium)
 command -v chromedriver >/dev/null || need+=(chromium-driver)

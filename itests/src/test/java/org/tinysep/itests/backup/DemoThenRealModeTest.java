@@ -71,8 +71,11 @@ public class DemoThenRealModeTest {
             assertTrue("a local user without the key cannot drive the clock",
                     udp(sync, "TICK 1 2030-01-01T00:00:00Z").startsWith("ERROR 1 unauthorized "));
 
+            assertTrue("the demo's clock stays on the demo day unless released",
+                    Files.readString(demo.resolve("home/etc/org.tinysep.timecontroller.cfg")).contains("syncTimeout=0"));
+            // TINYSEP_DEMO_RELEASE=1: BYE at the end (without it the clock is held on the demo day: DemoDayIT)
             Result simulated = script(Map.of("TINYSEP_DEMO_DELAY", "0", "TINYSEP_DEMO_FROM", "06:00",
-                    "TINYSEP_DEMO_UNTIL", "06:03"), "simulate", home, demo);
+                    "TINYSEP_DEMO_UNTIL", "06:03", "TINYSEP_DEMO_RELEASE", "1"), "simulate", home, demo);
             assertEquals(simulated.output, 0, simulated.exit);
             assertTrue(simulated.output, simulated.output.contains("BYE"));
             time = String.join("\n", p.command("tinysep:time"));

@@ -42,8 +42,11 @@ public final class Main {
             System.setProperty(JSERIALCOMM_RANDOM_NAME, "true");
         }
         Options options;
+        Optional<String> passwordRole;
         try {
-            options = Options.parse(Arrays.asList(args), System.getenv(), Options.defaultHome(launcherJar()));
+            passwordRole = WebPassword.role(Arrays.asList(args));
+            options = Options.parse(WebPassword.rest(Arrays.asList(args)), System.getenv(),
+                    Options.defaultHome(launcherJar()));
         } catch (IllegalArgumentException e) {
             System.err.println(e.getMessage());
             System.err.println(Options.USAGE);
@@ -52,6 +55,10 @@ public final class Main {
         }
         if (options.help()) {
             System.out.println(Options.USAGE);
+            return;
+        }
+        if (passwordRole.isPresent()) {
+            System.exit(WebPassword.run(passwordRole.get(), options.var()));
             return;
         }
         if (options.supervise()) {
@@ -99,6 +106,7 @@ public final class Main {
             StartReport report = launcher.start();
             report.lines().forEach(System.out::println);
             System.out.println(launcher.alertsLine(ALERTS_WAIT));
+            System.out.println(WebConsoleLine.line(launcher.framework().getBundleContext(), ALERTS_WAIT));
             System.out.flush();
             beating[0] = new Heartbeat(new LivenessProbe(launcher.framework()), heartbeat, systemd,
                     Heartbeat.interval(SdNotify.watchdogInterval(System.getenv())));

@@ -38,7 +38,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
 
     /** The usage text printed by {@code --help} and on a bad argument. */
     public static final String USAGE = String.join(System.lineSeparator(),
-            "Usage: java -jar tinysep.jar [--daemon] [--supervise] [--home DIR] [--var DIR] [--help]",
+            "Usage: java -jar tinysep.jar [--daemon] [--supervise] [--home DIR] [--var DIR] [--web-password ROLE] [--help]",
             "  --daemon, -d   no interactive shell; run until SIGTERM (also: TINYSEP_DAEMON=1)",
             "  --home DIR     distribution directory (default: -Dtinysep.home, else the folder of tinysep.jar,",
             "                 else the current directory)",
@@ -46,6 +46,9 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
             "                 -Dtinysep.var, else <home>/var)",
             "  --supervise    run TinySEP as a child process (daemon) and restart it when it ends with an error or",
             "                 stops responding (docs/operations.md)",
+            "  --web-password installer|caregiver",
+            "                 set that web console password (asked on the terminal, or one line on standard input)",
+            "                 and exit: the way in without the shell, e.g. for --daemon",
             "  --help, -h     print this text");
 
     /**

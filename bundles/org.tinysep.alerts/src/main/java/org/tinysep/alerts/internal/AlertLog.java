@@ -10,7 +10,11 @@ import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.LogQuery;
 
-/** The alert service's event-log entries (origin {@value #ORIGIN}), also written to SLF4J. */
+/**
+ * The alert service's event-log entries (origin {@value #ORIGIN}). The console (SLF4J at INFO) gets one line per
+ * alert, when it is raised ({@link #raised}); acknowledgements, all clears and the rest go to the event log only
+ * (SLF4J at DEBUG), so the console stays quiet (issue 32 item 5). Problems are warnings on both.
+ */
 final class AlertLog {
 
     static final String ORIGIN = "Alerts";
@@ -28,8 +32,15 @@ final class AlertLog {
         }
     }
 
+    /** A new alert: the one console line it gets, and an event-log entry. */
+    void raised(String text) {
+        LOG.info("Alerts: {} (tinysep:alerts shows it; repeats and the all clear go to the event log)", text);
+        record(EventKind.DEVICE_EVENT, text);
+    }
+
+    /** Anything else that happens to an alert: the event log only (the console at DEBUG). */
     void event(String text) {
-        LOG.info("Alerts: {}", text);
+        LOG.debug("Alerts: {}", text);
         record(EventKind.DEVICE_EVENT, text);
     }
 

@@ -113,7 +113,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
                 return same.get();
             }
             a = Copies.raised(book.nextId(), r);
-            log.event("alert " + a.id() + " raised (" + a.kind().name().toLowerCase() + "): " + a.subject());
+            log.raised("alert " + a.id() + " raised (" + a.kind().name().toLowerCase() + "): " + a.subject());
             book.put(a);
             a = advance(a, clock.now());
         }

@@ -90,7 +90,7 @@ final class LogFolder {
                 try {
                     Files.deleteIfExists(f);
                     deleted++;
-                    LOG.info("Deleted log file {} ({})", f.getFileName(), tooMany ? "size bound" : "retention");
+                    LOG.debug("Deleted log file {} ({})", f.getFileName(), tooMany ? "size bound" : "retention");
                 } catch (IOException e) {
                     LOG.warn("Cannot delete log file {}: {}", f, e.toString());
                 }

@@ -1,0 +1,72 @@
+package org.tinysep.launcher;
+
+import java.time.Duration;
+import java.util.Collection;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+
+/**
+ * The banner's line on the web console (issue 32 item 2): its address is said only once the HTTP server has bound,
+ * read from the endpoint the HTTP Service Runtime announces ({@code osgi.http.endpoint}), so a port another program
+ * holds is never announced as TinySEP's console.
+ */
+final class WebConsoleLine {
+
+    static final String ENDPOINT = "osgi.http.endpoint";
+    static final String HOW_TO_GET_IN = "set a password first: tinysep:web-password installer <password> in the shell,"
+            + " or without a shell: ./run.sh --web-password installer (or caregiver)";
+
+    private WebConsoleLine() {
+    }
+
+    /** @return {@code Web console: <address> - …} once bound, else a warning that it did not start */
+    static String line(BundleContext context, Duration wait) throws InterruptedException {
+        long end = System.nanoTime() + wait.toNanos();
+        String endpoint = endpoint(context);
+        while (endpoint == null && System.nanoTime() < end) {
+            Thread.sleep(50);
+            endpoint = endpoint(context);
+        }
+        return describe(endpoint);
+    }
+
+    static String describe(String endpoint) {
+        if (endpoint == null) {
+            return "WARNING: the web console did not start (its port, org.osgi.service.http.port in "
+                    + "etc/org.apache.felix.http.cfg, may be held by another program; the log says why)";
+        }
+        return "Web console: " + endpoint + " - " + HOW_TO_GET_IN;
+    }
+
+    private static String endpoint(BundleContext context) {
+        try {
+            ServiceReference<?>[] refs = context.getAllServiceReferences(null, "(" + ENDPOINT + "=*)");
+            if (refs == null) {
+                return null;
+            }
+            for (ServiceReference<?> ref : refs) {
+                String first = first(ref.getProperty(ENDPOINT));
+                if (first != null) {
+                    return first;
+                }
+            }
+            return null;
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static String first(Object value) {
+        if (value instanceof String s && !s.isBlank()) {
+            return s;
+        }
+        if (value instanceof String[] a && a.length > 0) {
+            return a[0];
+        }
+        if (value instanceof Collection<?> c && !c.isEmpty()) {
+            return String.valueOf(c.iterator().next());
+        }
+        return null;
+    }
+}

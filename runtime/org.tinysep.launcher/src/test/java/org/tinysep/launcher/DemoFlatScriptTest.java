@@ -1,0 +1,128 @@
+package org.tinysep.launcher;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Issue 32 item 2 with the real script and real UDP sockets on 127.0.0.1: {@code scripts/demo-flat.sh} sends the
+ * demo day only to ports the platform it started holds; a port another process holds makes it refuse (exit 3, in
+ * plain words), and {@code prepare} gives the demo a free port instead of a taken one.
+ */
+class DemoFlatScriptTest {
+
+    static final Path SCRIPT = Path.of("").toAbsolutePath().resolve("../../scripts/demo-flat.sh").normalize();
+
+    @TempDir
+    Path tmp;
+
+    record Result(int exit, String output) {
+    }
+
+    static Result script(Map<String, String> env, String... args) throws IOException, InterruptedException {
+        List<String> line = new ArrayList<>(List.of("bash", SCRIPT.toString()));
+        line.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(line).redirectErrorStream(true);
+        pb.environment().putAll(env);
+        Process p = pb.start();
+        byte[] out = p.getInputStream().readAllBytes();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "demo-flat.sh " + String.join(" ", args) + " ended");
+        return new Result(p.exitValue(), new String(out, StandardCharsets.UTF_8));
+    }
+
+    /** A demo folder whose etc/ names the given UDP ports (AmICA, Sun SPOT, clock). */
+    private Path demo(int amica, int sunSpot, int sync) throws IOException {
+        Path etc = Files.createDirectories(tmp.resolve("demo/home/etc"));
+        Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + amica + "\n");
+        Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"), "udpPort=" + sunSpot + "\n");
+        Files.writeString(etc.resolve("org.tinysep.timecontroller.cfg"), "mode=EXTERNAL\nsyncPort=" + sync + "\n");
+        return tmp.resolve("demo");
+    }
+
+    private static DatagramSocket bound() throws IOException {
+        return new DatagramSocket(0, InetAddress.getLoopbackAddress());
+    }
+
+    @Test
+    void portsHeldByThePlatformItselfAreOurs() throws Exception {
+        try (DatagramSocket a = bound(); DatagramSocket s = bound(); DatagramSocket c = bound()) {
+            Path demo = demo(a.getLocalPort(), s.getLocalPort(), c.getLocalPort());
+            long self = ProcessHandle.current().pid(); // this JVM plays the platform
+            Result r = script(Map.of("TINYSEP_DEMO_WAIT", "5"), "ports-ours", demo.toString(), String.valueOf(self));
+            assertEquals(0, r.exit(), r.output());
+        }
+    }
+
+    @Test
+    void aPortTakenByAnotherProcessIsRefusedWithExitThree() throws Exception {
+        Process platform = new ProcessBuilder("sleep", "60").start(); // the "platform": holds none of the ports
+        try (DatagramSocket a = bound(); DatagramSocket s = bound(); DatagramSocket c = bound()) {
+            Path demo = demo(a.getLocalPort(), s.getLocalPort(), c.getLocalPort());
+            Result r = script(Map.of("TINYSEP_DEMO_WAIT", "5"), "ports-ours", demo.toString(),
+                    String.valueOf(platform.pid()));
+            assertEquals(3, r.exit(), r.output());
+            assertTrue(r.output().contains("not sending the demo day")
+                    && r.output().contains("udp port " + a.getLocalPort() + " (AmICA bus radio) is held by another program"),
+                    r.output());
+            // simulate refuses the same way, before it starts the simulator
+            Result sim = script(Map.of("TINYSEP_DEMO_WAIT", "5"), "simulate", tmp.resolve("dist").toString(),
+                    demo.toString(), String.valueOf(platform.pid()));
+            assertEquals(3, sim.exit(), sim.output());
+        } finally {
+            platform.destroy();
+        }
+    }
+
+    @Test
+    void aPlatformThatNeverBindsIsRefusedToo() throws Exception {
+        Process platform = new ProcessBuilder("sleep", "60").start();
+        try {
+            int free;
+            try (DatagramSocket probe = bound()) {
+                free = probe.getLocalPort();
+            }
+            Path demo = demo(free, free, free);
+            Result r = script(Map.of("TINYSEP_DEMO_WAIT", "2"), "ports-ours", demo.toString(),
+                    String.valueOf(platform.pid()));
+            assertEquals(3, r.exit(), r.output());
+            assertTrue(r.output().contains("did not bind its ports within 2 s"), r.output());
+        } finally {
+            platform.destroy();
+        }
+    }
+
+    @Test
+    void prepareTakesAFreePortWhenTheConfiguredOneIsTaken() throws Exception {
+        Path dist = tmp.resolve("dist");
+        Files.createDirectories(dist.resolve("bundles"));
+        Path etc = Files.createDirectories(dist.resolve("etc"));
+        try (DatagramSocket taken = bound()) {
+            Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"),
+                    "port=" + taken.getLocalPort() + "\nbindAddress=127.0.0.1\n");
+            Result r = script(Map.of(), "prepare", dist.toString(), tmp.resolve("demo").toString());
+            assertEquals(0, r.exit(), r.output());
+            assertTrue(r.output().contains("udp port " + taken.getLocalPort()) && r.output().contains("taken"),
+                    r.output());
+            String cfg = Files.readString(tmp.resolve("demo/home/etc/org.tinysep.amica.busradio.udp.cfg"));
+            assertTrue(cfg.contains("bindAddress=127.0.0.1"), cfg);
+            String port = cfg.lines().filter(l -> l.startsWith("port=")).findFirst().orElseThrow();
+            assertNotEquals("port=" + taken.getLocalPort(), port, cfg);
+            String clock = Files.readString(tmp.resolve("demo/home/etc/org.tinysep.timecontroller.cfg"));
+            assertTrue(clock.contains("syncTimeout=0") && clock.contains("mode=EXTERNAL"),
+                    "the clock stays on the demo day: " + clock);
+        }
+    }
+}
