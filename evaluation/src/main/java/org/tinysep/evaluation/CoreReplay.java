@@ -148,13 +148,16 @@ final class CoreReplay {
         return lastAlert != null && lastAlert.after().equals(last) ? lastAlert : null;
     }
 
-    /** The defaults, or a sweep's: {@code -Dfloor=<minutes> -Dmargin=<x> -Dpad=<minutes> -DminDays=<n>}. */
+    /**
+     * The defaults, or a sweep's: {@code -Dfloor=<minutes> -Dmargin=<x> -Dpad=<minutes> -DminDays=<n>
+     * -DminPeriods=<n>} (the last: {@code learnMinPeriodsToShorten}).
+     */
     private static LearningSettings settings() {
         LearningSettings d = LearningSettings.defaults();
         return new LearningSettings(Integer.getInteger("minDays", d.minDays()), d.historyDays(),
                 Double.parseDouble(System.getProperty("margin", Double.toString(d.margin()))),
                 java.time.Duration.ofMinutes(Long.getLong("pad", d.pad().toMinutes())),
                 java.time.Duration.ofMinutes(Long.getLong("floor", d.floor().toMinutes())), d.ceiling(),
-                d.halfWindow());
+                d.halfWindow(), Integer.getInteger("minPeriods", d.minPeriodsToShorten()));
     }
 }
