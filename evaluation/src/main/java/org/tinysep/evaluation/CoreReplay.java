@@ -34,12 +34,16 @@ final class CoreReplay {
     /** {@code -Dseated=false}: a seat mat turning ON is not told apart (session 20's detector), for comparison. */
     static final boolean SEATED = !"false".equals(System.getProperty("seated"));
 
+    /** {@code -DupFromBed=false}: a bed mat turning OFF does not end sleep (before issue 28), for comparison. */
+    static final boolean UP_FROM_BED = !"false".equals(System.getProperty("upFromBed"));
+
     /** An activity as the detector sees it. */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
         Sighting sighting() {
             boolean on = what.endsWith(" on");
             return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
-                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED);
+                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED,
+                    !on && what.startsWith("Bed") && UP_FROM_BED);
         }
     }
 
