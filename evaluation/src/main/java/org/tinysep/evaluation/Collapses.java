@@ -58,4 +58,38 @@ final class Collapses {
         out.sort(null);
         return out;
     }
+
+    /** A collapse model (issue 28 item 3). */
+    enum Model {
+        /** a moment drawn uniformly over the awake at-home time */
+        UNIFORM,
+        /** "a fall while moving": at a recorded activity drawn uniformly over the awake at-home events */
+        MOVING
+    }
+
+    /** How long after the drawn activity a "moving" collapse happens: the quiet period starts at the collapse. */
+    static final Duration AFTER_ACTIVITY = Duration.ofSeconds(1);
+
+    /**
+     * "A fall while moving": {@code n} recorded activities drawn uniformly (with replacement, seeded) among those
+     * that lie in the awake at-home {@code candidates}; each collapse is {@link #AFTER_ACTIVITY} after its activity.
+     *
+     * @return the collapse moments in time order
+     */
+    static List<LocalDateTime> drawAtActivities(List<LocalDateTime> activities, List<Interval> candidates, int n,
+            long seed) {
+        List<LocalDateTime> awake = activities.stream().filter(t -> candidates.stream()
+                .anyMatch(i -> !t.isBefore(i.start()) && t.isBefore(i.end()))).toList();
+        if (awake.isEmpty()) {
+            throw new IllegalArgumentException("no recorded activity at home and awake in the test time to place "
+                    + "\"moving\" collapses at");
+        }
+        Random random = new Random(seed);
+        List<LocalDateTime> out = new ArrayList<>();
+        for (int k = 0; k < n; k++) {
+            out.add(awake.get(random.nextInt(awake.size())).plus(AFTER_ACTIVITY));
+        }
+        out.sort(null);
+        return out;
+    }
 }

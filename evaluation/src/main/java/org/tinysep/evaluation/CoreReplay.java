@@ -34,12 +34,16 @@ final class CoreReplay {
     /** {@code -Dseated=false}: a seat mat turning ON is not told apart (session 20's detector), for comparison. */
     static final boolean SEATED = !"false".equals(System.getProperty("seated"));
 
+    /** {@code -DupFromBed=false}: a bed mat turning OFF does not end sleep (before issue 28), for comparison. */
+    static final boolean UP_FROM_BED = !"false".equals(System.getProperty("upFromBed"));
+
     /** An activity as the detector sees it. */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
         Sighting sighting() {
             boolean on = what.endsWith(" on");
             return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
-                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED);
+                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED,
+                    !on && what.startsWith("Bed") && UP_FROM_BED);
         }
     }
 
@@ -148,13 +152,16 @@ final class CoreReplay {
         return lastAlert != null && lastAlert.after().equals(last) ? lastAlert : null;
     }
 
-    /** The defaults, or a sweep's: {@code -Dfloor=<minutes> -Dmargin=<x> -Dpad=<minutes> -DminDays=<n>}. */
+    /**
+     * The defaults, or a sweep's: {@code -Dfloor=<minutes> -Dmargin=<x> -Dpad=<minutes> -DminDays=<n>
+     * -DminPeriods=<n>} (the last: {@code learnMinPeriodsToShorten}).
+     */
     private static LearningSettings settings() {
         LearningSettings d = LearningSettings.defaults();
         return new LearningSettings(Integer.getInteger("minDays", d.minDays()), d.historyDays(),
                 Double.parseDouble(System.getProperty("margin", Double.toString(d.margin()))),
                 java.time.Duration.ofMinutes(Long.getLong("pad", d.pad().toMinutes())),
                 java.time.Duration.ofMinutes(Long.getLong("floor", d.floor().toMinutes())), d.ceiling(),
-                d.halfWindow());
+                d.halfWindow(), Integer.getInteger("minPeriods", d.minPeriodsToShorten()));
     }
 }

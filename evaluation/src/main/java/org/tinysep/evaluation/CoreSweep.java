@@ -18,30 +18,94 @@ import java.util.TreeMap;
  */
 public final class CoreSweep {
 
+    /** {@code -Dverbose=true}: every false alarm, collapse alerted before it happened, and missed collapse. */
+    static final boolean VERBOSE = Boolean.getBoolean("verbose");
+
     private CoreSweep() {
     }
 
-    public static void main(String[] args) throws Exception {
-        Path repo = Path.of(System.getProperty("tinysep.repo", "."));
-        Home home = Home.load(args[0], repo.resolve("data/ordonez"),
-                repo.resolve("evaluation/target/core"));
-        String variant = System.getProperty("variant", "");
-        if (!variant.isEmpty()) {
-            Home other = Home.load(args[0].equalsIgnoreCase("A") ? "B" : "A",
-                    repo.resolve("data/ordonez"), repo.resolve("evaluation/target/core"));
-            home = Variants.apply(variant, home, other);
-        }
-        String split = args.length > 1 ? args[1] : "half";
-        int k = split.equals("cv") ? Integer.parseInt(args[2]) : 0;
-        int n = Integer.parseInt(args.length > (k > 0 ? 3 : 2) ? args[k > 0 ? 3 : 2] : "200");
-        for (boolean learned : new boolean[] {true, false}) {
-            System.out.println("=== " + home.name() + " " + (learned ? "LEARNED" : "THESIS") + " split " + split
-                    + (k > 0 ? " " + k : ""));
-            report(home, learned, k, n);
-        }
+    /** One home, collapse model and detector: the figures of the summary table. */
+    record Figures(String home, String model, boolean learned, double faDay, double faNight, Long medianDay,
+            Long medianNight, Long p95, double detected, int collapses) {
     }
 
-    static void report(Home home, boolean learned, int k, int n) {
+    /**
+     * {@code CoreSweep [--model uniform|moving|both] [--split half|cvK] [--collapses N] HOME...}, HOME = A, B, a
+     * folder, or a derived home {@code A:nomotion}, {@code B:two} ({@link Variants}); the old form
+     * {@code CoreSweep A [half|cv K] [N]} still works. Prints one block per home, model and detector, then a
+     * markdown table of all and a summary row (worst and median home).
+     */
+    public static void main(String[] args) throws Exception {
+        Path repo = Path.of(System.getProperty("tinysep.repo", "."));
+        List<String> homes = new ArrayList<>();
+        List<Collapses.Model> models = List.of(Collapses.Model.UNIFORM);
+        int k = 0;
+        int n = 200;
+        for (int i = 0; i < args.length; i++) {
+            switch (args[i]) {
+            case "--engine" -> i++; // core, from evaluate.sh
+            case "--model" -> models = models(args[++i]);
+            case "--split" -> k = args[++i].startsWith("cv") ? Integer.parseInt(args[i].substring(2)) : 0;
+            case "--collapses" -> n = Integer.parseInt(args[++i]);
+            case "half" -> k = 0;
+            case "cv" -> k = Integer.parseInt(args[++i]);
+            default -> {
+                if (args[i].matches("\\d+") && !homes.isEmpty()) {
+                    n = Integer.parseInt(args[i]);
+                } else if (args[i].startsWith("--")) {
+                    throw new IllegalArgumentException("unknown option " + args[i]);
+                } else {
+                    homes.add(args[i]);
+                }
+            }
+            }
+        }
+        if (homes.isEmpty()) {
+            homes = List.of("A", "B");
+        }
+        List<Figures> all = new ArrayList<>();
+        for (String spec : homes) {
+            Home home = load(spec, repo);
+            for (Collapses.Model m : models) {
+                for (boolean learned : new boolean[] {true, false}) {
+                    System.out.println("=== " + home.name() + " " + (learned ? "LEARNED" : "THESIS") + " model "
+                            + m.name().toLowerCase(java.util.Locale.ROOT) + " split " + (k > 0 ? "cv" + k : "half"));
+                    all.add(report(home, learned, k, n, m));
+                }
+            }
+        }
+        System.out.println();
+        System.out.println(CoreTable.markdown(all));
+    }
+
+    static List<Collapses.Model> models(String v) {
+        return switch (v) {
+        case "uniform" -> List.of(Collapses.Model.UNIFORM);
+        case "moving" -> List.of(Collapses.Model.MOVING);
+        case "both" -> List.of(Collapses.Model.UNIFORM, Collapses.Model.MOVING);
+        default -> throw new IllegalArgumentException("--model needs uniform, moving or both, not '" + v + "'");
+        };
+    }
+
+    /** A, B, a folder, or {@code <home>:<variant>} (variant nomotion or two; the other home is the other Ordonez). */
+    static Home load(String spec, Path repo) throws Exception {
+        String[] p = spec.split(":", 2);
+        Path ordonez = repo.resolve("data/ordonez");
+        Path work = repo.resolve("evaluation/target/core");
+        Home home = Home.load(p[0], ordonez, work);
+        String variant = p.length > 1 ? p[1] : System.getProperty("variant", "");
+        if (variant.isEmpty()) {
+            return home;
+        }
+        if (!variant.equals("nomotion") && !variant.equals("two")) {
+            throw new IllegalArgumentException("unknown derived home '" + variant + "' in " + spec
+                    + ": nomotion (motion sensors dropped) or two (a second resident)");
+        }
+        Home other = Home.load(p[0].equalsIgnoreCase("A") ? "B" : "A", ordonez, work);
+        return Variants.apply(variant, home, other);
+    }
+
+    static Figures report(Home home, boolean learned, int k, int n, Collapses.Model model) {
         CoreReplay core = new CoreReplay(home, learned);
         List<List<CoreFold>> folds = new ArrayList<>();
         folds.add(k == 0 ? List.of(CoreFold.half(home)) : CoreFold.cv(home, k));
@@ -79,11 +143,18 @@ public final class CoreSweep {
                 fa++;
                 faNight += night ? 1 : 0;
                 faRooms.merge(a.after().room() + (night ? " night" : " day"), 1, Integer::sum);
-                System.out.printf("  FA %s %s after %s, limit %s, quiet %s; %s%n", a.at(), a.after().room(),
-                        a.after().what(), a.limit(), gapAfter(test, a.after()), a.why());
+                if (VERBOSE) {
+                    System.out.printf("  FA %s %s after %s, limit %s, quiet %s; %s%n", a.at(), a.after().room(),
+                            a.after().what(), a.limit(), gapAfter(test, a.after()), a.why());
+                }
             }
             int share = (int) Math.round(n * f.share());
-            List<LocalDateTime> moments = Collapses.draw(f.candidates(home), Math.max(1, share), 1);
+            List<LocalDateTime> moments = model == Collapses.Model.UNIFORM
+                    ? Collapses.draw(f.candidates(home), Math.max(1, share), 1)
+                    : Collapses.drawAtActivities(everything.stream()
+                            .filter(x -> !x.what().startsWith("second resident's"))
+                            .map(x -> LocalDateTime.ofInstant(x.at(), ZoneOffset.UTC)).toList(),
+                            f.candidates(home), Math.max(1, share), 1);
             for (LocalDateTime c : moments) {
                 Instant ci = CoreReplay.at(c);
                 List<CoreReplay.Act> before = everything.stream().filter(a -> a.at().isBefore(ci)
@@ -111,11 +182,15 @@ public final class CoreSweep {
                         && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).findFirst().orElse(null);
                 if (early != null) {
                     already++;
-                    System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
-                            early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
+                    if (VERBOSE) {
+                        System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
+                                early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
+                    }
                 } else if (a == null) {
                     missed++;
-                    System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
+                    if (VERBOSE) {
+                        System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
+                    }
                 } else {
                     detected++;
                     int h = c.getHour();
@@ -129,6 +204,14 @@ public final class CoreSweep {
         System.out.printf("  collapses: detected %d/%d (%.1f %%), already alerted %d, missed %d; median delay day %s min"
                 + " night %s min%n", detected, total, 100.0 * detected / total, already, missed, median(dayDelays),
                 median(nightDelays));
+        List<Long> allDelays = new ArrayList<>(dayDelays);
+        allDelays.addAll(nightDelays);
+        allDelays.sort(null);
+        Long p95 = allDelays.isEmpty() ? null : allDelays.get(Math.min(allDelays.size() - 1,
+                (int) Math.ceil(0.95 * allDelays.size()) - 1));
+        return new Figures(home.name(), model.name().toLowerCase(java.util.Locale.ROOT), learned,
+                (fa - faNight) * 30 / days, faNight * 30 / days, median(dayDelays), median(nightDelays), p95,
+                total == 0 ? 0 : 100.0 * detected / total, total);
     }
 
     private static String gapAfter(List<CoreReplay.Act> acts, CoreReplay.Act a) {

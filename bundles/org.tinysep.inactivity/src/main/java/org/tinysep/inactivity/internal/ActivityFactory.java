@@ -103,7 +103,8 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         String what = source.kind().name().toLowerCase(Locale.ROOT);
         boolean inBed = present && source.kind() == PresenceKind.BED;
         boolean seated = present && source.kind() == PresenceKind.SEAT;
-        sink.accept(of(source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated));
+        boolean up = !present && source.kind() == PresenceKind.BED;
+        sink.accept(of(source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated, up));
     }
 
     private static String lower(OpenState s) {
@@ -120,14 +121,15 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
      * @param what      builds the description from the device's name, e.g. {@code n -> "movement by " + n}
      */
     private Activity of(String deviceUid, Function<String, String> what, Instant at) {
-        return of(deviceUid, what, at, false, false);
+        return of(deviceUid, what, at, false, false, false);
     }
 
-    private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated) {
+    private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated,
+            boolean upFromBed) {
         String name = directory.nameOf(deviceUid);
         String description = what.apply(name);
         Placed p = placed(deviceUid);
-        Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated), p.fixed(),
+        Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated, upFromBed), p.fixed(),
                 clock.get());
         return new Activity(p.uid(), p.name(), description, at, l.limit(), l.explanation());
     }

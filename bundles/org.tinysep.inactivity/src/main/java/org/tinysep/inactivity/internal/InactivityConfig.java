@@ -33,6 +33,10 @@ public @interface InactivityConfig {
     @AttributeDefinition(description = "LEARNED: a learned limit is never shorter (minutes)", min = "1")
     int learnFloorMinutes() default 20;
 
+    @AttributeDefinition(description = "LEARNED: never worse than the fixed limits: a learned limit may be shorter "
+            + "than the room's fixed limit only when at least this many observed quiet periods support it", min = "0")
+    int learnMinPeriodsToShorten() default 30;
+
     @AttributeDefinition(description = "LEARNED: the night (sleep in a bedroom) begins at this hour", min = "0",
             max = "23")
     int nightStartHour() default 21;

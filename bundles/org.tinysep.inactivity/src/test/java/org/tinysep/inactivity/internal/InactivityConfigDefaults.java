@@ -70,6 +70,11 @@ final class InactivityConfigDefaults implements InactivityConfig {
     }
 
     @Override
+    public int learnMinPeriodsToShorten() {
+        return number("learnMinPeriodsToShorten");
+    }
+
+    @Override
     public int nightStartHour() {
         return number("nightStartHour");
     }

@@ -77,7 +77,7 @@ class LearnedMemoryTest {
     /** A detector starting now: its learner, loaded from the log (and its memory), every logged device placed. */
     private static Limit start(EventLog log, LearnedMemory memory, Instant now, List<HistoryFromLog> keep) {
         HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, new SleepRule(21, 7, ZoneOffset.UTC),
-                LearningSettings.defaults());
+                LearningSettings.defaults().withMinPeriodsToShorten(0));
         HistoryFromLog fromLog = new HistoryFromLog(learner);
         fromLog.load(log, now, 28, memory);
         fromLog.resolve(r -> Optional.of(new Sighting(r.at(), ROOM_OF.get(r.device()), ROOM_OF.get(r.device()),

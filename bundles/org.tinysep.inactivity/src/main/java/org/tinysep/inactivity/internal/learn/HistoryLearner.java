@@ -41,6 +41,7 @@ public final class HistoryLearner {
         if (!sightings.isEmpty()) {
             Sighting last = sightings.get(sightings.size() - 1);
             if (last.room().equals(s.room()) && last.inBed() == s.inBed() && last.seated() == s.seated()
+                    && last.upFromBed() == s.upFromBed()
                     && !s.at().isBefore(last.at()) && Duration.between(last.at(), s.at()).compareTo(MERGE) < 0) {
                 sightings.set(sightings.size() - 1, s);
                 return;
@@ -100,7 +101,8 @@ public final class HistoryLearner {
             return s;
         }
         String type = roomTypes.apply(s.room());
-        return type == null || type.isEmpty() ? s : new Sighting(s.at(), s.room(), s.roomName(), type, false, s.seated());
+        return type == null || type.isEmpty() ? s : new Sighting(s.at(), s.room(), s.roomName(), type, false, s.seated(),
+                s.upFromBed());
     }
 
     /**

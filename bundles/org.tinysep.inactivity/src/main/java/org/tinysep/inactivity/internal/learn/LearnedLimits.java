@@ -34,10 +34,26 @@ public final class LearnedLimits {
         LearningSettings set = history.settings();
         boolean seated = s.seated() && !asleep;
         return history.profile(now).learned(s.room(), s.roomName(), asleep, seated, s.at())
-                .map(l -> new Limit(l.limit(), asleep, l.explain(set)))
+                .map(l -> neverWorse(s, l, new Limit(l.limit(), asleep, l.explain(set)), fixed, set))
                 .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, seated, now)
-                        .map(l -> blend(s, l, fixed, asleep, set))
+                        .map(l -> neverWorse(s, l, blend(s, l, fixed, asleep, set), fixed, set))
                         .orElseGet(() -> coldStart(s, fixed, asleep, set)));
+    }
+
+    /**
+     * "Never worse than the fixed limits" (issue 28): a limit shorter than the fixed one needs at least
+     * {@code minPeriodsToShorten} observed quiet periods behind it; with fewer the fixed limit holds (a short limit
+     * learned from a handful of periods is what raised the learned detector's false alarms).
+     */
+    static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
+        if (learned.limit().compareTo(fixed) >= 0 || l.periods() >= set.minPeriodsToShorten()) {
+            return learned;
+        }
+        return new Limit(fixed, learned.asleep(), "fixed limit of " + Words.duration(fixed) + " for "
+                + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would shorten it to "
+                + Words.duration(learned.limit()) + ", but only " + Words.count(l.periods(), "quiet period")
+                + " support that and a shorter limit needs at least " + set.minPeriodsToShorten()
+                + " (" + l.explain(set) + ")");
     }
 
     /** Fewer than minDays days: Z·learned + (1 − Z)·fixed, Z = √(days / minDays); never below the floor. */

@@ -13,9 +13,21 @@ import java.time.Duration;
  * @param floor       a learned limit is never shorter
  * @param ceiling     nor longer (a collapse must be reported within this)
  * @param halfWindow  quiet periods that began this many hours before or after the hour asked for count too
+ * @param minPeriodsToShorten "never worse than the fixed limits" (issue 28): a learned limit may be shorter than
+ *                    the room's fixed limit only when at least this many observed quiet periods support it; with
+ *                    thinner history the fixed (thesis) limit holds. A longer learned limit needs no such support.
  */
 public record LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
-        Duration ceiling, int halfWindow) {
+        Duration ceiling, int halfWindow, int minPeriodsToShorten) {
+
+    /** The default of {@link #minPeriodsToShorten()}. */
+    public static final int MIN_PERIODS_TO_SHORTEN = 30;
+
+    /** With the default {@link #MIN_PERIODS_TO_SHORTEN}. */
+    public LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
+            Duration ceiling, int halfWindow) {
+        this(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, MIN_PERIODS_TO_SHORTEN);
+    }
 
     /** The defaults documented in the bundle README. */
     public static LearningSettings defaults() {
@@ -23,12 +35,18 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
                 Duration.ofHours(12), 1);
     }
 
+    /** @return these settings with another {@link #minPeriodsToShorten()} (0: any history may shorten a limit) */
+    public LearningSettings withMinPeriodsToShorten(int n) {
+        return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n);
+    }
+
     public LearningSettings {
         if (minDays < 1 || historyDays < minDays || margin < 1 || pad.isNegative() || floor.isNegative()
-                || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11) {
+                || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11 || minPeriodsToShorten < 0) {
             throw new IllegalArgumentException("inconsistent learning settings: minDays " + minDays
                     + ", historyDays " + historyDays + ", margin " + margin + ", pad " + pad + ", floor " + floor
-                    + ", ceiling " + ceiling + ", halfWindow " + halfWindow);
+                    + ", ceiling " + ceiling + ", halfWindow " + halfWindow + ", minPeriodsToShorten "
+                    + minPeriodsToShorten);
         }
     }
 }

@@ -14,7 +14,10 @@ class ColdStartTest {
 
     /** Each day: bathroom at 14:00, kitchen 5 minutes later (the bathroom's quiet periods last 5 min). */
     private static LearnedLimits history(int days) {
-        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults());
+        // the blend itself, without the issue-28 rule (NeverWorseTest): any number of periods may shorten a limit
+        LearningSettings s = LearningSettings.defaults();
+        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, SLEEP, new LearningSettings(s.minDays(),
+                s.historyDays(), s.margin(), s.pad(), s.floor(), s.ceiling(), s.halfWindow(), 0));
         for (int d = 0; d < days; d++) {
             learner.add(new Sighting(History.at(d, "14:00"), "Bathroom", "Bathroom", "Bathroom", false));
             learner.add(new Sighting(History.at(d, "14:05"), "Kitchen", "Kitchen", "Kitchen", false));

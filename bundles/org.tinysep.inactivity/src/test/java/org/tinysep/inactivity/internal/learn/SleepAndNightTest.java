@@ -33,7 +33,7 @@ class SleepAndNightTest {
 
     /** 14 nights: to bed at 23:00, bathroom at 03:00 for 8 min, back to bed, up at 07:00 in the kitchen. */
     private static HistoryLearner nights() {
-        HistoryLearner l = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults());
+        HistoryLearner l = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults().withMinPeriodsToShorten(0));
         for (int d = 0; d < 14; d++) {
             new History().in("Bed", d, "23:00").in("Bathroom", d + 1, "03:00").in("Bed", d + 1, "03:08")
                     .in("Kitchen", d + 1, "07:00").in("Kitchen", d + 1, "07:40").sightings().forEach(l::add);
