@@ -3,12 +3,14 @@
 #   java, maven  - build
 #   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
 #   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
+#   gradle       - the second build (Debian's Gradle 4.4.1: build.gradle, README "Gradle build")
 #   mosquitto    - real MQTT broker for the MQTT bridge tests (testsupport/org.tinysep.testsupport.mqtt, docs/mqtt.md)
 set -euo pipefail
 need=()
 command -v java >/dev/null || need+=(openjdk-17-jdk-headless)
 command -v mvn >/dev/null || need+=(maven)
 command -v socat >/dev/null || need+=(socat)
+command -v gradle >/dev/null || need+=(gradle)
 command -v chromium >/dev/null || need+=(chromium)
 command -v chromedriver >/dev/null || need+=(chromium-driver)
 command -v mosquitto >/dev/null || [ -x /usr/sbin/mosquitto ] || need+=(mosquitto)

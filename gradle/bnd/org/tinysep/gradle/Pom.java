@@ -14,7 +14,7 @@ import org.w3c.dom.Node;
 
 /**
  * A module's pom.xml as the Gradle build reads it: the one source of dependencies and versions. Properties and
- * dependencyManagement are inherited from the parent poms (relativePath, default ../pom.xml); ${...} is resolved.
+ * dependencyManagement are inherited from the parent poms (relativePath, by default the pom of the folder above); ${...} is resolved.
  */
 public final class Pom {
     /** One dependency: coordinates with the version resolved, Maven scope, type and excluded groupId:artifactId. */
@@ -48,8 +48,9 @@ public final class Pom {
         Element parentRef = child(root, "parent");
         Pom parent = null;
         if (parentRef != null) {
-            String rel = text(parentRef, "relativePath", "../pom.xml");
-            File parentFile = new File(file.getParentFile(), rel);
+            String rel = text(parentRef, "relativePath", null);
+            File parentFile = rel == null ? new File(file.getAbsoluteFile().getParentFile().getParentFile(), "pom.xml")
+                    : new File(file.getParentFile(), rel);
             if (parentFile.isDirectory()) {
                 parentFile = new File(parentFile, "pom.xml");
             }
