@@ -158,6 +158,20 @@ public final class Pom {
         return out;
     }
 
+    /**
+     * groupId:artifactId:version of every managed dependency outside this project's group: Maven's
+     * dependencyManagement also fixes the versions of transitive dependencies, so Gradle forces them.
+     */
+    public List<String> managedVersions() {
+        List<String> out = new ArrayList<>();
+        for (Dep d : managed.values()) {
+            if (!d.groupId().equals(groupId) && d.version() != null) {
+                out.add(d.groupId() + ":" + d.artifactId() + ":" + resolve(d.version()));
+            }
+        }
+        return out;
+    }
+
     public String property(String key) {
         return properties.get(key);
     }
