@@ -26,7 +26,7 @@ final class OutsideReferences {
     /**
      * The allow-list: folders (relative to the root) not scanned, each with its reason. Documentation ({@code *.md})
      * is no input and is not scanned either: it may point at reference material beside a clone (e.g. the thesis);
-     * nor are build output ({@code target/}), {@code node_modules/} and dot folders ({@code .git/}).
+     * nor are build output (Maven's {@code target/}, Gradle's {@code build/}), {@code node_modules/} and dot folders ({@code .git/}).
      */
     static final Map<String, String> ALLOWED = Map.of(
             "data/", "the recorded data itself (data/*/PROVENANCE.md)",
@@ -35,10 +35,10 @@ final class OutsideReferences {
             "this check and its tests, which name the references they refuse");
 
     private static final Set<String> INPUTS = Set.of("java", "xml", "sh", "properties", "bnd", "cfg", "conf",
-            "mapping", "json", "yml", "yaml");
+            "mapping", "json", "yml", "yaml", "gradle");
     /** Text data counts as an input only under a module's {@code src/} (test resources, flats, scenarios). */
     private static final Set<String> INPUTS_UNDER_SRC = Set.of("txt", "csv");
-    private static final Set<String> SKIPPED_DIRS = Set.of("target", "node_modules", "felix-cache");
+    private static final Set<String> SKIPPED_DIRS = Set.of("target", "build", "node_modules", "felix-cache");
 
     private static final Pattern MACHINE = Pattern.compile("(?<![\\w.])/work/");
     /** The folder beside a clone where material is handed to the project: no build input may climb to it. */
