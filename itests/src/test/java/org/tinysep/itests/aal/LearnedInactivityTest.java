@@ -23,7 +23,8 @@ import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * The LEARNED detector end to end in virtual time (issue 11): real AmICA movement nodes over UDP, Flat Occupancy,
- * House Information and the Mail Manager mailing a real SMTP server. With {@code learnMinDays=1} one day of
+ * House Information and the Mail Manager mailing a real SMTP server. With {@code learnMinDays=1} and
+ * {@code learnMinPeriodsToShorten=1} (the default 30 keeps the fixed limits on thin history, issue 28) one day of
  * history is enough: a limit learned from it, shorter than the fixed one, alerts earlier and says why; a night
  * trip to the bathroom that does not end is alerted by the bathroom's night limit, not the night's.
  */
@@ -34,7 +35,8 @@ public class LearnedInactivityTest extends AalTestSupport {
     @Override
     protected Map<String, Map<String, String>> initialConfigurations() {
         return replacing(super.initialConfigurations(), "org.tinysep.inactivity",
-                Map.of("timeZone", "UTC", "detector", "LEARNED", "learnMinDays", "1"));
+                Map.of("timeZone", "UTC", "detector", "LEARNED", "learnMinDays", "1",
+                        "learnMinPeriodsToShorten", "1"));
     }
 
     private SyncPeer sync;
