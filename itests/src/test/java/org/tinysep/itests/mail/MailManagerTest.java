@@ -105,7 +105,10 @@ public class MailManagerTest extends TinySepTestSupport {
             configure(PID, Map.of("host", "127.0.0.1", "port", Integer.toString(sink.port()), "security", "NONE",
                     "from", "tinysep@home.test", "recipients", "full@care.test", "retryInitialSeconds", "1",
                     "retryMaxSeconds", "1", "spoolDir", spool.toString()));
-            await(TIMEOUT, () -> driverProperty(MailManagerTest.DELIVERY).equals("smtp"), "delivery=smtp");
+            // not just delivery=smtp: an earlier test of this class may have left smtp to another sink configured
+            String through = "127.0.0.1:" + sink.port() + " to full@care.test";
+            await(TIMEOUT, () -> driverProperty(MailManagerTest.DELIVERY).equals("smtp")
+                    && driverProperty("tinysep.mail.summary").contains(through), "delivery=smtp through " + through);
 
             mail.send("Inactivity alert (full mailbox)", "x");
             EventLog events = awaitService(EventLog.class, null, TIMEOUT);
