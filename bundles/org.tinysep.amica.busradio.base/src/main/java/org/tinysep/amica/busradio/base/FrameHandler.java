@@ -12,6 +12,7 @@ import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PacketIntake;
+import org.tinysep.device.support.RejectCounter;
 
 /**
  * Turns one frame into a delivery to a bus device, a new bus device (keep-alive from an unknown node), or a
@@ -44,7 +45,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     private final Nodes<R> nodes;
     private volatile Instant lastStamp;
 
-    public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter rejects) {
+    public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter<RejectReason> rejects) {
         super(context, CODEC, rejects::reject);
         this.nodes = nodes;
     }

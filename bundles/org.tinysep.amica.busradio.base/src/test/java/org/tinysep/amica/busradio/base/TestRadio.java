@@ -9,9 +9,11 @@ import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.RejectCounter;
 
 /**
  * The base parts wired like a bus radio driver wires them, without a framework: a route is a plain string and the
@@ -24,7 +26,8 @@ final class TestRadio implements AmicaNodes.Transport<String> {
     final RecordingLogs logs = new RecordingLogs(() -> T0);
     final DriverContext context =
             new DriverContext(null, "driver-uid", "BusRadioAmicaTest", logs.reporter(), new PlatformClock(() -> T0));
-    final RejectCounter rejects = new RejectCounter(context, "datagram", "datagrams rejected in total");
+    final RejectCounter<RejectReason> rejects = new RejectCounter<>(context, RejectReason.class,
+            r -> r.description(), "datagram", "datagrams rejected in total");
     final AmicaNodes<String> nodes = new AmicaNodes<>(context, "BusRadioAmicaTest", this, UnaryOperator.identity());
     final FrameHandler<String> handler = new FrameHandler<>(context, nodes, rejects);
     final List<byte[]> transmitted = new ArrayList<>();

@@ -4,6 +4,7 @@ import java.time.Instant;
 import org.tinysep.api.log.Direction;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PacketIntake;
+import org.tinysep.device.support.RejectCounter;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -26,7 +27,7 @@ final class PacketHandler extends PacketIntake<SunSpotFrame, RejectReason, SunSp
 
     private final SunSpotNodes nodes;
 
-    PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter rejects) {
+    PacketHandler(DriverContext context, SunSpotNodes nodes, RejectCounter<RejectReason> rejects) {
         super(context, CODEC, rejects::reject);
         this.nodes = nodes;
     }

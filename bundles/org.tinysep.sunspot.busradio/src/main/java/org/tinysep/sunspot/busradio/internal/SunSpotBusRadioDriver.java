@@ -11,12 +11,14 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.device.Parameter;
+import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.RejectCounter;
 import org.tinysep.device.support.RejectTotals;
 import org.tinysep.device.support.SourceGate;
-import org.tinysep.api.log.EventKind;
+import org.tinysep.sunspot.protocol.RejectReason;
 
 /**
  * Bus Radio Sun SPOT (thesis 4.4.1.3): one bus device per Sun SPOT address, created on the first valid packet of
@@ -37,7 +39,7 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
     private volatile SunSpotLinks links;
     private volatile SunSpotNodes nodes;
     private volatile PacketHandler handler;
-    private volatile RejectCounter rejects;
+    private volatile RejectCounter<RejectReason> rejects;
     private volatile SourceGate gate;
     private volatile PlatformTicker ticker;
 
@@ -61,7 +63,8 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
             problems.add(e.getMessage() + "; allowing only 127.0.0.1, ::1");
         }
         problems.forEach(p -> context().event(EventKind.PROBLEM, p));
-        rejects = new RejectCounter(context());
+        rejects = new RejectCounter<>(context(), RejectReason.class, r -> r.description(), "packet",
+                "packets (or serial byte runs) rejected in total");
         nodes = new SunSpotNodes(context(), NAME, this::addDevice);
         nodes.policy(policy);
         handler = new PacketHandler(context(), nodes, rejects);

@@ -13,6 +13,8 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.RejectCounter;
+import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -36,7 +38,9 @@ final class TestBus implements AutoCloseable {
     final RecordingLogs logs = new RecordingLogs(() -> T0);
     final DriverContext context =
             new DriverContext(null, "driver-uid", "BusRadioSunSpot", logs.reporter(), new PlatformClock(() -> T0));
-    final RejectCounter rejects = new RejectCounter(context);
+    final RejectCounter<RejectReason> rejects = new RejectCounter<>(context, RejectReason.class,
+            r -> r.description(), "packet",
+            "packets (or serial byte runs) rejected in total");
     final SunSpotNodes nodes = new SunSpotNodes(context, "BusRadioSunSpot", UnaryOperator.identity());
     final PacketHandler handler = new PacketHandler(context, nodes, rejects);
     final Feed feed = new Feed(handler, nodes, context);

@@ -9,11 +9,12 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.amica.busradio.base.AmicaBusDevice;
 import org.tinysep.amica.busradio.base.AmicaNodes;
 import org.tinysep.amica.busradio.base.FrameHandler;
-import org.tinysep.amica.busradio.base.RejectCounter;
+import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.RejectCounter;
 import org.tinysep.device.support.RejectTotals;
 import org.tinysep.serial.support.SerialPortLink;
 
@@ -32,7 +33,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
 
     private final DriverContext context;
     private final SerialSettings settings;
-    private final RejectCounter rejects;
+    private final RejectCounter<RejectReason> rejects;
     private final AmicaNodes<SerialPortLink> nodes;
     private final FrameHandler<SerialPortLink> handler;
     private final SerialPortLink link;
@@ -46,7 +47,8 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
             UnaryOperator<AmicaBusDevice<SerialPortLink>> register) {
         this.context = context;
         this.settings = settings;
-        this.rejects = new RejectCounter(context, "input", "skipped byte runs and frames rejected in total");
+        this.rejects = new RejectCounter<>(context, RejectReason.class, r -> r.description(), "input",
+                "skipped byte runs and frames rejected in total");
         this.nodes = new AmicaNodes<>(context, DEVICE_TYPE, this, register);
         this.handler = new FrameHandler<>(context, nodes, rejects);
         this.link = new SerialPortLink(settings.port(), settings.baudRate(), settings.reopenEvery(),

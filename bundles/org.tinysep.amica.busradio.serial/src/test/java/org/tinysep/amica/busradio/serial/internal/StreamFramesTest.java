@@ -11,20 +11,20 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tinysep.amica.busradio.base.RejectCounter;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaStreamDecoder;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.PacketEntry;
+import org.tinysep.device.support.RejectCounter;
 
 /** Bytes of a serial stream, cut anywhere, become frames and skipped runs, each logged with its exact bytes. */
 class StreamFramesTest {
 
     private final Wiring wiring = new Wiring("BusRadioAmicaSerial /dev/test");
     private final Wiring.Parts<String> parts = wiring.parts();
-    private final RejectCounter rejects = parts.rejects();
+    private final RejectCounter<RejectReason> rejects = parts.rejects();
     private final StreamFrames<String> frames = new StreamFrames<>(parts.handler(), "/dev/test");
 
     @Test

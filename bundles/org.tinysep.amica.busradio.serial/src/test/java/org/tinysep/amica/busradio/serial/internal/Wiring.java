@@ -5,18 +5,19 @@ import java.util.List;
 import java.util.function.UnaryOperator;
 import org.tinysep.amica.busradio.base.AmicaNodes;
 import org.tinysep.amica.busradio.base.FrameHandler;
-import org.tinysep.amica.busradio.base.RejectCounter;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayload;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
+import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.RejectCounter;
 
 /** A driver context with in-memory logs, and frames as a node sends them; for tests without a framework. */
 final class Wiring {
@@ -31,12 +32,13 @@ final class Wiring {
     }
 
     /** The shared bus radio parts, as a driver wires them. */
-    record Parts<R>(RejectCounter rejects, AmicaNodes<R> nodes, FrameHandler<R> handler) {
+    record Parts<R>(RejectCounter<RejectReason> rejects, AmicaNodes<R> nodes, FrameHandler<R> handler) {
     }
 
     /** The base parts for a route type whose routes print as themselves, sending nowhere. */
     <R> Parts<R> parts() {
-        RejectCounter rejects = new RejectCounter(context, "input", "total");
+        RejectCounter<RejectReason> rejects = new RejectCounter<>(context, RejectReason.class,
+                r -> r.description(), "input", "total");
         AmicaNodes<R> nodes = new AmicaNodes<>(context, "BusRadioAmicaSerial", new AmicaNodes.Transport<R>() {
             @Override
             public void transmit(byte[] frame, R route, AmicaNodes.Outcome outcome) {

@@ -16,12 +16,13 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.amica.busradio.base.AmicaNodes;
 import org.tinysep.amica.busradio.base.FrameHandler;
-import org.tinysep.amica.busradio.base.RejectCounter;
+import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.NodePolicy;
 import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.RejectCounter;
 import org.tinysep.device.support.RejectTotals;
 import org.tinysep.device.support.SourceGate;
 import org.tinysep.link.udp.DatagramLink;
@@ -47,7 +48,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     private static final Logger LOG = LoggerFactory.getLogger(AmicaUdpDriver.class);
 
-    private RejectCounter rejects;
+    private RejectCounter<RejectReason> rejects;
     private AmicaNodes<InetSocketAddress> nodes;
     private FrameHandler<InetSocketAddress> handler;
     private DatagramLink transport;
@@ -88,7 +89,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
             LOG.error("{} {}", NAME, problem);
         }
         start(bundleContext, props);
-        rejects = new RejectCounter(context(), "datagram", "datagrams rejected in total");
+        rejects = new RejectCounter<>(context(), RejectReason.class, r -> r.description(), "datagram",
+                "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
         nodes.policy(policy);
         handler = new FrameHandler<>(context(), nodes, rejects);
