@@ -6,13 +6,9 @@ import java.net.DatagramSocket;
 import java.net.InetSocketAddress;
 import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.GeneralSecurityException;
 import java.time.Instant;
-import java.util.HexFormat;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
+import org.tinysep.link.sync.SyncSecret;
 
 /**
  * The synchroniser side of docs/time-sync.md: {@code HELLO} -> {@code WELCOME <instant> <mode> <session>},
@@ -126,27 +122,16 @@ public final class SyncClient implements AutoCloseable {
     private static final java.util.regex.Pattern LAST_ACCEPTED =
             java.util.regex.Pattern.compile(" replayed .* not above the last accepted (\\d+)");
 
-    /** The key as the platform reads it: the file's text without surrounding white space, US-ASCII. */
+    /** The key as the platform reads it ({@link SyncSecret#read}). */
     public static byte[] readKey(Path file) throws IOException {
-        String text = Files.readString(file, StandardCharsets.US_ASCII).strip();
-        if (text.isEmpty()) {
-            throw new IOException("the synchroniser key file " + file + " is empty");
-        }
-        return text.getBytes(StandardCharsets.US_ASCII);
+        return SyncSecret.read(file);
     }
 
     private String signed(String request) {
         if (key == null) {
             return request;
         }
-        try {
-            Mac mac = Mac.getInstance("HmacSHA256");
-            mac.init(new SecretKeySpec(key, "HmacSHA256"));
-            byte[] digest = mac.doFinal((session + " " + request).getBytes(StandardCharsets.US_ASCII));
-            return request + " " + HexFormat.of().formatHex(digest);
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
-        }
+        return request + " " + SyncSecret.hmac(key, session, request);
     }
 
     private String ask(String request, String expected) throws IOException {

@@ -2,7 +2,6 @@ package org.tinysep.timecontroller.internal;
 
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
-import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
 import java.security.SecureRandom;
 import java.time.Instant;
@@ -10,8 +9,7 @@ import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
+import org.tinysep.link.sync.SyncSecret;
 
 /**
  * Authentication of the synchroniser's requests (docs/time-sync.md, "Authentication"). Every TICK and BYE carries
@@ -85,17 +83,6 @@ final class SyncAuth {
         }).value;
     }
 
-    /** @return the lower-case hex HMAC-SHA256 of {@code "<session> <signed>"} with {@code key} */
-    static String mac(byte[] key, String session, String signed) {
-        try {
-            Mac mac = Mac.getInstance("HmacSHA256");
-            mac.init(new SecretKeySpec(key, "HmacSHA256"));
-            return HexFormat.of().formatHex(mac.doFinal((session + " " + signed).getBytes(StandardCharsets.US_ASCII)));
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
-        }
-    }
-
     /** @return null when {@code request} from {@code from} may be carried out, else why not */
     synchronized Refusal check(SyncMessage.Signed request, Instant at, InetSocketAddress from) {
         String command = request.signed().substring(0, request.signed().indexOf(' '));
@@ -111,7 +98,7 @@ final class SyncAuth {
             return new Refusal("unauthorized", "no session for " + from.getAddress().getHostAddress() + ":"
                     + from.getPort() + ": send HELLO first and sign with the session of its WELCOME");
         }
-        byte[] expected = mac(key, session.value, request.signed()).getBytes(StandardCharsets.US_ASCII);
+        byte[] expected = SyncSecret.hmac(key, session.value, request.signed()).getBytes(StandardCharsets.US_ASCII);
         byte[] given = request.mac().toLowerCase(Locale.ROOT).getBytes(StandardCharsets.US_ASCII);
         if (!MessageDigest.isEqual(expected, given)) {
             return new Refusal("unauthorized", "wrong HMAC: not signed with the platform's synchroniser key for "

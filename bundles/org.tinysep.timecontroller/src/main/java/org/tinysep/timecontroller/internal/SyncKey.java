@@ -12,17 +12,15 @@ import java.security.SecureRandom;
 import java.util.HexFormat;
 import java.util.Optional;
 import java.util.Set;
+import org.tinysep.link.sync.SyncSecret;
 
 /**
  * The synchroniser's shared secret (docs/time-sync.md, "Authentication"): the text of a key file, by default
  * {@code ${tinysep.var}/sync.key}. A missing file is created with 32 random bytes in hex, mode 0600, atomically
- * (a file that appears meanwhile, e.g. written by scripts/demo-flat.sh, wins). The key is the file's text without
- * surrounding white space, as US-ASCII bytes: 16 to 256 printable characters.
+ * (a file that appears meanwhile, e.g. written by scripts/demo-flat.sh, wins). What a key is:
+ * {@link SyncSecret}.
  */
 final class SyncKey {
-
-    private static final int MIN = 16;
-    private static final int MAX = 256;
 
     private SyncKey() {
     }
@@ -32,12 +30,7 @@ final class SyncKey {
         if (!Files.exists(file)) {
             create(file);
         }
-        String text = Files.readString(file, StandardCharsets.US_ASCII).strip();
-        if (text.length() < MIN || text.length() > MAX || !text.chars().allMatch(c -> c > 0x20 && c < 0x7F)) {
-            throw new IOException("the key file " + file + " must hold " + MIN + " to " + MAX
-                    + " printable ASCII characters without spaces (e.g. 64 hex digits); delete it to get a new one");
-        }
-        return text.getBytes(StandardCharsets.US_ASCII);
+        return SyncSecret.read(file);
     }
 
     private static void create(Path file) throws IOException {

@@ -23,6 +23,7 @@ import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.device.support.DriverContext;
 import org.tinysep.device.support.PlatformClock;
 import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.link.sync.SyncSecret;
 
 /**
  * The synchroniser link end to end with real UDP sockets on 127.0.0.1: a synchroniser socket talks to the link,
@@ -88,7 +89,7 @@ class SyncLinkTest {
 
     /** @return {@code request} with the HMAC of a synchroniser that knows {@code key}, for this socket's session */
     private String signed(String request, byte[] key) throws IOException {
-        return request + " " + SyncAuth.mac(key, session(), request);
+        return request + " " + SyncSecret.hmac(key, session(), request);
     }
 
     /** Sends a request signed with the platform's key; the unsigned requests of this test are sent with ask. */
