@@ -19,6 +19,8 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.backup.BackupStore;
+import org.tinysep.api.drivers.ApplicationEntry;
+import org.tinysep.api.drivers.DriversListService;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.device.support.StateFolder;
 
@@ -27,12 +29,12 @@ import org.tinysep.device.support.StateFolder;
  * first start), installs and starts its enabled entries, keeps every entry's STATUS up to date in the file, follows
  * shell installs and uninstalls, and reconciles on request. All list changes hold this object's lock.
  */
-@Component(service = DriversList.class, immediate = true, configurationPid = DriversList.PID,
+@Component(service = {DriversList.class, DriversListService.class}, immediate = true, configurationPid = DriversList.PID,
         // not used here: an ordering guarantee. Applications restore their devices from the system backup when they
         // activate (docs/backup.md), so they may start only once the device manager's store is registered.
         reference = @Reference(name = "backupStore", service = BackupStore.class))
 @Designate(ocd = DriversConfig.class)
-public final class DriversList implements BundleListener {
+public final class DriversList implements BundleListener, DriversListService {
 
     static final String PID = "org.tinysep.drivers";
     private static final Logger LOG = LoggerFactory.getLogger(DriversList.class);
@@ -92,13 +94,26 @@ public final class DriversList implements BundleListener {
         return file.path();
     }
 
+    @Override
+    public String file() {
+        return file.path().toString();
+    }
+
+    @Override
+    public List<ApplicationEntry> applications() {
+        return entries().stream()
+                .map(e -> new ApplicationEntry(e.key(), e.symbolicName(), e.location(), e.enabled(), e.status()))
+                .toList();
+    }
+
     /**
      * Re-reads the file and reconciles. A malformed file is moved aside and the previous list stays in force (and
      * is written back).
      *
      * @return one line per change, or why nothing changed
      */
-    synchronized List<String> reload() {
+    @Override
+    public synchronized List<String> reload() {
         List<DriverEntry> wanted;
         try {
             wanted = file.exists() ? file.read(Instant.now()) : entries;
@@ -116,7 +131,8 @@ public final class DriversList implements BundleListener {
     }
 
     /** Sets {@code ENABLED} of the entry named {@code bsn} and applies it at once. @return the changes */
-    synchronized List<String> setEnabled(String bsn, boolean enabled) {
+    @Override
+    public synchronized List<String> setEnabled(String bsn, boolean enabled) {
         List<DriverEntry> wanted = new ArrayList<>();
         boolean found = false;
         for (DriverEntry e : entries) {
@@ -142,7 +158,8 @@ public final class DriversList implements BundleListener {
      *
      * @return what changed, in words
      */
-    synchronized String use(String bsn, String file) {
+    @Override
+    public synchronized String use(String bsn, String file) {
         Optional<Path> path = locations.file(file).filter(Files::isRegularFile);
         if (path.isEmpty()) {
             throw new IllegalArgumentException("no file " + file + ": give the path of a bundle jar");

@@ -16,6 +16,7 @@ import org.osgi.framework.startlevel.BundleStartLevel;
 import org.osgi.framework.wiring.FrameworkWiring;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.drivers.ApplicationEntry;
 import org.tinysep.device.support.AtomicFiles;
 
 /**
@@ -30,11 +31,11 @@ final class ApplicationInstaller {
 
     private final BundleContext context;
     private final Path uploads;
-    private final BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json;
-    private final DriversListShell list;
+    private final BiFunction<Bundle, ApplicationEntry, Map<String, Object>> json;
+    private final DriversListAccess list;
 
-    ApplicationInstaller(BundleContext context, Path uploads, DriversListShell list,
-            BiFunction<Bundle, DriversListShell.Entry, Map<String, Object>> json) {
+    ApplicationInstaller(BundleContext context, Path uploads, DriversListAccess list,
+            BiFunction<Bundle, ApplicationEntry, Map<String, Object>> json) {
         this.context = context;
         this.uploads = uploads;
         this.list = list;
@@ -116,7 +117,7 @@ final class ApplicationInstaller {
 
     /** DELETE /api/applications/{bsn} */
     Map<String, Object> remove(String bsn) {
-        Bundle b = changeable(bundle(DriversListShell.checked(bsn))
+        Bundle b = changeable(bundle(DriversListAccess.checked(bsn))
                 .orElseThrow(() -> ApiException.notFound("no installed application " + bsn)));
         uninstall(b);
         try {

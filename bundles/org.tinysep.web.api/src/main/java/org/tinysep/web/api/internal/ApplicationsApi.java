@@ -10,6 +10,7 @@ import java.util.Map;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.tinysep.api.device.Driver;
+import org.tinysep.api.drivers.ApplicationEntry;
 
 /**
  * {@code /api/applications}: the drivers list of thesis 3.4 as the console shows it. An application is a bundle at
@@ -24,14 +25,14 @@ final class ApplicationsApi {
 
     private final BundleContext context;
     private final PlatformView platform;
-    private final DriversListShell list;
+    private final DriversListAccess list;
     private final Path uploads;
     private final ApplicationInstaller installer;
 
     ApplicationsApi(BundleContext context, PlatformView platform, Path uploads) {
         this.context = context;
         this.platform = platform;
-        this.list = new DriversListShell(platform);
+        this.list = new DriversListAccess(platform);
         this.uploads = uploads;
         this.installer = new ApplicationInstaller(context, uploads, list, this::json);
     }
@@ -63,7 +64,7 @@ final class ApplicationsApi {
      * test harness's probe is not an application. With {@code all} they are listed with {@code infrastructure: true}.
      */
     List<Object> list(boolean all) {
-        Map<String, DriversListShell.Entry> entries = list.entries();
+        Map<String, ApplicationEntry> entries = list.entries();
         List<Object> out = new ArrayList<>();
         for (Bundle b : context.getBundles()) {
             if (b.getSymbolicName() != null && ApplicationInstaller.level(b) >= APP_LEVEL) {
@@ -78,14 +79,14 @@ final class ApplicationsApi {
                 }
             }
         }
-        for (DriversListShell.Entry e : entries.values()) { // listed, not installed
+        for (ApplicationEntry e : entries.values()) { // listed, not installed
             Map<String, Object> m = new LinkedHashMap<>();
             m.put("symbolicName", e.application());
             m.put("name", e.application());
             m.put("version", "");
             m.put("bundleId", null);
             m.put("state", "NOT_INSTALLED");
-            m.put("location", e.file());
+            m.put("location", e.location());
             m.put("uploaded", false);
             m.put("listed", true);
             m.put("enabled", e.enabled());
@@ -108,7 +109,7 @@ final class ApplicationsApi {
 
     /** POST /api/applications/{bsn}/enable or /disable */
     Map<String, Object> setEnabled(String bsn, boolean enabled) {
-        DriversListShell.checked(bsn);
+        DriversListAccess.checked(bsn);
         if (installer.bundle(bsn).isPresent()) {
             installer.changeable(installer.bundle(bsn).get());
         } else if (!list.entries().containsKey(bsn)) {
@@ -126,7 +127,7 @@ final class ApplicationsApi {
         return m;
     }
 
-    Map<String, Object> json(Bundle b, DriversListShell.Entry entry) {
+    Map<String, Object> json(Bundle b, ApplicationEntry entry) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("symbolicName", b.getSymbolicName());
         String name = b.getHeaders().get("Bundle-Name");

@@ -13,7 +13,7 @@ import java.util.jar.Manifest;
  * A bundle jar sent as the raw request body ({@code Content-Type: application/java-archive}, also
  * {@code application/octet-stream} or {@code application/zip}), at most {@value #MAX_BYTES} bytes, checked before
  * anything is written: a jar with a manifest naming {@code Bundle-SymbolicName} (parameters such as
- * {@code ;singleton:=true} cut off) that matches {@link DriversListShell#BSN}.
+ * {@code ;singleton:=true} cut off) that matches {@link DriversListAccess#BSN}.
  *
  * @param bytes        the jar
  * @param symbolicName its Bundle-SymbolicName
@@ -63,7 +63,7 @@ record JarUpload(byte[] bytes, String symbolicName, String version) {
             throw ApiException.badRequest("the upload is not an OSGi bundle: its manifest has no Bundle-SymbolicName");
         }
         bsn = bsn.split(";", 2)[0].strip();
-        DriversListShell.checked(bsn);
+        DriversListAccess.checked(bsn);
         String version = manifest.getMainAttributes().getValue("Bundle-Version");
         return new JarUpload(bytes, bsn, version == null || version.isBlank() ? "0.0.0" : version.strip());
     }
