@@ -52,7 +52,12 @@ final class PushSender implements AutoCloseable {
         keep(new ChannelDelivery(id, MailDelivery.Outcome.QUEUED, waiting));
         try {
             threads.execute(() -> {
-                ChannelDelivery d = publish.get();
+                ChannelDelivery d;
+                try {
+                    d = publish.get();
+                } catch (RuntimeException | LinkageError e) { // never left QUEUED for ever: say what went wrong
+                    d = ChannelDelivery.failed("the push channel failed while publishing: " + e);
+                }
                 ChannelDelivery kept = new ChannelDelivery(id, d.outcome(), d.detail());
                 done.accept(kept); // the status first: whoever reads the outcome finds the status updated
                 keep(kept);
