@@ -7,8 +7,8 @@ import org.tinysep.api.device.DeviceStatus;
 /**
  * One way to reach a person, registered as an OSGi service with the property {@value #SCHEME} (e.g. {@code sms},
  * {@code push}). A contact's address for it is written {@code scheme:address} in the alert service's contact list.
- * Implementations never block for long: {@link #send} hands the message over (to a spool, a server with a short
- * timeout) and says at once whether that worked.
+ * Implementations never block for long: {@link #send} hands the message over (to a spool, to the channel's own
+ * sending thread) and says at once whether that worked; what became of it later is {@link #delivery}.
  */
 @ConsumerType
 public interface MessageChannel {

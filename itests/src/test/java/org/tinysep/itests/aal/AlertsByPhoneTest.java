@@ -21,6 +21,8 @@ import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.alert.Notification;
 import org.tinysep.api.alert.NotificationStep;
 import org.tinysep.api.channel.MessageChannel;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.FlatOccupancyProvider;
@@ -38,7 +40,8 @@ import org.tinysep.testsupport.phone.PushSink;
  * Alerts by phone (issue 27) end to end in virtual time: a real AmICA movement node over UDP, Inactivity
  * Recognition, the alert service, the SMS channel on the real gammu-smsd (Gammu's dummy modem), the push channel
  * on a local HTTPS server, the Mail Manager on a real SMTP server. Eva is reached by SMS (else by mail), Otto by
- * push; repeat every 10 min, escalate every 15 min.
+ * push; repeat every 10 min, escalate every 15 min. An unplugged modem (gammu-smsd not running) is a device in
+ * ERROR while the alert goes by mail and push.
  */
 @RunWith(PaxExam.class)
 @ExamReactorStrategy(PerMethod.class)
@@ -170,12 +173,11 @@ public class AlertsByPhoneTest extends AalTestSupport {
             f.sync.tickDone(f.at(LIMIT + 15 * 60 - 1));
             assertTrue("nobody else before the escalation", f.push.published().isEmpty());
             f.sync.tickDone(f.at(LIMIT + 15 * 60));
-            Alert later = f.alert(a.id());
-            Notification last = later.notifications().get(later.notifications().size() - 1);
-            assertEquals(later.notifications().toString(), NotificationStep.ESCALATION, last.step());
+            Notification last = lastOf(f.alert(a.id()));
+            assertEquals(f.alert(a.id()).notifications().toString(), NotificationStep.ESCALATION, last.step());
             assertEquals(List.of("Otto"), last.to());
             assertEquals("push", last.channel());
-            assertEquals(last.detail(), MailDelivery.Outcome.SENT, last.outcome());
+            assertEquals(MailDelivery.Outcome.SENT, pushOutcome(f, a, LIMIT + 15 * 60).outcome());
             assertEquals(1, f.push.published().size());
             String json = f.push.published().get(0).body();
             assertTrue(json, json.contains("\"topic\":\"otto-topic\"") && json.contains("ESCALATED, not acknowledged "
@@ -208,7 +210,44 @@ public class AlertsByPhoneTest extends AalTestSupport {
             String channels = shell("tinysep:channels");
             assertTrue(channels, channels.contains("sms: SMS through the GSM modem (gammu-smsd) - ERROR (gammu-smsd is "
                     + "not running") && channels.contains("push: push notification (ntfy) - "));
+
+            // the modem is a device in ERROR, in words, in the platform's device list
+            Device modem = awaitService(Device.class, "(" + DeviceProperties.DEVICE_TYPE + "=SmsModem)", TIMEOUT);
+            assertEquals(modem.status().toString(), DeviceStatus.State.ERROR, modem.status().state());
+            assertTrue(modem.status().detail(), modem.status().detail().startsWith("the GSM modem cannot send SMS: "
+                    + "gammu-smsd is not running (its pid file " + f.smsd.pidFile() + " does not exist)"));
+            String devices = shell("tinysep:devices");
+            assertTrue(devices, devices.contains("SmsModem \"GSM modem (gammu-smsd)\" [ERROR (the GSM modem cannot "
+                    + "send SMS: gammu-smsd is not running"));
+
+            // and the alert still goes on: Otto by push at the escalation, the modem still in ERROR
+            f.sync.tickDone(f.at(LIMIT + 15 * 60));
+            Notification last = lastOf(f.alert(a.id()));
+            assertEquals(List.of("Otto"), last.to());
+            assertEquals("push", last.channel());
+            assertEquals(MailDelivery.Outcome.SENT, pushOutcome(f, a, LIMIT + 15 * 60).outcome());
+            assertEquals(1, f.push.published().size());
+            assertEquals(DeviceStatus.State.ERROR, modem.status().state());
         }
+    }
+
+    private static Notification lastOf(Alert a) {
+        return a.notifications().get(a.notifications().size() - 1);
+    }
+
+    /**
+     * @return the last notification of {@code a} once the push channel told its outcome: the push is published on
+     *         the channel's own thread and the alert service reads the outcome on its next tick, so platform time
+     *         goes on a second at a time from {@code from}
+     */
+    private Notification pushOutcome(Flat f, Alert a, int from) throws Exception {
+        int s = from;
+        long end = System.nanoTime() + TIMEOUT.toNanos();
+        while (lastOf(f.alert(a.id())).outcome() == MailDelivery.Outcome.QUEUED && System.nanoTime() < end) {
+            Thread.sleep(100);
+            f.sync.tickDone(f.at(++s));
+        }
+        return lastOf(f.alert(a.id()));
     }
 
     private static List<String> sent(Flat f) {

@@ -4,27 +4,21 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.security.GeneralSecurityException;
-import java.security.KeyStore;
-import java.security.cert.Certificate;
-import java.security.cert.CertificateFactory;
-import java.util.Collection;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.net.ssl.HttpsURLConnection;
-import javax.net.ssl.SSLContext;
 import javax.net.ssl.SSLException;
-import javax.net.ssl.SSLSocketFactory;
-import javax.net.ssl.TrustManagerFactory;
 import org.tinysep.api.channel.ChannelDelivery;
 import org.tinysep.api.channel.ChannelMessage;
 import org.tinysep.api.service.MailDelivery;
+import org.tinysep.device.support.TrustedCertificates;
 
 /**
  * ntfy's HTTP publish as JSON (https://docs.ntfy.sh/publish/#publish-as-json): one POST to the server's root with
  * topic, title, message and priority; the token, if any, as a bearer token. TLS only; the server's name is checked
- * against its certificate (HttpsURLConnection's default host name check). Blocks at most twice the timeout.
+ * against its certificate (HttpsURLConnection's default host name check); a server with its own certificate is
+ * trusted through {@link TrustedCertificates}. Blocks at most twice the timeout: called on the channel's own threads.
  */
 final class NtfyClient {
 
@@ -43,7 +37,7 @@ final class NtfyClient {
         try {
             HttpsURLConnection c = (HttpsURLConnection) s.server().toURL().openConnection();
             if (s.trusted() != null) {
-                c.setSSLSocketFactory(trusting(s));
+                c.setSSLSocketFactory(TrustedCertificates.factory(s.trusted()));
             }
             c.setConnectTimeout(s.timeoutSeconds() * 1000);
             c.setReadTimeout(s.timeoutSeconds() * 1000);
@@ -102,26 +96,5 @@ final class NtfyClient {
             byte[] b = in.readNBytes(400);
             return new String(b, StandardCharsets.UTF_8);
         }
-    }
-
-    private static SSLSocketFactory trusting(PushSettings s) throws IOException, GeneralSecurityException {
-        Collection<? extends Certificate> certs;
-        try (InputStream in = Files.newInputStream(s.trusted())) {
-            certs = CertificateFactory.getInstance("X.509").generateCertificates(in);
-        }
-        if (certs.isEmpty()) {
-            throw new GeneralSecurityException("no certificate in " + s.trusted());
-        }
-        KeyStore store = KeyStore.getInstance(KeyStore.getDefaultType());
-        store.load(null, null);
-        int i = 0;
-        for (Certificate c : certs) {
-            store.setCertificateEntry("trusted-" + i++, c);
-        }
-        TrustManagerFactory tmf = TrustManagerFactory.getInstance(TrustManagerFactory.getDefaultAlgorithm());
-        tmf.init(store);
-        SSLContext tls = SSLContext.getInstance("TLS");
-        tls.init(null, tmf.getTrustManagers(), null);
-        return tls.getSocketFactory();
     }
 }

@@ -33,7 +33,8 @@ import org.tinysep.device.support.StateFolder;
  * The SMS channel (README): alerts go out as SMS through gammu-smsd's files spool ({@link Spool}), replies that
  * arrive in its inbox go to the {@link ReplyHandler} (the alert service) and its answer goes back by SMS. When
  * gammu-smsd is not running or the modem does not send, the channel is in ERROR in plain words and {@link #send}
- * fails at once, so the alert service tries the contact's next channel.
+ * fails at once, so the alert service tries the contact's next channel. The modem is a device of the platform
+ * with the same state ({@link ModemDevice}).
  */
 @Component(service = MessageChannel.class, configurationPid = "org.tinysep.sms", immediate = true,
         property = MessageChannel.SCHEME + "=sms")
@@ -51,6 +52,8 @@ public final class SmsChannel implements MessageChannel {
     private volatile ReplyHandler replies;
 
     private ScheduledExecutorService poller;
+    /** The modem as a device of the platform ({@link ModemDevice}); null without OSGi (unit tests). */
+    private ModemDriver modem;
     private ModemHealth health;
     private Spool spool;
     private int maxParts;
@@ -60,8 +63,9 @@ public final class SmsChannel implements MessageChannel {
 
     @Activate
     void activate(BundleContext context, SmsConfig c) {
-        start(StateFolder.resolveOrDataArea(c.spoolFolder(), context, "sms"), c.pidFile(), c.stuckSeconds(),
-                c.maxParts(), c.pollMillis());
+        Path base = StateFolder.resolveOrDataArea(c.spoolFolder(), context, "sms");
+        this.modem = new ModemDriver(context, base, c.pidFile(), c.stuckSeconds());
+        start(base, c.pidFile(), c.stuckSeconds(), c.maxParts(), c.pollMillis());
     }
 
     /** The activation without OSGi (tests). */
@@ -85,6 +89,9 @@ public final class SmsChannel implements MessageChannel {
             poller.awaitTermination(2, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+        if (modem != null) {
+            modem.close();
         }
     }
 
@@ -142,7 +149,10 @@ public final class SmsChannel implements MessageChannel {
             DeviceStatus now = health.status();
             DeviceStatus before = said;
             if (!used && !java.nio.file.Files.isDirectory(spool.base())) {
-                return; // not set up and not used: nothing to say, no inbox to read
+                return; // not set up and not used: nothing to say, no inbox to read, no modem device
+            }
+            if (modem != null) {
+                modem.show(now);
             }
             if (before == null || before.state() != now.state() || !before.detail().equals(now.detail())) {
                 said = now;

@@ -1,4 +1,4 @@
-package org.tinysep.mailmanager.internal;
+package org.tinysep.device.support;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -14,23 +14,29 @@ import javax.net.ssl.SSLSocketFactory;
 import javax.net.ssl.TrustManagerFactory;
 
 /**
- * TLS that trusts exactly the certificates of one PEM file (config {@code trustedCertificates}): for an SMTP server
- * with its own certificate. The server's name is still checked against its certificate
- * ({@code ssl.checkserveridentity}), and a certificate not in the file is refused.
+ * TLS that trusts exactly the certificates of one PEM file (a server with its own certificate: the Mail Manager's
+ * SMTP server, the push channel's ntfy server): PEM → key store → trust managers → TLS context. A certificate not
+ * in the file is refused; checking the server's name against its certificate stays the caller's job (the mail
+ * library's {@code ssl.checkserveridentity}, {@code HttpsURLConnection}'s host name check).
  */
-final class TrustedCertificates {
+public final class TrustedCertificates {
 
     private TrustedCertificates() {
     }
 
-    /** @return a socket factory trusting only the certificates in {@code pem}; read at every attempt */
-    static SSLSocketFactory factory(Path pem) throws IOException, GeneralSecurityException {
+    /**
+     * @param pem a file with one or more PEM certificates; read at every call, so a replaced file counts at once
+     * @return a socket factory trusting only the certificates in {@code pem}
+     * @throws GeneralSecurityException when the file holds no certificate (its path in the message) or one that
+     *                                  cannot be read
+     */
+    public static SSLSocketFactory factory(Path pem) throws IOException, GeneralSecurityException {
         Collection<? extends Certificate> certs;
         try (InputStream in = Files.newInputStream(pem)) {
             certs = CertificateFactory.getInstance("X.509").generateCertificates(in);
         }
         if (certs.isEmpty()) {
-            throw new GeneralSecurityException("no certificate in the file");
+            throw new GeneralSecurityException("no certificate in " + pem);
         }
         KeyStore store = KeyStore.getInstance(KeyStore.getDefaultType());
         store.load(null, null);
