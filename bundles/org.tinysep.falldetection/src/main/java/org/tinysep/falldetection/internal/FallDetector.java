@@ -101,7 +101,7 @@ public final class FallDetector {
             return last.mean();
         }
         List<Acceleration> pre = b.samples().subList(0, Math.max(1, b.samplesBeforeTrigger()));
-        return mean(pre);
+        return Acceleration.mean(pre);
     }
 
     private Optional<Fall> check() {
@@ -140,7 +140,7 @@ public final class FallDetector {
             run.add(m);
             Duration still = Duration.between(run.get(0).end().minus(run.get(0).span()), m.end());
             if (still.compareTo(settings.stillFor()) >= 0) {
-                Acceleration after = mean(run.stream().map(MovementSummary::mean).toList());
+                Acceleration after = Acceleration.mean(run.stream().map(MovementSummary::mean).toList());
                 double angle = angle(c.before(), after);
                 if (angle >= settings.postureChangeDeg()) {
                     return Optional.of(new Fall(c.impact(), c.peakMg(), c.before(), after, angle, still, m.end()));
@@ -149,19 +149,6 @@ public final class FallDetector {
             }
         }
         return Optional.empty();
-    }
-
-    static Acceleration mean(List<Acceleration> v) {
-        double x = 0;
-        double y = 0;
-        double z = 0;
-        for (Acceleration a : v) {
-            x += a.xMg();
-            y += a.yMg();
-            z += a.zMg();
-        }
-        int n = Math.max(1, v.size());
-        return new Acceleration((int) Math.round(x / n), (int) Math.round(y / n), (int) Math.round(z / n));
     }
 
     /** @return the angle between two vectors, degrees (0 when either is zero) */
