@@ -36,9 +36,24 @@ public final class FallDetector {
     private final FallSettings settings;
     private final ArrayDeque<MovementSummary> summaries = new ArrayDeque<>();
     private final List<Candidate> candidates = new ArrayList<>();
+    private final Upright upright = new Upright();
 
     public FallDetector(FallSettings settings) {
         this.settings = settings;
+    }
+
+    /** @return the wearer's upright in the node's axes, once the detector has seen them walk ({@link Upright}) */
+    public Optional<Acceleration> upright() {
+        return upright.get();
+    }
+
+    /**
+     * A detector for a wearer whose upright is already known (learned by another detector of the same node, e.g.
+     * before a restart); it goes on learning from the summaries it is given.
+     */
+    public FallDetector(FallSettings settings, Acceleration knownUpright) {
+        this(settings);
+        upright.seed(knownUpright);
     }
 
     /**
@@ -71,13 +86,18 @@ public final class FallDetector {
         }
         Instant impact = b.trigger().plusNanos(
                 (peakAt - b.samplesBeforeTrigger()) * 1_000_000_000L / b.sampleRateHz());
-        candidates.add(new Candidate(impact, (int) Math.round(peak), postureBefore(b)));
+        Acceleration before = postureBefore(b);
+        if (alreadyLying(before)) {
+            return Optional.empty(); // turning over or getting up from lying: not a fall from standing or sitting
+        }
+        candidates.add(new Candidate(impact, (int) Math.round(peak), before));
         return check();
     }
 
     /** A movement summary arrived: @return a fall, when it completes one */
     public Optional<Fall> summary(MovementSummary m) {
         summaries.addLast(m);
+        upright.summary(m);
         while (!summaries.isEmpty() && summaries.peekFirst().end().isBefore(m.end().minus(KEEP))) {
             summaries.removeFirst();
         }
@@ -149,6 +169,15 @@ public final class FallDetector {
             }
         }
         return Optional.empty();
+    }
+
+    /**
+     * @return whether the posture before an impact is at least {@code alreadyLyingDeg} from the wearer's learned
+     *         upright (never while the upright is unknown, nor with the rule off at 180°)
+     */
+    private boolean alreadyLying(Acceleration before) {
+        return settings.alreadyLyingDeg() < 180 && upright.get()
+                .map(u -> angle(u, before) >= settings.alreadyLyingDeg()).orElse(false);
     }
 
     /** @return the angle between two vectors, degrees (0 when either is zero) */
