@@ -15,7 +15,8 @@ import org.tinysep.api.sensor.person.MovementSummary;
  * The algorithm for one person node (README "Algorithm"): a burst whose peak reaches the impact level opens a
  * candidate; it becomes a fall when, within {@code within} after the impact, the node's summaries show stillness
  * (SD at most {@code stillSdMg}) for {@code stillFor} in a posture at least {@code postureChangeDeg} away from the one
- * before the impact. Not thread-safe: one caller at a time (the listener synchronises).
+ * before the impact. An impact while the body was already lying (at least {@code alreadyLyingDeg} from the wearer's
+ * upright, learned by {@link Upright}) opens none. Not thread-safe: one caller at a time (the listener synchronises).
  */
 public final class FallDetector {
 
