@@ -100,7 +100,7 @@ public final class FallsCommand {
             }
         } else {
             for (List<NodeStream> streams : bySubject.values()) {
-                scored.addAll(streams.parallelStream().map(s -> Scored.run(s, FallSettings.DEFAULT)).toList());
+                scored.addAll(Scored.runSubject(streams, FallSettings.DEFAULT));
             }
             bySubject.keySet().forEach(subject -> chosen.put(subject, FallSettings.DEFAULT));
             settingsLines.add("| all | " + FallsReport.settings(FallSettings.DEFAULT) + " (the defaults) |");
@@ -108,7 +108,7 @@ public final class FallsCommand {
         String how = "judged in process (Fall Detection's detector class fed by the node's rule)";
         if (!inProcess) {
             long wall = System.nanoTime();
-            scored = ThroughPlatform.run(dist, work, bySubject, chosen::get, parallel);
+            scored = ThroughPlatform.run(dist, work, bySubject, chosen::get, parallel, scored);
             how = String.format(java.util.Locale.ROOT, "judged through the real distribution: one platform per "
                     + "subject (%d at once), the recordings played as the person node's frames over UDP in lock-step "
                     + "(%d s apart), the FALL alerts read back from the platform's event log; %d s wall time", parallel,

@@ -22,7 +22,8 @@ final class FallsReport {
     static String settings(FallSettings s) {
         return "impact ≥ " + s.impactMg() + " mg, posture change ≥ " + Math.round(s.postureChangeDeg())
                 + "°, still SD ≤ " + s.stillSdMg() + " mg for " + s.stillFor().toSeconds() + " s within "
-                + s.within().toSeconds() + " s";
+                + s.within().toSeconds() + " s" + (s.alreadyLyingDeg() < 180 ? ", not when already lying (≥ "
+                + Math.round(s.alreadyLyingDeg()) + "° from the learned upright) before the impact" : "");
     }
 
     static void print(PrintStream out, Path folder, boolean loso, List<Scored> scored, List<String> settings,

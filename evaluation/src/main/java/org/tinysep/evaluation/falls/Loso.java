@@ -19,6 +19,8 @@ final class Loso {
     static final double[] ANGLE_DEG = {45, 30, 60};
     static final int[] STILL_SD_MG = {100, 50, 150};
     static final int[] STILL_S = {4, 6};
+    /** 180 = the already-lying rule off. */
+    static final double[] ALREADY_LYING_DEG = {70, 60, 80, 180};
 
     /** A fold: the subject held out, the settings chosen without it, and its recordings judged with them. */
     record Fold(String subject, FallSettings chosen, List<Scored> scored) {
@@ -33,8 +35,10 @@ final class Loso {
             for (double angle : ANGLE_DEG) {
                 for (int sd : STILL_SD_MG) {
                     for (int still : STILL_S) {
-                        g.add(new FallSettings(impact, angle, sd, Duration.ofSeconds(still),
-                                FallSettings.DEFAULT.within()));
+                        for (double lying : ALREADY_LYING_DEG) {
+                            g.add(new FallSettings(impact, angle, sd, Duration.ofSeconds(still),
+                                    FallSettings.DEFAULT.within(), lying));
+                        }
                     }
                 }
             }
@@ -48,8 +52,8 @@ final class Loso {
         Map<FallSettings, Map<String, List<Scored>>> all = new LinkedHashMap<>();
         for (FallSettings s : grid) {
             Map<String, List<Scored>> per = new LinkedHashMap<>();
-            bySubject.forEach((subject, streams) -> per.put(subject,
-                    streams.parallelStream().map(x -> Scored.run(x, s)).toList()));
+            bySubject.entrySet().parallelStream().map(e -> Map.entry(e.getKey(), Scored.runSubject(e.getValue(), s)))
+                    .toList().forEach(e -> per.put(e.getKey(), e.getValue()));
             all.put(s, per);
         }
         List<Fold> folds = new ArrayList<>();

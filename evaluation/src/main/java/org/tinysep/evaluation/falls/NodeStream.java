@@ -38,7 +38,7 @@ record NodeStream(SisfallRecording recording, List<Event> events, Instant impact
         List<Acceleration> samples = new ArrayList<>(NodeResampler.toNode(r));
         int recordedSamples = samples.size();
         int rate = NodeResampler.NODE_RATE_HZ;
-        Acceleration rest = mean(samples.subList(Math.max(0, recordedSamples - rate), recordedSamples));
+        Acceleration rest = Acceleration.mean(samples.subList(Math.max(0, recordedSamples - rate), recordedSamples));
         for (int i = 0; i < REST_SECONDS * rate; i++) {
             samples.add(rest);
         }
@@ -69,18 +69,5 @@ record NodeStream(SisfallRecording recording, List<Event> events, Instant impact
         budget.recorded(recorded);
         Instant impact = T0.plusMillis(1000L * r.peakIndex() / SisfallRecording.RATE_HZ);
         return new NodeStream(r, List.copyOf(events), impact, recorded, budget, List.copyOf(samples));
-    }
-
-    private static Acceleration mean(List<Acceleration> v) {
-        long x = 0;
-        long y = 0;
-        long z = 0;
-        for (Acceleration a : v) {
-            x += a.xMg();
-            y += a.yMg();
-            z += a.zMg();
-        }
-        int n = Math.max(1, v.size());
-        return new Acceleration((int) (x / n), (int) (y / n), (int) (z / n));
     }
 }

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -12,6 +13,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.function.Function;
+import org.tinysep.api.sensor.person.Acceleration;
 import org.tinysep.evaluation.FallPlatforms;
 import org.tinysep.falldetection.internal.FallSettings;
 
@@ -26,7 +28,7 @@ final class ThroughPlatform {
     }
 
     static List<Scored> run(Path dist, Path work, Map<String, List<NodeStream>> bySubject,
-            Function<String, FallSettings> settings, int parallel) throws Exception {
+            Function<String, FallSettings> settings, int parallel, List<Scored> inProcess) throws Exception {
         if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
             throw new IllegalArgumentException("falls: no distribution at " + dist + " (build it: mvn -pl "
                     + "runtime/org.tinysep.launcher -am package -DskipTests, or run ./evaluate.sh, which builds it)");
@@ -39,9 +41,15 @@ final class ThroughPlatform {
                 futures.add(pool.submit(() -> subject(dist, runDir.resolve(e.getKey()), e.getValue(),
                         settings.apply(e.getKey()))));
             }
+            // the upright each recording began with, as the same detector class learned it in process (for --why)
+            Map<String, Acceleration> upright = new HashMap<>();
+            inProcess.forEach(s -> upright.put(s.stream().recording().name(), s.upright()));
             List<Scored> all = new ArrayList<>();
             for (Future<List<Scored>> f : futures) {
-                all.addAll(f.get());
+                for (Scored s : f.get()) {
+                    all.add(new Scored(s.stream(), s.alerts(), s.refused(),
+                            upright.get(s.stream().recording().name())));
+                }
             }
             return all;
         } finally {
@@ -57,14 +65,14 @@ final class ThroughPlatform {
         List<Scored> out = new ArrayList<>();
         for (int i = 0; i < streams.size(); i++) {
             List<Instant> at = alerts.get(i).stream().map(NodeStream.T0::plus).toList();
-            out.add(new Scored(streams.get(i), at, List.of()));
+            out.add(new Scored(streams.get(i), at, List.of(), null));
         }
         return out;
     }
 
     static String config(FallSettings s) {
         return String.format(Locale.ROOT, "impactMg=%d\npostureChangeDegrees=%s\nstillSdMg=%d\nstillSeconds=%d\n"
-                + "withinSeconds=%d", s.impactMg(), s.postureChangeDeg(), s.stillSdMg(), s.stillFor().toSeconds(),
-                s.within().toSeconds());
+                + "withinSeconds=%d\nalreadyLyingDegrees=%s", s.impactMg(), s.postureChangeDeg(), s.stillSdMg(),
+                s.stillFor().toSeconds(), s.within().toSeconds(), s.alreadyLyingDeg());
     }
 }

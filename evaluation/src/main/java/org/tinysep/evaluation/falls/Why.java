@@ -23,23 +23,27 @@ final class Why {
             String name = s.stream().recording().name();
             FallSettings d = settings.apply(s.stream().recording().subject());
             if (s.fall() && s.delay().isEmpty()) {
-                out.println("- missed " + name + ": " + missReason(s.stream(), d)
+                out.println("- missed " + name + ": " + missReason(s, d)
                         + (s.alerts().isEmpty() ? "" : "; alerts outside the 30 s window at "
                                 + offsets(s.alerts(), s.stream().impact())));
             } else if (!s.fall() && !s.alerts().isEmpty()) {
                 out.println("- false alert " + name + " at " + offsets(s.alerts(), NodeStream.T0)
-                        + " after its start: " + alertReason(s.stream(), d));
+                        + " after its start: " + alertReason(s, d));
             }
         }
     }
 
-    private static String missReason(NodeStream s, FallSettings d) {
+    private static String missReason(Scored s, FallSettings d) {
         if (alerts(s, d)) {
             return "the detector alerts on it in process with these settings: lost only through the platform "
                     + "(reports stamped with whole seconds, or a frame that did not arrive)";
         }
         if (alerts(s, d.withImpactMg(1))) {
             return "no impact reached " + d.impactMg() + " mg (or no burst was sent)";
+        }
+        if (alerts(s, d.withAlreadyLyingDeg(180))) {
+            return "the posture before the impact was " + Math.round(d.alreadyLyingDeg()) + "° or more from the "
+                    + "wearer's learned upright (taken for already lying)";
         }
         if (alerts(s, d.withPostureChangeDeg(0))) {
             return "the posture changed less than " + Math.round(d.postureChangeDeg()) + "°";
@@ -50,7 +54,7 @@ final class Why {
         return "only several settings relaxed together would alert";
     }
 
-    private static String alertReason(NodeStream s, FallSettings d) {
+    private static String alertReason(Scored s, FallSettings d) {
         if (!alerts(s, d)) {
             return "only through the platform: the detector in process is quiet with these settings";
         }
@@ -70,9 +74,9 @@ final class Why {
         return "a hard impact, a new posture and stillness, as in a fall";
     }
 
-    private static boolean alerts(NodeStream s, FallSettings f) {
-        Scored x = Scored.run(s, f);
-        return s.recording().isFall() ? x.delay().isPresent() : !x.alerts().isEmpty();
+    private static boolean alerts(Scored s, FallSettings f) {
+        Scored x = Scored.run(s.stream(), f, s.upright());
+        return s.fall() ? x.delay().isPresent() : !x.alerts().isEmpty();
     }
 
     private static String offsets(java.util.List<Instant> at, Instant from) {

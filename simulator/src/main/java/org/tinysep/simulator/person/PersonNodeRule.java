@@ -70,16 +70,10 @@ public final class PersonNodeRule {
     }
 
     static MovementSummary summarise(Instant end, List<Acceleration> samples) {
-        long sx = 0;
-        long sy = 0;
-        long sz = 0;
         double sm = 0;
         double sm2 = 0;
         double peak = 0;
         for (Acceleration a : samples) {
-            sx += a.xMg();
-            sy += a.yMg();
-            sz += a.zMg();
             double m = a.magnitudeMg();
             sm += m;
             sm2 += m * m;
@@ -89,7 +83,7 @@ public final class PersonNodeRule {
         double mean = sm / n;
         double sd = Math.sqrt(Math.max(0, sm2 / n - mean * mean));
         return new MovementSummary(end, Duration.ofMillis(1000L * n / RATE_HZ),
-                new Acceleration(Math.round(sx / (float) n), Math.round(sy / (float) n), Math.round(sz / (float) n)),
+                Acceleration.mean(samples),
                 (int) Math.round(sd), (int) Math.round(peak));
     }
 }

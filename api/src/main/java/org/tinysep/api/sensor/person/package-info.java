@@ -5,7 +5,7 @@
  * protocol is in {@code docs/protocols/sunspot.md} ("Person node").
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.api.sensor.person;
 
 import org.osgi.annotation.bundle.Export;

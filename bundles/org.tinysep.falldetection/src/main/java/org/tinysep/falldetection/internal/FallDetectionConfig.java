@@ -27,6 +27,11 @@ public @interface FallDetectionConfig {
             min = "1")
     int withinSeconds() default 20;
 
+    @AttributeDefinition(description = "An impact when the body was already this far from the wearer's upright "
+            + "(learned while they walk) is not a fall: they were lying already, turning over or getting up, "
+            + "degrees; 180 = off", min = "0", max = "180")
+    double alreadyLyingDegrees() default 70;
+
     @AttributeDefinition(description = "Time zone of the times in alerts, e.g. Europe/Berlin; empty = the system's")
     String timeZone() default "";
 }

@@ -15,7 +15,8 @@ import org.tinysep.api.sensor.person.MovementSummary;
  * The algorithm for one person node (README "Algorithm"): a burst whose peak reaches the impact level opens a
  * candidate; it becomes a fall when, within {@code within} after the impact, the node's summaries show stillness
  * (SD at most {@code stillSdMg}) for {@code stillFor} in a posture at least {@code postureChangeDeg} away from the one
- * before the impact. Not thread-safe: one caller at a time (the listener synchronises).
+ * before the impact. An impact while the body was already lying (at least {@code alreadyLyingDeg} from the wearer's
+ * upright, learned by {@link Upright}) opens none. Not thread-safe: one caller at a time (the listener synchronises).
  */
 public final class FallDetector {
 
@@ -36,9 +37,24 @@ public final class FallDetector {
     private final FallSettings settings;
     private final ArrayDeque<MovementSummary> summaries = new ArrayDeque<>();
     private final List<Candidate> candidates = new ArrayList<>();
+    private final Upright upright = new Upright();
 
     public FallDetector(FallSettings settings) {
         this.settings = settings;
+    }
+
+    /** @return the wearer's upright in the node's axes, once the detector has seen them walk ({@link Upright}) */
+    public Optional<Acceleration> upright() {
+        return upright.get();
+    }
+
+    /**
+     * A detector for a wearer whose upright is already known (learned by another detector of the same node, e.g.
+     * before a restart); it goes on learning from the summaries it is given.
+     */
+    public FallDetector(FallSettings settings, Acceleration knownUpright) {
+        this(settings);
+        upright.seed(knownUpright);
     }
 
     /**
@@ -71,13 +87,18 @@ public final class FallDetector {
         }
         Instant impact = b.trigger().plusNanos(
                 (peakAt - b.samplesBeforeTrigger()) * 1_000_000_000L / b.sampleRateHz());
-        candidates.add(new Candidate(impact, (int) Math.round(peak), postureBefore(b)));
+        Acceleration before = postureBefore(b);
+        if (alreadyLying(before)) {
+            return Optional.empty(); // turning over or getting up from lying: not a fall from standing or sitting
+        }
+        candidates.add(new Candidate(impact, (int) Math.round(peak), before));
         return check();
     }
 
     /** A movement summary arrived: @return a fall, when it completes one */
     public Optional<Fall> summary(MovementSummary m) {
         summaries.addLast(m);
+        upright.summary(m);
         while (!summaries.isEmpty() && summaries.peekFirst().end().isBefore(m.end().minus(KEEP))) {
             summaries.removeFirst();
         }
@@ -101,7 +122,7 @@ public final class FallDetector {
             return last.mean();
         }
         List<Acceleration> pre = b.samples().subList(0, Math.max(1, b.samplesBeforeTrigger()));
-        return mean(pre);
+        return Acceleration.mean(pre);
     }
 
     private Optional<Fall> check() {
@@ -140,7 +161,7 @@ public final class FallDetector {
             run.add(m);
             Duration still = Duration.between(run.get(0).end().minus(run.get(0).span()), m.end());
             if (still.compareTo(settings.stillFor()) >= 0) {
-                Acceleration after = mean(run.stream().map(MovementSummary::mean).toList());
+                Acceleration after = Acceleration.mean(run.stream().map(MovementSummary::mean).toList());
                 double angle = angle(c.before(), after);
                 if (angle >= settings.postureChangeDeg()) {
                     return Optional.of(new Fall(c.impact(), c.peakMg(), c.before(), after, angle, still, m.end()));
@@ -151,17 +172,13 @@ public final class FallDetector {
         return Optional.empty();
     }
 
-    static Acceleration mean(List<Acceleration> v) {
-        double x = 0;
-        double y = 0;
-        double z = 0;
-        for (Acceleration a : v) {
-            x += a.xMg();
-            y += a.yMg();
-            z += a.zMg();
-        }
-        int n = Math.max(1, v.size());
-        return new Acceleration((int) Math.round(x / n), (int) Math.round(y / n), (int) Math.round(z / n));
+    /**
+     * @return whether the posture before an impact is at least {@code alreadyLyingDeg} from the wearer's learned
+     *         upright (never while the upright is unknown, nor with the rule off at 180°)
+     */
+    private boolean alreadyLying(Acceleration before) {
+        return settings.alreadyLyingDeg() < 180 && upright.get()
+                .map(u -> angle(u, before) >= settings.alreadyLyingDeg()).orElse(false);
     }
 
     /** @return the angle between two vectors, degrees (0 when either is zero) */
