@@ -139,7 +139,8 @@ public class PerPersonInactivityTest extends AalTestSupport {
     /** Motion in the kitchen, and waits until Inactivity Recognition has taken it. */
     private void motion(AmicaNode kitchen, Device inactivityDevice, Instant now) throws IOException {
         kitchen.motion(true);
-        await(TIMEOUT, () -> parameter(inactivityDevice, "lastActivity").endsWith("in Kitchen at " + now),
+        await(TIMEOUT, () -> parameter(inactivityDevice, "lastActivity").startsWith("movement by ")
+                && parameter(inactivityDevice, "lastActivity").endsWith("in Kitchen at " + now),
                 "the kitchen's motion at " + now);
     }
 
