@@ -1,5 +1,6 @@
 package org.tinysep.api.service;
 
+import java.util.List;
 import java.util.Optional;
 import org.osgi.annotation.versioning.ProviderType;
 import org.tinysep.api.device.Provider;
@@ -12,4 +13,12 @@ public interface InactivityRecognitionProvider extends Provider<InactivityRecogn
 
     /** @return the current alert while {@link #state()} is {@link InactivityState#ALERT} */
     Optional<InactivityAlert> alert();
+
+    /**
+     * @return each wearer of a person node watched on their own (issue 26, item 4), in the order their nodes were
+     *         first heard; empty without person nodes (and from providers that do not watch persons). Since 1.2.
+     */
+    default List<PersonWatch> persons() {
+        return List.of();
+    }
 }

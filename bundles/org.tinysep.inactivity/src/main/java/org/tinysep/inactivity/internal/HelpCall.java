@@ -66,6 +66,11 @@ final class HelpCall {
         mailers.remove(uid);
     }
 
+    /** @return a Mail Manager present now, if any (a wearer's own alert goes there without an alert service) */
+    Optional<MailManagerProvider> mailer() {
+        return mailers.values().stream().findFirst();
+    }
+
     /** Hands {@code alert} over unless it was already; {@code send} never blocks (MailManagerProvider). */
     synchronized Outcome call(InactivityAlert alert) {
         Objects.requireNonNull(alert, "alert");
@@ -116,7 +121,7 @@ final class HelpCall {
     }
 
     /** The alert service of the framework this class runs in; empty outside one, without one, or when it fails. */
-    private static <T> Optional<T> inFramework(Function<AlertService, T> use) {
+    static <T> Optional<T> inFramework(Function<AlertService, T> use) {
         Bundle bundle = FrameworkUtil.getBundle(HelpCall.class);
         BundleContext context = bundle == null ? null : bundle.getBundleContext();
         if (context == null) {

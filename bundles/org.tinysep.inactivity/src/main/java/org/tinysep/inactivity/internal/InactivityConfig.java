@@ -44,6 +44,20 @@ public @interface InactivityConfig {
     @AttributeDefinition(description = "LEARNED: the night ends at this hour", min = "0", max = "23")
     int nightEndHour() default 7;
 
+    @AttributeDefinition(description = "Person nodes: a movement summary whose magnitude spread is above this many "
+            + "milli-g is the wearer's movement (the node itself calls at most 30 mg still)", min = "0")
+    int personMovingAboveMg() default 30;
+
+    @AttributeDefinition(description = "Person nodes: a node that moved at most this many seconds before a room "
+            + "sensor's activity is moving at that moment, so the activity is its wearer's and not another "
+            + "person's (about two summary periods of 2 s)", min = "1")
+    int personMovingWithinSeconds() default 5;
+
+    @AttributeDefinition(description = "Person nodes: a node that has not moved for this many minutes while room "
+            + "sensors see activity nobody else's node explains seems not to be worn: a notice, and its wearer is "
+            + "watched by the room sensors until it moves again", min = "1")
+    int personNotWornMinutes() default 120;
+
     @AttributeDefinition(description = "Time zone for the times in alert mails, e.g. 'Europe/Berlin'; empty for "
             + "the system's (also the zone of the learned hours of the day)")
     String timeZone() default "";

@@ -9,6 +9,13 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.presence.PresenceProvider;
+import org.tinysep.api.sensor.person.MovementSummary;
+import org.tinysep.api.sensor.person.PersonNodeListener;
+import org.tinysep.api.sensor.person.PersonNodeProvider;
+import org.tinysep.api.service.PersonWatch;
+import org.tinysep.inactivity.internal.person.PersonAlertWords;
+import org.tinysep.inactivity.internal.person.WearerSettings;
+import org.tinysep.inactivity.internal.person.Wearers;
 import org.tinysep.inactivity.internal.learn.Sighting;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
@@ -56,6 +63,10 @@ final class InactivityDevice extends WholeFlatDevice
     /** The activity sources connected so far (devices whose logged entries count as history). */
     private final Set<String> sources = ConcurrentHashMap.newKeySet();
     private volatile long lastResolve = System.nanoTime() - HEARTBEAT_NANOS;
+    /** Each wearer of a person node, watched on their own (issue 26, item 4; README "Activity per person"). */
+    private volatile PersonWatches persons;
+    /** The flat's alert not handed on because wearers have their own watches (said once per alert). */
+    private volatile Instant flatAlertLeftToPersons;
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
         this(context, directory, limits, words, LimitPolicy.thesis(), null);
@@ -75,6 +86,7 @@ final class InactivityDevice extends WholeFlatDevice
         this.activities = new ActivityFactory(directory, limits, policy, this::now, this::activity);
         this.help = new HelpCall(words);
         this.words = words;
+        watchPersons(WearerSettings.defaults(), java.time.ZoneId.systemDefault(), HelpCall::inFramework);
         limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
         status(DeviceStatus.State.ONLINE, "");
         publish(this, InactivityRecognitionProvider.class);
@@ -100,6 +112,42 @@ final class InactivityDevice extends WholeFlatDevice
     void watch(PresenceProvider p) {
         connect(p, PresenceProvider.class, activities, true);
         sources.add(p.deviceUid());
+    }
+
+    /** Sets how wearers of person nodes are watched (before any person node is given). */
+    void watchPersons(WearerSettings settings, java.time.ZoneId zone, HelpCall.AlertDesk desk) {
+        PersonAlertWords w = new PersonAlertWords(zone);
+        persons = new PersonWatches(new Wearers(settings, w::time), w, limitDefault(), desk, help::mailer);
+    }
+
+    private java.time.Duration limitDefault() {
+        synchronized (logic) {
+            return logic.defaultLimit();
+        }
+    }
+
+    /** A person node: its movement is its wearer's activity (its wearer gets a watch of their own). */
+    void use(PersonNodeProvider p) {
+        connect(p, PersonNodeProvider.class, new PersonNodeListener() {
+            @Override
+            public void movementSummarised(PersonNodeProvider source, MovementSummary summary) {
+                personMoved(source, summary);
+            }
+        }, false);
+    }
+
+    private void personMoved(PersonNodeProvider source, MovementSummary summary) {
+        Instant now = now();
+        PersonWatches.Moved m = persons.summary(source.deviceUid(), source.person(), summary, now);
+        m.events().forEach(this::event);
+        m.activity().ifPresent(a -> { // someone moved: the flat is active too
+            Optional<InactivityState> change;
+            synchronized (logic) {
+                logic.rebase(now);
+                change = logic.activity(a);
+            }
+            announce(change, a.at(), a.description());
+        });
     }
 
     /** @return the room type of a room House Information knows, else empty (for the learner's sleep rule) */
@@ -146,6 +194,7 @@ final class InactivityDevice extends WholeFlatDevice
     /** A provider went away: forget what this device held of it (the driver closes the connection). */
     void forget(String providerUid) {
         help.remove(providerUid);
+        persons.remove(providerUid);
         if (providerUid.equals(occupancySource)) {
             occupancySource = null;
             occupancy(Occupancy.UNKNOWN, now());
@@ -164,6 +213,7 @@ final class InactivityDevice extends WholeFlatDevice
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), a.description() + " in " + a.roomName());
+        persons.room(a, now).forEach(this::event);
     }
 
     /** The clock went back: says so in plain words (the logic already counts the quiet time from now). */
@@ -189,6 +239,7 @@ final class InactivityDevice extends WholeFlatDevice
             change = logic.occupancy(occupancy, at);
         }
         announce(change, at, "flat " + lower(occupancy));
+        persons.occupancy(occupancy, at).forEach(this::event);
     }
 
     /** Advances the algorithm's clock; called every platform second by the driver. */
@@ -201,6 +252,7 @@ final class InactivityDevice extends WholeFlatDevice
         }
         wentBack.ifPresent(from -> clockWentBack(from, now));
         announce(change, now, "limit reached");
+        persons.tick(now).forEach(this::event);
         resolveHistory();
         long wall = System.nanoTime();
         if (wall - lastHeartbeat >= HEARTBEAT_NANOS) {
@@ -228,6 +280,17 @@ final class InactivityDevice extends WholeFlatDevice
     private void mailPendingAlert() {
         Optional<InactivityAlert> a = alert();
         if (a.isEmpty()) {
+            return;
+        }
+        List<String> wearers = persons.watched();
+        if (!wearers.isEmpty()) { // each wearer's own watch calls for help for them (README "Activity per person")
+            if (!a.get().raisedAt().equals(flatAlertLeftToPersons)) {
+                flatAlertLeftToPersons = a.get().raisedAt();
+                event("the flat's inactivity alert is not handed on: " + String.join(", ", wearers) + " wear"
+                        + (wearers.size() == 1 ? "s a person node and is" : " person nodes and are") + " watched "
+                        + "on their own, and that watch calls for help (it counts the room sensors when nobody "
+                        + "else's node moves)");
+            }
             return;
         }
         HelpCall.Outcome outcome = help.call(a.get());
@@ -277,6 +340,11 @@ final class InactivityDevice extends WholeFlatDevice
     }
 
     @Override
+    public List<PersonWatch> persons() {
+        return persons.persons();
+    }
+
+    @Override
     protected List<Parameter> moreParameters() {
         synchronized (logic) {
             return List.of(
@@ -291,7 +359,9 @@ final class InactivityDevice extends WholeFlatDevice
                             "why the deadline is what it is (detector " + policy.name() + ")"),
                     Parameter.readOnly("alert", logic.alert().map(help::subject).orElse(""), "the raised alert"),
                     Parameter.readOnly("lastActivityPerRoom", rooms.describe(), "room uid = last activity there"),
-                    Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"));
+                    Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"),
+                    Parameter.readOnly("persons", persons.describe(), "wearers of person nodes, each watched on "
+                            + "their own"));
         }
     }
 

@@ -26,6 +26,8 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceProvider;
+import org.tinysep.api.sensor.person.PersonNodeProvider;
+import org.tinysep.inactivity.internal.person.WearerSettings;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
@@ -60,6 +62,8 @@ public final class InactivityDriver extends AbstractDriver {
     private LearnedMemory memory;
     private ScheduledExecutorService loader;
     private UnmonitoredRooms unmonitored;
+    private WearerSettings wearers;
+    private ZoneId zone;
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
             policyOption = ReferencePolicyOption.GREEDY)
@@ -72,8 +76,9 @@ public final class InactivityDriver extends AbstractDriver {
     @Activate
     void activate(BundleContext bundleContext, InactivityConfig config) {
         limits = LimitTable.parse(config.defaultLimitMinutes(), config.typeLimits(), config.roomLimits());
-        ZoneId zone = zone(config.timeZone());
+        zone = zone(config.timeZone());
         start(bundleContext);
+        wearers = wearers(config);
         unmonitored = new UnmonitoredRooms(bundleContext);
         words = new AlertMail(zone, unmonitored::now);
         policy = policy(config, zone);
@@ -82,6 +87,7 @@ public final class InactivityDriver extends AbstractDriver {
         wiring.optional(bundleContext, FlatOccupancyProvider.class, InactivityDevice::use);
         wiring.optional(bundleContext, MailManagerProvider.class, InactivityDevice::use);
         wiring.optional(bundleContext, HouseInformationProvider.class, InactivityDevice::use);
+        wiring.optional(bundleContext, PersonNodeProvider.class, InactivityDevice::use);
         wiring.source(bundleContext, MovementProvider.class, (d, p) -> d.watch(p));
         wiring.source(bundleContext, DoorProvider.class, (d, p) -> d.watch(p));
         wiring.source(bundleContext, WindowProvider.class, (d, p) -> d.watch(p));
@@ -168,10 +174,25 @@ public final class InactivityDriver extends AbstractDriver {
     /** @return the single device (not yet registered), its room types known to the learner */
     private InactivityDevice newDevice() {
         InactivityDevice d = new InactivityDevice(context(), directory, limits, words, policy, fromLog);
+        d.watchPersons(wearers, zone, HelpCall::inFramework);
         if (learner != null) {
             learner.roomTypes(d::roomType);
         }
         return d;
+    }
+
+    /** The person-node settings (README "Activity per person"); the defaults when they are not usable. */
+    private WearerSettings wearers(InactivityConfig config) {
+        try {
+            return new WearerSettings(config.personMovingAboveMg(),
+                    Duration.ofSeconds(config.personMovingWithinSeconds()),
+                    Duration.ofMinutes(config.personNotWornMinutes()));
+        } catch (IllegalArgumentException e) {
+            LOG.warn("person node settings not usable ({}); using the defaults", e.getMessage());
+            context().event(EventKind.PROBLEM, "person node settings not usable (" + e.getMessage()
+                    + "); using the defaults: movement above 30 mg, moving within 5 s, not worn after 120 min");
+            return WearerSettings.defaults();
+        }
     }
 
     private ZoneId zone(String id) {

@@ -191,6 +191,11 @@ final class InactivityLogic {
         return state;
     }
 
+    /** @return the limit used while no activity has been seen since watching began */
+    Duration defaultLimit() {
+        return defaultLimit;
+    }
+
     Instant since() {
         return since;
     }

@@ -85,6 +85,21 @@ final class InactivityConfigDefaults implements InactivityConfig {
     }
 
     @Override
+    public int personMovingAboveMg() {
+        return number("personMovingAboveMg");
+    }
+
+    @Override
+    public int personMovingWithinSeconds() {
+        return number("personMovingWithinSeconds");
+    }
+
+    @Override
+    public int personNotWornMinutes() {
+        return number("personNotWornMinutes");
+    }
+
+    @Override
     public Class<? extends Annotation> annotationType() {
         return InactivityConfig.class;
     }
