@@ -24,7 +24,9 @@ import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertService;
 import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.api.sensor.person.PersonNodeProvider;
 import org.tinysep.itests.LockStepTestSupport;
+import org.tinysep.itests.Topology;
 import org.tinysep.simulator.cli.Run;
 import org.tinysep.simulator.cli.Simulation;
 import org.tinysep.simulator.flat.Flat;
@@ -69,6 +71,10 @@ public class DemoFallTest extends LockStepTestSupport {
         try {
             // a day without the pendant: the room sensors only; the inactivity alert is the fallback
             simulate(executor, "13:40", "13:45", "--no-pendant");
+            // every room sensor connected (wall time, however loaded the machine) before the day goes on
+            await(Duration.ofSeconds(60), () -> Topology.of(context).stream()
+                    .filter(l -> l.startsWith("InactivityRecognition <- MovementProvider")).count() == 7,
+                    "flat A's movement sensors connected");
             simulate(executor, "13:45", "14:50", "--no-pendant");
             List<Alert> day1 = alerts.recent(100);
             assertTrue("no FALL alert without the pendant: " + day1, day1.stream().noneMatch(a -> a.kind() == AlertKind.FALL));
@@ -81,6 +87,9 @@ public class DemoFallTest extends LockStepTestSupport {
 
             // the next day with the pendant (the platform's day has passed 13:40: the simulator plays the next)
             simulate(executor, "13:40", "13:45");
+            PersonNodeProvider pendant = awaitService(PersonNodeProvider.class, null, TIMEOUT);
+            await(Duration.ofSeconds(60), () -> pendant.person().equals(java.util.Optional.of("Anna")),
+                    "the pendant named Anna by the configuration");
             simulate(executor, "13:45", "14:10");
             List<Alert> falls = alerts.recent(100).stream().filter(a -> a.kind() == AlertKind.FALL).toList();
             assertEquals("one FALL alert: " + falls, 1, falls.size());
