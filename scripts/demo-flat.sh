@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # The demo flat of ./run.sh: when no hardware is configured, the platform runs with the simulated flat A
-# (simulator/, 20 AmICA + 3 Sun SPOT nodes, a person and a dog, demo-day scenario) in lock-step virtual time.
+# (simulator/, 20 AmICA + 3 Sun SPOT nodes, Anna's pendant, a person and a dog, demo-day scenario) in lock-step
+# virtual time.
 # The demo runs in its own throwaway state: it never writes the distribution's etc/ nor the user's state folder.
 #   scripts/demo-flat.sh wanted <dist>          exit 0 if the demo should run (TINYSEP_DEMO != 0, no hardware configured)
 #   scripts/demo-flat.sh prepare <dist> <demo>  (re)creates the demo folder <demo>, wiping the previous demo's:
 #       <demo>/home  the demo's distribution: bundles/ (a link to <dist>/bundles), deploy/ (empty), etc/ = a copy of
 #                    <dist>/etc without the Mail Manager's settings (the demo never mails a real caregiver), plus
-#                    flat A's room placements and the clock in EXTERNAL mode (the simulator drives it)
+#                    flat A's room placements, who wears its person nodes (Anna) and the clock in EXTERNAL mode (the
+#                    simulator drives it)
 #       <demo>/var   the demo's state folder: flat A's house plan, the synchroniser key sync.key (0600)
 #     start the platform with:  java -jar <dist>/tinysep.jar --home <demo>/home --var <demo>/var
 #     (a demo home, not a launcher option for another etc/: whatever finds etc/ through tinysep.home - FileInstall,
@@ -19,6 +21,9 @@
 #       or when <pid> has not bound them within TINYSEP_DEMO_WAIT (default 60) s
 #   scripts/demo-flat.sh simulate <dist> <demo> [<pid>] runs the simulated day against that platform (waits for it
 #       first, up to TINYSEP_DEMO_WAIT=60 s; with <pid>, refuses - exit 3 - unless the ports are that process's).
+#       Anna wears a pendant (a Sun SPOT person node, flat A's anna-pendant): her collapse is a fall it reports, a
+#       FALL alert within seconds. TINYSEP_DEMO_PENDANT=0: a day without the pendant (simulator --no-pendant): the
+#       room sensors only, and the inactivity alert after the bathroom's limit is what notices her collapse.
 #       TINYSEP_DEMO_FROM / TINYSEP_DEMO_UNTIL: the span, HH:MM (default 06:30-23:00). The platform's clock stays
 #       on the demo day afterwards (syncTimeout=0, no BYE) until the user says `tinysep:time real`;
 #       TINYSEP_DEMO_RELEASE=1 returns it to real time at the end instead
@@ -39,6 +44,12 @@ hardware_configured() {
   grep -Eq '^[[:space:]]*(serialPort[[:space:]]*=[[:space:]]*[^[:space:]]|sdkEnabled[[:space:]]*=[[:space:]]*true)' \
     "$etc/org.tinysep.sunspot.busradio.cfg" 2>/dev/null && return 0
   return 1
+}
+
+persons() { # node address=wearer for every person node of flat A (option person=<name>)
+  grep -v '^[[:space:]]*#' "$flat/nodes.txt" | awk -F'|' 'NF >= 6 && match($6, /person=[^ \t]+/) {
+    gsub(/^[ \t]+|[ \t]+$/, "", $3);
+    printf "%s%s=%s", (n++ ? ", " : ""), $3, substr($6, RSTART + 7, RLENGTH - 7) }'
 }
 
 placements() { # node address=room for every node of flat A except pet collars (they move with the pet)
@@ -159,6 +170,7 @@ case "$cmd" in
       case "$(basename "$f")" in
         org.tinysep.mailmanager.cfg) ;; # the demo never mails a real caregiver: alerts are written to the console
         org.tinysep.timecontroller.cfg | org.tinysep.houseinformation.placement.cfg) ;; # the demo's own, below
+        org.tinysep.sunspot.person.cfg) ;; # the demo's own, below
         *) cp -p "$f" "$demo/home/etc/" ;;
       esac
     done
@@ -166,6 +178,10 @@ case "$cmd" in
       echo "# demo flat A: node address = room (demo state, scripts/demo-flat.sh)"
       echo "placements=$(placements)"
     } > "$demo/home/etc/org.tinysep.houseinformation.placement.cfg"
+    {
+      echo "# demo flat A: who wears which person node (demo state, scripts/demo-flat.sh)"
+      echo "persons=$(persons)"
+    } > "$demo/home/etc/org.tinysep.sunspot.person.cfg"
     {
       echo "# demo flat A: the simulator drives the clock; it stays on the demo day until tinysep:time real"
       echo "# (demo state, scripts/demo-flat.sh)"
@@ -204,6 +220,14 @@ case "$cmd" in
     fi
     release=()
     [ "${TINYSEP_DEMO_RELEASE:-0}" = "1" ] && release=(--release-clock)
+    if [ "${TINYSEP_DEMO_PENDANT:-1}" = "0" ]; then
+      release+=(--no-pendant)
+      echo "DEMO: a day without the pendant (TINYSEP_DEMO_PENDANT=0, simulator --no-pendant): only the room sensors"
+      echo "  watch; Anna's collapse at 14:02 is noticed by the inactivity alert once the bathroom's limit has passed"
+    else
+      echo "DEMO: Anna wears her pendant (person node $(persons)): her collapse at 14:02 is a FALL alert within seconds;"
+      echo "  TINYSEP_DEMO_PENDANT=0 plays the day without it (the room sensors' inactivity alert is the fallback)"
+    fi
     exec java -jar "$jar" --lockstep --wait-platform "${TINYSEP_DEMO_WAIT:-60}" \
       --from "${TINYSEP_DEMO_FROM:-06:30}" --until "${TINYSEP_DEMO_UNTIL:-23:00}" \
       --progress 120 ${release[@]+"${release[@]}"} --sync-key "$demo/var/sync.key" \

@@ -42,7 +42,7 @@ async function acknowledge(flat, id) {
 function row(f) {
   const alerts = el('td', {});
   for (const a of f.alerts) {
-    const item = el('div', {class: 'alert-' + a.state.toLowerCase()}, a.state + ' · ' + a.explanation);
+    const item = el('div', {class: 'alert-' + a.state.toLowerCase()}, a.state + ' · ' + (a.kindWords ? a.kindWords + ' · ' : '') + a.explanation);
     if (a.state === 'OPEN') item.append(' ', el('button', {type: 'button', onclick: () => acknowledge(f.flat, a.id)}, 'Acknowledge'));
     alerts.append(item);
   }

@@ -50,6 +50,19 @@ async function refresh() {
     detail.textContent = (c.inactivity.state === 'WATCHING' ? 'Someone is home; an alert is raised when activity stops for longer than the room\'s limit.'
       : 'Nobody seems to be home: not watching.') + (c.inactivity.sight ? ' ' + c.inactivity.sight : '');
   }
+  // the person nodes (issue 26): who wears each, when it last reported, its battery; whether it is worn: later
+  const persons = Tiny.clear(document.getElementById('person-nodes'));
+  const nodes = c.personNodes || [];
+  if (!nodes.length) persons.append(Tiny.el('p', {class: 'muted'}, 'No person node: nobody wears a node (help button, fall detection).'));
+  for (const n of nodes) {
+    persons.append(Tiny.el('div', {class: 'card person-node', 'data-node': n.node},
+      Tiny.el('h3', {}, n.person ? n.person : n.name),
+      Tiny.el('div', {class: n.online === false ? 'error' : ''}, (n.lastReport ? Tiny.time(n.lastReport) + ': ' : '') + n.lastReportWords),
+      Tiny.el('div', {class: n.batteryLow ? 'warning' : 'muted'}, 'Battery: ' + n.batteryWords),
+      // WORN: Inactivity Recognition's persons() will say whether the node is worn (wornWords until then)
+      Tiny.el('div', {class: 'muted'}, 'Worn: ' + n.wornWords),
+      Tiny.el('div', {class: 'muted'}, n.personWords + ' · node ' + n.node)));
+  }
   const body = Tiny.clear(document.getElementById('rooms'));
   for (const r of c.rooms) {
     const a = r.lastActivity;
@@ -67,11 +80,16 @@ async function alerts() {
   const list = Tiny.clear(document.getElementById('alert-list'));
   for (const alert of a.alerts) {
     const out = Tiny.el('span', {class: 'muted'});
-    list.append(Tiny.el('p', {class: 'error alert'}, alert.text + ' ', Tiny.el('button', {type: 'button', class: 'acknowledge',
+    // what it is about and its explanation in words (a FALL alert: impact, stillness, turn, where last seen)
+    list.append(Tiny.el('p', {class: 'error alert', 'data-kind': alert.kind},
+      Tiny.el('b', {class: 'alert-kind'}, (alert.kindWords || alert.kind) + ': '), alert.text + ' ', Tiny.el('button', {type: 'button', class: 'acknowledge',
       onclick: async () => {
         try { await Tiny.api('POST', 'alerts/' + encodeURIComponent(alert.id) + '/acknowledge'); await alerts(); }
         catch (e) { out.textContent = e.message; }
       }}, 'Acknowledge'), ' ', out));
+    if (alert.explanation && alert.explanation !== alert.text) {
+      list.append(Tiny.el('p', {class: 'alert-explanation'}, alert.explanation));
+    }
     if (alert.reached && alert.reached.length) { // which channel reached whom (issue 27)
       list.append(Tiny.el('ul', {class: 'muted reached'}, ...alert.reached.map(r => Tiny.el('li', {}, r))));
     }

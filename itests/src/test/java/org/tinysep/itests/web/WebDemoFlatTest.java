@@ -50,7 +50,8 @@ public class WebDemoFlatTest extends WebTestSupport {
 
     @Override
     protected List<String> applications() {
-        return plus(super.applications(), "org.tinysep.alerts", "org.tinysep.sensorhealth");
+        return plus(super.applications(), "org.tinysep.alerts", "org.tinysep.sensorhealth",
+                "org.tinysep.sunspot.person", "org.tinysep.falldetection"); // Anna's pendant (issue 26)
     }
 
     @Override
@@ -65,6 +66,7 @@ public class WebDemoFlatTest extends WebTestSupport {
         Map<String, Map<String, String>> configs = new LinkedHashMap<>(super.initialConfigurations());
         LockStepTestSupport.putLockStepTime(configs);
         DemoFlat.configure(configs, "tinysep-web-demo-house-", DYING_NODE + "=Bathroom");
+        configs.put("org.tinysep.sunspot.person", Map.of("persons", "0014.4F01.0000.0A04=Anna")); // as demo-flat.sh
         return configs;
     }
 
@@ -162,6 +164,14 @@ public class WebDemoFlatTest extends WebTestSupport {
                         + " && Array.from(document.querySelectorAll('#sensor-problems li.low-battery')).some(l => l.textContent"
                         + ".includes('(node " + DYING_NODE + ") in the Bathroom is low (2150 mV)'))",
                         "the activity plot, the open alert with its Acknowledge button, the sensors offline and the low battery");
+                // issue 26: Anna's fall (her pendant) in words, and her pendant's last report and battery
+                browser.waitFor("Array.from(document.querySelectorAll('#alert-list p[data-kind=FALL]')).some(p => p.textContent"
+                        + ".startsWith('fall (the person may have fallen): Fall: Anna fell at 14:0'))"
+                        + " && Array.from(document.querySelectorAll('#alert-list p.alert-explanation')).some(p => p.textContent"
+                        + ".includes('last seen in the Bathroom at '))"
+                        + " && Array.from(document.querySelectorAll('#person-nodes .person-node')).some(n => n.textContent"
+                        + ".startsWith('Anna') && n.textContent.includes('Battery: not reported'))", WAIT,
+                        "the FALL alert with its explanation and Anna's pendant");
                 shot(browser, "caregiver", 1250); // the alerts and the sensors below the cards
             } catch (AssertionError | RuntimeException e) {
                 log.error("Demo flat browser test failed at '{}'; {}", step, browser.failureScreenshot("web-demo-screenshots", step));

@@ -123,6 +123,27 @@ class DemoFlatScriptTest {
             String clock = Files.readString(tmp.resolve("demo/home/etc/org.tinysep.timecontroller.cfg"));
             assertTrue(clock.contains("syncTimeout=0") && clock.contains("mode=EXTERNAL"),
                     "the clock stays on the demo day: " + clock);
+            // issue 26: Anna wears the demo flat's person node, named by the Sun SPOT Person configuration
+            assertEquals("persons=0014.4F01.0000.0A04=Anna", Files.readString(
+                    tmp.resolve("demo/home/etc/org.tinysep.sunspot.person.cfg")).lines()
+                    .filter(l -> l.startsWith("persons=")).findFirst().orElseThrow());
         }
+    }
+
+    /** Issue 26: the demo day is played with Anna's pendant unless TINYSEP_DEMO_PENDANT=0 says a day without it. */
+    @Test
+    void theDayWithoutThePendantIsTheDocumentedSwitch() throws Exception {
+        Path demo = demo(1, 1, 1); // nobody answers there: the simulator gives up after a second
+        Map<String, String> quick = Map.of("TINYSEP_DEMO_DELAY", "0", "TINYSEP_DEMO_WAIT", "1");
+        Result with = script(quick, "simulate", tmp.resolve("dist").toString(), demo.toString());
+        assertTrue(with.output().contains("DEMO: Anna wears her pendant (person node 0014.4F01.0000.0A04=Anna): her "
+                + "collapse at 14:02 is a FALL alert within seconds"), with.output());
+        Map<String, String> without = new java.util.HashMap<>(quick);
+        without.put("TINYSEP_DEMO_PENDANT", "0");
+        Result r = script(without, "simulate", tmp.resolve("dist").toString(), demo.toString());
+        assertTrue(r.output().contains("DEMO: a day without the pendant (TINYSEP_DEMO_PENDANT=0, simulator "
+                + "--no-pendant)"), r.output());
+        assertTrue(!r.output().contains("unknown option") && !r.output().contains("unexpected argument"),
+                "the simulator takes --no-pendant: " + r.output());
     }
 }

@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Random;
 import java.util.function.BiConsumer;
 import org.tinysep.simulator.flat.House;
+import org.tinysep.simulator.node.Wearer;
 
 /**
  * Moves the agents through the house, one virtual second at a time: applies the scenario's steps at their
@@ -79,6 +80,9 @@ public final class Director {
             walk(a, t);
             if (a.home()) {
                 wanderer.maybeWander(a, t);
+            }
+            if (!a.pet) {
+                world.personState(a.name, Wearer.State.valueOf(a.state.name()), t); // what a worn node feels
             }
             if (a.state == Agent.State.ACTIVE) {
                 if (a.pet && t - a.lastMove < 20) {

@@ -11,6 +11,7 @@ import java.util.NavigableSet;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentSkipListSet;
 import org.tinysep.simulator.node.Environment;
+import org.tinysep.simulator.node.Wearer;
 
 /**
  * What the agents did, as the sensors see it: the last second a person moved in each room, the last second each
@@ -25,6 +26,7 @@ public final class World implements Environment {
     private final Map<String, Long> personMotion = new ConcurrentHashMap<>();
     private final Map<String, Long> petMotion = new ConcurrentHashMap<>();
     private final Map<String, NavigableSet<Long>> doorOpened = new ConcurrentHashMap<>();
+    private final Map<String, Wearer> wearers = new ConcurrentHashMap<>();
     private final List<String> trace = Collections.synchronizedList(new ArrayList<>());
 
     void personMoved(String room, long second) {
@@ -37,6 +39,16 @@ public final class World implements Environment {
 
     void doorPassed(String room, long second) {
         doorOpened.computeIfAbsent(room, r -> new ConcurrentSkipListSet<>()).add(second);
+    }
+
+    /** A person's state at second {@code t} (recorded every second); since when it holds is kept. */
+    void personState(String person, Wearer.State state, long t) {
+        wearers.compute(person, (k, w) -> w != null && w.state() == state ? w : new Wearer(state, t));
+    }
+
+    @Override
+    public Wearer wearer(String person) {
+        return wearers.getOrDefault(person, Wearer.AWAY);
     }
 
     void trace(long t, String who, String what) {

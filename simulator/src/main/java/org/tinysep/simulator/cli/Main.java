@@ -43,7 +43,7 @@ public final class Main {
             ReplayRunner.run(o);
             return;
         }
-        Flat flat = FlatLoader.load(o.flat());
+        Flat flat = o.noPendant() ? FlatLoader.load(o.flat()).withoutPersonNodes() : FlatLoader.load(o.flat());
         Scenario scenario = Simulation.scenario(o.scenario(), flat);
         InetAddress host = InetAddress.getByName(o.target());
         Target target = new Target(host, o.amicaPort(), o.sunSpotPort());

@@ -10,7 +10,8 @@ import java.util.TreeMap;
 record Options(String flat, String scenario, String target, int amicaPort, int sunSpotPort, int syncPort,
         double speed, boolean lockstep, long seed, int fromSecond, int untilSecond, LocalDate date,
         int progressMinutes, int paceMillis, int jitter, double wander, String replay, String mapping,
-        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds, java.time.LocalDateTime end) {
+        boolean fullRate, String syncKey, boolean releaseClock, int waitSeconds, java.time.LocalDateTime end,
+        boolean noPendant) {
 
     static final String USAGE = """
             usage: java -jar org.tinysep.simulator-<version>.jar [options]
@@ -23,6 +24,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
               --lockstep                   lock-step with the Time Controller (platform: tinysep:time external)
               --sync-key <file>            lock-step: the platform's synchroniser key (<state folder>/sync.key)
               --release-clock              lock-step: at the end, BYE returns the platform clock to REAL time
+              --no-pendant                 leave out the flat's worn person nodes (a day without the pendant:
+                                           only the room sensors; the demo's TINYSEP_DEMO_PENDANT=0)
               --wait-platform <seconds>    lock-step: keep asking a platform that does not answer yet (default 0)
               --speed <factor>             real-time mode: virtual seconds per wall second (default 1)
               --seed <n>                   random variations (default 1)
@@ -48,12 +51,15 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
         Map<String, String> m = new TreeMap<>();
         boolean lockstep = false;
         boolean release = false;
+        boolean noPendant = false;
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             if (a.equals("--lockstep")) {
                 lockstep = true;
             } else if (a.equals("--release-clock")) {
                 release = true;
+            } else if (a.equals("--no-pendant")) {
+                noPendant = true;
             } else if (a.startsWith("--") && i + 1 < args.length) {
                 m.put(a.substring(2), args[++i]);
             } else {
@@ -67,7 +73,8 @@ record Options(String flat, String scenario, String target, int amicaPort, int s
                 (int) number(m, "progress", "60"), (int) number(m, "pace-ms", "5"), (int) number(m, "jitter", "90"),
                 number(m, "wander", "0.002"), take(m, "replay", null), take(m, "mapping", null),
                 rate(take(m, "rate", "full")), take(m, "sync-key", null), release,
-                (int) number(m, "wait-platform", "0"), m.containsKey("end") ? end(take(m, "end", null)) : null);
+                (int) number(m, "wait-platform", "0"), m.containsKey("end") ? end(take(m, "end", null)) : null,
+                noPendant);
         if (!m.isEmpty()) {
             throw new IllegalArgumentException("unknown option(s) " + m.keySet());
         }

@@ -10,6 +10,11 @@ public record Flat(String name, House house, List<NodeSpec> nodes) {
         nodes = List.copyOf(nodes);
     }
 
+    /** @return the flat without its worn person nodes (a day without the pendant: the room sensors only) */
+    public Flat withoutPersonNodes() {
+        return new Flat(name, house, nodes.stream().filter(n -> !n.has("person")).toList());
+    }
+
     /** @return the room of the flat's outer door (where people leave and arrive), if it has one */
     public Optional<String> entrance() {
         return nodes.stream().filter(NodeSpec::outerDoor).map(NodeSpec::room).findFirst();

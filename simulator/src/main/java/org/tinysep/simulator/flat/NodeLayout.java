@@ -82,8 +82,9 @@ public final class NodeLayout {
                     continue;
                 }
                 String[] kv = o.split("=", 2);
-                if (kv.length != 2 || !Set.of("door", "agent", "percent").contains(kv[0])) {
-                    throw new IllegalArgumentException("bad option '" + o + "' (door=outer|inner, agent=<pet>, percent=<0..100>)");
+                if (kv.length != 2 || !Set.of("door", "agent", "percent", "person").contains(kv[0])) {
+                    throw new IllegalArgumentException("bad option '" + o + "' (door=outer|inner, agent=<pet or "
+                            + "wearer>, percent=<0..100>, person=<wearer's name for the platform>)");
                 }
                 options.put(kv[0], kv[1]);
             }
@@ -112,8 +113,14 @@ public final class NodeLayout {
         if (percent != null && !percent.matches("\\d{1,3}") || percent != null && Integer.parseInt(percent) > 100) {
             throw new IllegalArgumentException("percent must be 0..100");
         }
-        if (options.containsKey("agent") && !types.contains("pet-collar")) {
-            throw new IllegalArgumentException("agent=<pet> needs node type pet-collar");
+        if (options.containsKey("agent") && !types.contains("pet-collar") && !types.contains("person")) {
+            throw new IllegalArgumentException("agent=<pet> needs node type pet-collar (agent=<wearer>: person)");
+        }
+        if (types.contains("person") && !options.containsKey("agent")) {
+            throw new IllegalArgumentException("a person node needs agent=<the person of the scenario who wears it>");
+        }
+        if (options.containsKey("person") && !types.contains("person")) {
+            throw new IllegalArgumentException("person=<name> needs node type person");
         }
     }
 }

@@ -24,7 +24,7 @@ public record NodeSpec(String id, Family family, String address, List<String> ty
         return has("door") && "outer".equals(options.get("door"));
     }
 
-    /** @return the agent carrying this node (a pet collar), or null when the node is fixed in its room */
+    /** @return the agent carrying this node (a pet collar, a worn person node), or null when it is fixed in its room */
     public String carriedBy() {
         return options.get("agent");
     }

@@ -11,4 +11,9 @@ public interface Environment {
 
     /** @return true if the outer door in {@code room} stands open at {@code second} */
     boolean doorOpen(String room, long second);
+
+    /** @return what the person {@code agent} is doing, for the node they wear; AWAY when not known */
+    default Wearer wearer(String agent) {
+        return Wearer.AWAY;
+    }
 }

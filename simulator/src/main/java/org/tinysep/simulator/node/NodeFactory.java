@@ -13,7 +13,17 @@ import org.tinysep.simulator.flat.NodeSpec;
 /** Creates the nodes of a flat: one UDP socket per AmICA node, one shared socket for the Sun SPOTs. */
 public final class NodeFactory {
 
+    private static List<org.tinysep.api.sensor.person.Acceleration> fall;
+
     private NodeFactory() {
+    }
+
+    /** @return the fall a worn person node plays at its wearer's collapse (read once) */
+    private static synchronized List<org.tinysep.api.sensor.person.Acceleration> fall() throws IOException {
+        if (fall == null) {
+            fall = PendantNode.fallRecording();
+        }
+        return fall;
     }
 
     /** Nodes that also carry out commands as they arrive (real time); see {@link #create(Flat, Environment, Target, Consumer, boolean)}. */
@@ -47,7 +57,8 @@ public final class NodeFactory {
                         spots = new SunSpotPort(target);
                         resources.add(spots::close);
                     }
-                    nodes.add(new SunSpotNode(s, spots, env, conditions));
+                    nodes.add(s.has("person") ? new PendantNode(s, spots, env, fall())
+                            : new SunSpotNode(s, spots, env, conditions));
                 }
             }
             receiver = new CommandReceiver(amica, !lockstep);

@@ -66,6 +66,13 @@ public final class PersonNodeFrames implements PersonNodeRule.Output {
         return sorted;
     }
 
+    /** @return every frame so far, in the order the node sends them, and forgets them (a live node's radio) */
+    public List<Timed> drain() {
+        List<Timed> sorted = frames();
+        frames.clear();
+        return sorted;
+    }
+
     private static AccelerationSample sample(Acceleration a) {
         return new AccelerationSample(a.xMg(), a.yMg(), a.zMg());
     }

@@ -62,6 +62,22 @@ public record SisfallRecording(String code, String subject, String trial, int[] 
         }
     }
 
+    /**
+     * Reads a recording from a stream, e.g. one shipped inside the simulator's jar.
+     *
+     * @param name the recording's file name (SisFall's: {@code F01_SX01_R01.txt.gz}; {@code .gz}: compressed)
+     */
+    public static SisfallRecording read(String name, InputStream stream) throws IOException {
+        Matcher m = NAME.matcher(name);
+        if (!m.matches()) {
+            throw new IllegalArgumentException(name + ": not a SisFall recording's name");
+        }
+        try (InputStream in = m.group(4) != null ? new GZIPInputStream(stream) : stream;
+                BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.US_ASCII))) {
+            return parse(m.group(1), m.group(2), m.group(3), r, name);
+        }
+    }
+
     private static SisfallRecording parse(String code, String subject, String trial, BufferedReader r, String where)
             throws IOException {
         int[][] axes = new int[3][4096];

@@ -18,7 +18,10 @@ class FlatLoaderTest {
         Flat flat = FlatLoader.load("flat-a");
         assertEquals(6, flat.house().rooms().size());
         assertEquals(20, flat.nodes().stream().filter(n -> n.family() == Family.AMICA).count());
-        assertEquals(3, flat.nodes().stream().filter(n -> n.family() == Family.SUNSPOT).count());
+        assertEquals(3, flat.nodes().stream().filter(n -> n.family() == Family.SUNSPOT && !n.has("person")).count());
+        // and Anna's pendant (issue 26): a Sun SPOT person node she carries
+        assertEquals("anna", flat.nodes().stream().filter(n -> n.has("person")).findFirst().orElseThrow().carriedBy());
+        assertEquals(23, flat.withoutPersonNodes().nodes().size());
         assertEquals("Hall", flat.entrance().orElseThrow());
         for (String room : List.of("Hall", "Living Room", "Kitchen", "Bathroom", "Bedroom", "Study")) {
             assertTrue(flat.nodes().stream().anyMatch(n -> n.room().equals(room) && n.has("movement")), room + " movement");

@@ -43,15 +43,30 @@ public final class FallDetection {
     private final DriverContext log;
     private final FallSettings settings;
     private final FallWords words;
+    /** Where the person was last seen (room sensors); null: not watched (unit tests) */
+    private final LastSeen seen;
+    private final LastSeenWatch watch;
 
     @Activate
     public FallDetection(BundleContext context, FallDetectionConfig config,
             @Reference AlertService alerts) {
         this(new DriverContext(context, PID, "Fall Detection"), FallSettings.of(config), zone(config.timeZone()),
-                alerts);
+                alerts, new LastSeenWatch(context));
+    }
+
+    private FallDetection(DriverContext log, FallSettings settings, ZoneId zone, AlertService alerts,
+            LastSeenWatch watch) {
+        this(log, settings, zone, alerts, watch.lastSeen(), watch);
     }
 
     FallDetection(DriverContext log, FallSettings settings, ZoneId zone, AlertService alerts) {
+        this(log, settings, zone, alerts, null, null);
+    }
+
+    FallDetection(DriverContext log, FallSettings settings, ZoneId zone, AlertService alerts, LastSeen seen,
+            LastSeenWatch watch) {
+        this.seen = seen;
+        this.watch = watch;
         this.log = log;
         this.settings = settings;
         this.words = new FallWords(zone);
@@ -87,6 +102,9 @@ public final class FallDetection {
     void deactivate() {
         connections.values().forEach(Connection::close);
         connections.clear();
+        if (watch != null) {
+            watch.close();
+        }
         log.close();
     }
 
@@ -119,7 +137,7 @@ public final class FallDetection {
 
         private void raise(Fall f) {
             String person = person(node);
-            String text = words.text(f, person, label);
+            String text = words.text(f, person, label, seen == null ? Optional.empty() : seen.last());
             alerts.raise(new AlertRequest(AlertKind.FALL, SOURCE + ":" + node.deviceUid(), "", "", f.detectedAt(),
                     words.subject(f, person), text));
             log.event(EventKind.DEVICE_EVENT, "FALL alert handed to the alert service: " + text);

@@ -73,6 +73,10 @@ class FallDetectionTest {
     };
 
     private FallDetection component() {
+        return component(null);
+    }
+
+    private FallDetection component(LastSeen seen) {
         AlertService alerts = (AlertService) Proxy.newProxyInstance(getClass().getClassLoader(),
                 new Class<?>[] {AlertService.class}, (p, m, a) -> {
                     if (m.getName().equals("raise")) {
@@ -89,7 +93,7 @@ class FallDetectionTest {
                 });
         DriverContext ctx = new DriverContext(null, FallDetection.PID, "Fall Detection",
                 new Reporter(() -> log, () -> null), new PlatformClock(Instant::now));
-        return new FallDetection(ctx, FallDetectorTest.SETTINGS, ZoneOffset.UTC, alerts);
+        return new FallDetection(ctx, FallDetectorTest.SETTINGS, ZoneOffset.UTC, alerts, seen, null);
     }
 
     @Test
@@ -113,6 +117,44 @@ class FallDetectionTest {
         assertTrue(events.stream().anyMatch(e -> e.startsWith("DEVICE_EVENT FALL alert handed")), events.toString());
         c.removeNode(node);
         assertTrue(closed, "the node's connection is closed when it goes");
+    }
+
+    @Test
+    void theAlertSaysWhereThePersonWasLastSeenOrThatNoRoomWasSeen() {
+        LastSeen seen = new LastSeen(new org.tinysep.device.support.Placements() {
+            @Override
+            public Optional<String> roomOf(String deviceUid) {
+                return Optional.of("r-bath");
+            }
+
+            @Override
+            public String nameOf(String deviceUid) {
+                return deviceUid;
+            }
+        });
+        seen.rooms(List.of(new org.tinysep.api.service.Room("r-bath", "Bathroom", "Bathroom", java.util.Set.of())));
+        FallDetection c = component(seen);
+        c.addNode(node, Map.of(DeviceProperties.NODE_ADDRESS, "0014.4F01.0000.A001"));
+        fall(0);
+        assertEquals(1, raised.size(), "one alert: " + raised);
+        assertTrue(raised.get(0).text().contains("(node 0014.4F01.0000.A001); no room seen yet"), raised.get(0).text());
+        seen.movementReported(LastSeenTest.pir("bath-pir", org.tinysep.api.sensor.MovementLocation.INSIDE),
+                new org.tinysep.api.sensor.MovementEvent(true, Nodes.T0.plusSeconds(100)));
+        fall(120);
+        assertEquals(2, raised.size(), "a second fall, a second alert: " + raised);
+        assertTrue(raised.get(1).text().contains("(node 0014.4F01.0000.A001); last seen in the Bathroom at 14:01 by "
+                + "its motion sensor. Please check on Anna."), raised.get(1).text());
+    }
+
+    /** A fall whose impact is {@code s} + 10.5 s after T0, then lying still. */
+    private void fall(int s) {
+        for (int t = 2; t <= 10; t += 2) {
+            listener.movementSummarised(node, summary(s + t, UPRIGHT, 250, 1500));
+        }
+        listener.burstReceived(node, burst(s + 10.5, UPRIGHT, 3100, LYING));
+        for (int t = 12; t <= 30; t += 2) {
+            listener.movementSummarised(node, summary(s + t, t == 12 ? UPRIGHT : LYING, t == 12 ? 900 : 15, 1200));
+        }
     }
 
     @Test

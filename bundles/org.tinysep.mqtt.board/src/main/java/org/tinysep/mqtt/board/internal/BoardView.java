@@ -57,7 +57,8 @@ final class BoardView {
         j.key("alerts").open('[');
         for (Entry e : s.alerts()) {
             AlertMessage a = e.alert();
-            j.open('{').field("id", a.id()).field("kind", a.kind()).field("state", a.state()).field("title", a.title())
+            j.open('{').field("id", a.id()).field("kind", a.kind()).field("kindWords", Words.kind(a.kind()))
+                    .field("state", a.state()).field("title", a.title())
                     .field("room", a.room()).field("raisedAt", a.raisedAt() == null ? null : a.raisedAt().toString())
                     .field("seq", a.seq()).field("explanation", alertWords(s.id(), e, rules, now)).close('}');
         }
@@ -87,7 +88,7 @@ final class BoardView {
     /** @return e.g. "Fall? in Bedroom, raised at 14:02: … — acknowledgement sent by Eva at 14:05, waiting for the flat" */
     static String alertWords(String flat, Entry e, Rules rules, Instant now) {
         AlertMessage a = e.alert();
-        StringBuilder b = new StringBuilder("Flat ").append(flat).append(": ").append(a.title().isEmpty() ? a.kind() : a.title());
+        StringBuilder b = new StringBuilder("Flat ").append(flat).append(": ").append(a.title().isEmpty() ? Words.kind(a.kind()) : a.title());
         if (!a.room().isEmpty()) {
             b.append(" in ").append(a.room());
         }

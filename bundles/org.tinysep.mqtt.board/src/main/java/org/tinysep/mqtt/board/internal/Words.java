@@ -37,4 +37,20 @@ final class Words {
         }
         return s / 86_400 + " days";
     }
+
+    /**
+     * @return what an alert of this kind (the flat's {@code AlertKind} name) is about, in the words the flat's MQTT
+     *         bridge uses; an unknown kind (a newer flat) as it came, lower case
+     */
+    static String kind(String kind) {
+        return switch (kind == null ? "" : kind) {
+            case "INACTIVITY" -> "inactivity (the person may need help)";
+            case "SENSOR_OFFLINE" -> "sensor offline";
+            case "PLATFORM" -> "platform";
+            case "HELP" -> "help button (the person asked for help)";
+            case "FALL" -> "fall (the person may have fallen)";
+            case "" -> "alert";
+            default -> kind.toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
+        };
+    }
 }

@@ -108,6 +108,18 @@ class BoardTest {
     }
 
     @Test
+    void fallAndHelpAlertsAreNamedInWordsEvenWithoutATitle() {
+        assertTrue(send("tinysep/17/alert/4", alert(4, "OPEN", 1).replace("\"INACTIVITY\"", "\"FALL\"")
+                .replace("\"No movement\"", "\"\"").replace("Anna has not moved for 2 h", "a fall of Anna was detected "
+                + "at 14:00; last seen in the Bathroom at 13:59 by its motion sensor")));
+        assertEquals("Flat 17: fall (the person may have fallen) in Bedroom, raised at 14:00: a fall of Anna was "
+                + "detected at 14:00; last seen in the Bathroom at 13:59 by its motion sensor — not acknowledged yet",
+                BoardView.alertWords("17", only("17"), RULES, now));
+        assertEquals("help button (the person asked for help)", Words.kind("HELP"));
+        assertEquals("something new", Words.kind("SOMETHING_NEW"));
+    }
+
+    @Test
     void alertOpenThenAcknowledgedThenClearedThenGone() {
         assertTrue(send("tinysep/17/alert/3", alert(3, "OPEN", 1)));
         Entry open = only("17");

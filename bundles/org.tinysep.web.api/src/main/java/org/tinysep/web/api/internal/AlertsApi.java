@@ -61,15 +61,18 @@ final class AlertsApi {
         }).orElseThrow(() -> new ApiException(503, NO_SERVICE));
     }
 
-    private static Map<String, Object> json(Alert a) {
+    /** One alert: {@code kindWords} and {@code explanation} say what it is about in plain words (AlertWords). */
+    static Map<String, Object> json(Alert a) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("id", a.id());
         m.put("kind", a.kind().name());
+        m.put("kindWords", AlertWords.kind(a.kind()));
         m.put("room", a.roomName());
         m.put("raisedAt", a.raisedAt().toString());
         m.put("subject", a.subject());
         m.put("text", a.subject());
         m.put("details", a.text());
+        m.put("explanation", AlertWords.explanation(a));
         m.put("state", a.state().name());
         m.put("contactsReached", a.contactsReached());
         m.put("closedBy", a.closedBy());
