@@ -193,6 +193,11 @@ public final class CoreSweep {
                     }
                 } else {
                     detected++;
+                    if (VERBOSE) {
+                        System.out.printf("  DETECTED %s after %d min: quiet since %s after %s in %s, limit %s; %s%n",
+                                c, Duration.between(ci, a.at()).toMinutes(), a.after().at(), a.after().what(),
+                                a.after().room(), a.limit(), a.why());
+                    }
                     int h = c.getHour();
                     (h < 7 || h >= 22 ? nightDelays : dayDelays).add(Duration.between(ci, a.at()).toMinutes());
                 }
