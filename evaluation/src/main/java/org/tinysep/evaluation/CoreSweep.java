@@ -26,7 +26,7 @@ public final class CoreSweep {
 
     /** One home, collapse model and detector: the figures of the summary table. */
     record Figures(String home, String model, boolean learned, double faDay, double faNight, Long medianDay,
-            Long medianNight, Long p95, double detected, int collapses) {
+            Long medianNight, Long p95, double detected, int collapses, double blind) {
     }
 
     /**
@@ -41,12 +41,17 @@ public final class CoreSweep {
         List<Collapses.Model> models = List.of(Collapses.Model.UNIFORM);
         int k = 0;
         int n = 200;
+        boolean readme = false; // --readme: a sweep (-Dfloor=...) must not overwrite the published tables
+        String commit = Evaluate.commit(); // at the start: the code that runs
+        java.time.Instant started = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
             case "--engine" -> i++; // core, from evaluate.sh
             case "--model" -> models = models(args[++i]);
             case "--split" -> k = args[++i].startsWith("cv") ? Integer.parseInt(args[i].substring(2)) : 0;
             case "--collapses" -> n = Integer.parseInt(args[++i]);
+            case "--readme" -> readme = true;
+            case "--no-readme" -> readme = false;
             case "half" -> k = 0;
             case "cv" -> k = Integer.parseInt(args[++i]);
             default -> {
@@ -74,8 +79,14 @@ public final class CoreSweep {
                 }
             }
         }
+        String table = CoreTable.facts(started, commit, args, k, n) + "\n" + CoreTable.markdown(all);
         System.out.println();
-        System.out.println(CoreTable.markdown(all));
+        System.out.println(table);
+        if (readme) { // issue 28: one command writes the tables of both READMEs
+            Readme.put(repo.resolve("evaluation/README.md"), "core", table);
+            Readme.put(repo.resolve("README.md"), "core", table);
+            System.out.println("written between the results:core markers of README.md and evaluation/README.md");
+        }
     }
 
     static List<Collapses.Model> models(String v) {
@@ -116,6 +127,7 @@ public final class CoreSweep {
         int detected = 0;
         int already = 0;
         int missed = 0;
+        int blind = 0;
         List<Long> dayDelays = new ArrayList<>();
         List<Long> nightDelays = new ArrayList<>();
         List<CoreReplay.Act> everything = core.acts(home.events());
@@ -172,6 +184,7 @@ public final class CoreSweep {
                 List<CoreReplay.Act> acts = new ArrayList<>(before);
                 everything.stream().filter(x -> x.what().startsWith("second resident's ") && x.at().isAfter(ci)
                         && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).forEach(acts::add);
+                blind += CoreReplay.blindAt(acts, ci) ? 1 : 0;
                 var fresh = core.newLimits();
                 core.play(fresh, histBefore, t -> false);
                 List<CoreReplay.Alert> alerts = core.play(fresh, acts, t -> true);
@@ -207,8 +220,8 @@ public final class CoreSweep {
         System.out.printf("  false alarms / 30 days: day %.1f night %.1f (%d in %.1f days) by room %s%n",
                 (fa - faNight) * 30 / days, faNight * 30 / days, fa, days, faRooms);
         System.out.printf("  collapses: detected %d/%d (%.1f %%), already alerted %d, missed %d; median delay day %s min"
-                + " night %s min%n", detected, total, 100.0 * detected / total, already, missed, median(dayDelays),
-                median(nightDelays));
+                + " night %s min; blind at %d (%.1f %%)%n", detected, total, 100.0 * detected / total, already, missed,
+                median(dayDelays), median(nightDelays), blind, total == 0 ? 0 : 100.0 * blind / total);
         List<Long> allDelays = new ArrayList<>(dayDelays);
         allDelays.addAll(nightDelays);
         allDelays.sort(null);
@@ -216,7 +229,7 @@ public final class CoreSweep {
                 (int) Math.ceil(0.95 * allDelays.size()) - 1));
         return new Figures(home.name(), model.name().toLowerCase(java.util.Locale.ROOT), learned,
                 (fa - faNight) * 30 / days, faNight * 30 / days, median(dayDelays), median(nightDelays), p95,
-                total == 0 ? 0 : 100.0 * detected / total, total);
+                total == 0 ? 0 : 100.0 * detected / total, total, total == 0 ? 0 : 100.0 * blind / total);
     }
 
     private static String gapAfter(List<CoreReplay.Act> acts, CoreReplay.Act a) {
