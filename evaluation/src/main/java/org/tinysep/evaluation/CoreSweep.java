@@ -14,7 +14,7 @@ import java.util.TreeMap;
  * Analysis and sweeps on the detector core ({@link CoreReplay}), in seconds instead of the platform's minutes:
  * {@code java ... CoreSweep A|B|folder [half|cv K] [collapses]}. Prints every false alarm (room, hour, limit, why)
  * and every collapse that is not detected, then the figures. Not the published figures (those come from
- * {@link Evaluate}, through the platform).
+ * {@link Evaluate}, through the platform). Collapses are judged by {@link CoreCollapses}, the table is {@link CoreTable}.
  */
 public final class CoreSweep {
 
@@ -43,7 +43,7 @@ public final class CoreSweep {
         int n = 200;
         boolean readme = false; // --readme: a sweep (-Dfloor=...) must not overwrite the published tables
         String commit = Evaluate.commit(); // at the start: the code that runs
-        java.time.Instant started = java.time.Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
+        Instant started = Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
             case "--engine" -> i++; // core, from evaluate.sh
@@ -124,12 +124,7 @@ public final class CoreSweep {
         int faNight = 0;
         double days = 0;
         Map<String, Integer> faRooms = new TreeMap<>();
-        int detected = 0;
-        int already = 0;
-        int missed = 0;
-        int blind = 0;
-        List<Long> dayDelays = new ArrayList<>();
-        List<Long> nightDelays = new ArrayList<>();
+        CoreCollapses tally = new CoreCollapses(VERBOSE);
         List<CoreReplay.Act> everything = core.acts(home.events());
         for (CoreFold f : folds.get(0)) {
             List<CoreReplay.Act> hist = core.acts(f.history());
@@ -168,81 +163,20 @@ public final class CoreSweep {
                             .map(x -> LocalDateTime.ofInstant(x.at(), ZoneOffset.UTC)).toList(),
                             f.candidates(home), Math.max(1, share), 1);
             for (LocalDateTime c : moments) {
-                Instant ci = CoreReplay.at(c);
-                List<CoreReplay.Act> before = everything.stream().filter(a -> a.at().isBefore(ci)
-                        && !a.at().isBefore(ci.minus(Duration.ofHours(6)))).toList();
-                if (before.isEmpty()) {
-                    before = everything.stream().filter(a -> a.at().isBefore(ci)).toList();
-                    before = before.subList(Math.max(0, before.size() - 1), before.size());
-                }
-                if (before.isEmpty()) {
-                    continue;
-                }
-                List<CoreReplay.Act> histBefore = f.cv() ? hist : hist.stream().filter(a -> a.at().isBefore(ci))
-                        .toList();
-                // the collapsing resident's events after the moment are deleted; a second resident's stay
-                List<CoreReplay.Act> acts = new ArrayList<>(before);
-                everything.stream().filter(x -> x.what().startsWith("second resident's ") && x.at().isAfter(ci)
-                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).forEach(acts::add);
-                blind += CoreReplay.blindAt(acts, ci) ? 1 : 0;
-                var fresh = core.newLimits();
-                core.play(fresh, histBefore, t -> false);
-                List<CoreReplay.Alert> alerts = core.play(fresh, acts, t -> true);
-                CoreReplay.Act last = before.get(before.size() - 1);
-                CoreReplay.Alert early = alerts.stream().filter(x -> !x.at().isBefore(last.at())
-                        && !x.at().isAfter(ci)).findFirst().orElse(null);
-                CoreReplay.Alert a = alerts.stream().filter(x -> x.at().isAfter(ci)
-                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).findFirst().orElse(null);
-                if (early != null) {
-                    already++;
-                    if (VERBOSE) {
-                        System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
-                                early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
-                    }
-                } else if (a == null) {
-                    missed++;
-                    if (VERBOSE) {
-                        System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
-                    }
-                } else {
-                    detected++;
-                    if (VERBOSE) {
-                        System.out.printf("  DETECTED %s after %d min: quiet since %s after %s in %s, limit %s; %s%n",
-                                c, Duration.between(ci, a.at()).toMinutes(), a.after().at(), a.after().what(),
-                                a.after().room(), a.limit(), a.why());
-                    }
-                    int h = c.getHour();
-                    (h < 7 || h >= 22 ? nightDelays : dayDelays).add(Duration.between(ci, a.at()).toMinutes());
-                }
+                tally.judge(core, everything, hist, f.cv(), c);
             }
         }
-        int total = detected + already + missed;
+        int total = tally.total();
         System.out.printf("  false alarms / 30 days: day %.1f night %.1f (%d in %.1f days) by room %s%n",
                 (fa - faNight) * 30 / days, faNight * 30 / days, fa, days, faRooms);
-        System.out.printf("  collapses: detected %d/%d (%.1f %%), already alerted %d, missed %d; median delay day %s min"
-                + " night %s min; blind at %d (%.1f %%)%n", detected, total, 100.0 * detected / total, already, missed,
-                median(dayDelays), median(nightDelays), blind, total == 0 ? 0 : 100.0 * blind / total);
-        List<Long> allDelays = new ArrayList<>(dayDelays);
-        allDelays.addAll(nightDelays);
-        allDelays.sort(null);
-        Long p95 = allDelays.isEmpty() ? null : allDelays.get(Math.min(allDelays.size() - 1,
-                (int) Math.ceil(0.95 * allDelays.size()) - 1));
+        System.out.println("  " + tally);
         return new Figures(home.name(), model.name().toLowerCase(java.util.Locale.ROOT), learned,
-                (fa - faNight) * 30 / days, faNight * 30 / days, median(dayDelays), median(nightDelays), p95,
-                total == 0 ? 0 : 100.0 * detected / total, total, total == 0 ? 0 : 100.0 * blind / total);
+                (fa - faNight) * 30 / days, faNight * 30 / days, tally.medianDay(), tally.medianNight(), tally.p95(),
+                tally.detectedShare(), total, tally.blindShare());
     }
 
     private static String gapAfter(List<CoreReplay.Act> acts, CoreReplay.Act a) {
         int i = acts.indexOf(a);
         return i + 1 < acts.size() ? Duration.between(a.at(), acts.get(i + 1).at()).toString() : "(end)";
-    }
-
-    private static Long median(List<Long> v) {
-        if (v.isEmpty()) {
-            return null;
-        }
-        List<Long> s = new ArrayList<>(v);
-        s.sort(null);
-        return s.get(s.size() / 2);
     }
 }
