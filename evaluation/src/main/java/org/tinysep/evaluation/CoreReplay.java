@@ -107,29 +107,17 @@ final class CoreReplay {
     List<Alert> play(LearnedLimits l, List<Act> acts, Predicate<Instant> judged) {
         List<Alert> alerts = new ArrayList<>();
         Instant occupiedSince = acts.isEmpty() ? Instant.MIN : acts.get(0).at();
-        Instant leaveDeadline = null;
-        Instant lastClose = null;
+        Instant[] empties = emptiesAfter(acts);
         for (int i = 0; i < acts.size(); i++) {
             Act a = acts.get(i);
             Limit lim = limit(l, a);
-            if (a.outerClose()) {
-                lastClose = a.at();
-                leaveDeadline = a.at().plus(LEAVE);
-            }
             Instant next = i + 1 < acts.size() ? acts.get(i + 1).at() : null;
-            // the flat empties when the leave check runs out before the next indoor activity
-            boolean leaves = leaveDeadline != null && (next == null || next.isAfter(leaveDeadline))
-                    && !a.at().isAfter(leaveDeadline);
-            if (!a.outerDoor() && lastClose != null && a.at().isAfter(lastClose.plus(GRACE))) {
-                leaveDeadline = null;
-            }
-            if (leaves && leaveDeadline != null) {
-                l.history().occupancy(true, leaveDeadline);
+            if (empties[i] != null) {
+                l.history().occupancy(true, empties[i]);
                 if (next != null) {
                     l.history().occupancy(false, next);
                     occupiedSince = next;
                 }
-                leaveDeadline = null;
                 continue; // not watching until the next activity
             }
             Instant from = a.at().isAfter(occupiedSince) ? a.at() : occupiedSince;
@@ -139,6 +127,52 @@ final class CoreReplay {
             }
         }
         return alerts;
+    }
+
+    /**
+     * Flat Occupancy, approximated: the flat empties when the outer door closed and the leave check ({@link #LEAVE})
+     * runs out before the next indoor activity; the next activity (any) makes it occupied again.
+     *
+     * @return per activity, when the flat became empty after it (before the next one), or null
+     */
+    static Instant[] emptiesAfter(List<Act> acts) {
+        Instant[] out = new Instant[acts.size()];
+        Instant leaveDeadline = null;
+        Instant lastClose = null;
+        for (int i = 0; i < acts.size(); i++) {
+            Act a = acts.get(i);
+            if (a.outerClose()) {
+                lastClose = a.at();
+                leaveDeadline = a.at().plus(LEAVE);
+            }
+            Instant next = i + 1 < acts.size() ? acts.get(i + 1).at() : null;
+            boolean leaves = leaveDeadline != null && (next == null || next.isAfter(leaveDeadline))
+                    && !a.at().isAfter(leaveDeadline);
+            if (!a.outerDoor() && lastClose != null && a.at().isAfter(lastClose.plus(GRACE))) {
+                leaveDeadline = null;
+            }
+            if (leaves && leaveDeadline != null) {
+                out[i] = leaveDeadline;
+                leaveDeadline = null;
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Blind time (issue 28): whether monitoring is blind at {@code t} — the flat counts as empty then, so Inactivity
+     * Recognition is not watching and a collapse at {@code t} cannot be found.
+     *
+     * @param acts what the detector saw, in time order (later activities are ignored)
+     */
+    static boolean blindAt(List<Act> acts, Instant t) {
+        List<Act> upTo = acts.stream().filter(a -> a.at().isBefore(t)).toList();
+        if (upTo.isEmpty()) {
+            return false;
+        }
+        Instant[] empties = emptiesAfter(upTo);
+        Instant last = empties[empties.length - 1];
+        return last != null && !t.isBefore(last);
     }
 
     /** @return the alert due after the last activity before a collapse (history learned first), or null if none */

@@ -14,7 +14,7 @@ import java.util.TreeMap;
  * Analysis and sweeps on the detector core ({@link CoreReplay}), in seconds instead of the platform's minutes:
  * {@code java ... CoreSweep A|B|folder [half|cv K] [collapses]}. Prints every false alarm (room, hour, limit, why)
  * and every collapse that is not detected, then the figures. Not the published figures (those come from
- * {@link Evaluate}, through the platform).
+ * {@link Evaluate}, through the platform). Collapses are judged by {@link CoreCollapses}, the table is {@link CoreTable}.
  */
 public final class CoreSweep {
 
@@ -26,7 +26,7 @@ public final class CoreSweep {
 
     /** One home, collapse model and detector: the figures of the summary table. */
     record Figures(String home, String model, boolean learned, double faDay, double faNight, Long medianDay,
-            Long medianNight, Long p95, double detected, int collapses) {
+            Long medianNight, Long p95, double detected, int collapses, double blind) {
     }
 
     /**
@@ -41,12 +41,17 @@ public final class CoreSweep {
         List<Collapses.Model> models = List.of(Collapses.Model.UNIFORM);
         int k = 0;
         int n = 200;
+        boolean readme = false; // --readme: a sweep (-Dfloor=...) must not overwrite the published tables
+        String commit = Evaluate.commit(); // at the start: the code that runs
+        Instant started = Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
             case "--engine" -> i++; // core, from evaluate.sh
             case "--model" -> models = models(args[++i]);
             case "--split" -> k = args[++i].startsWith("cv") ? Integer.parseInt(args[i].substring(2)) : 0;
             case "--collapses" -> n = Integer.parseInt(args[++i]);
+            case "--readme" -> readme = true;
+            case "--no-readme" -> readme = false;
             case "half" -> k = 0;
             case "cv" -> k = Integer.parseInt(args[++i]);
             default -> {
@@ -74,8 +79,14 @@ public final class CoreSweep {
                 }
             }
         }
+        String table = CoreTable.facts(started, commit, args, k, n) + "\n" + CoreTable.markdown(all);
         System.out.println();
-        System.out.println(CoreTable.markdown(all));
+        System.out.println(table);
+        if (readme) { // issue 28: one command writes the tables of both READMEs
+            Readme.put(repo.resolve("evaluation/README.md"), "core", table);
+            Readme.put(repo.resolve("README.md"), "core", table);
+            System.out.println("written between the results:core markers of README.md and evaluation/README.md");
+        }
     }
 
     static List<Collapses.Model> models(String v) {
@@ -113,11 +124,7 @@ public final class CoreSweep {
         int faNight = 0;
         double days = 0;
         Map<String, Integer> faRooms = new TreeMap<>();
-        int detected = 0;
-        int already = 0;
-        int missed = 0;
-        List<Long> dayDelays = new ArrayList<>();
-        List<Long> nightDelays = new ArrayList<>();
+        CoreCollapses tally = new CoreCollapses(VERBOSE);
         List<CoreReplay.Act> everything = core.acts(home.events());
         for (CoreFold f : folds.get(0)) {
             List<CoreReplay.Act> hist = core.acts(f.history());
@@ -156,75 +163,20 @@ public final class CoreSweep {
                             .map(x -> LocalDateTime.ofInstant(x.at(), ZoneOffset.UTC)).toList(),
                             f.candidates(home), Math.max(1, share), 1);
             for (LocalDateTime c : moments) {
-                Instant ci = CoreReplay.at(c);
-                List<CoreReplay.Act> before = everything.stream().filter(a -> a.at().isBefore(ci)
-                        && !a.at().isBefore(ci.minus(Duration.ofHours(6)))).toList();
-                if (before.isEmpty()) {
-                    before = everything.stream().filter(a -> a.at().isBefore(ci)).toList();
-                    before = before.subList(Math.max(0, before.size() - 1), before.size());
-                }
-                if (before.isEmpty()) {
-                    continue;
-                }
-                List<CoreReplay.Act> histBefore = f.cv() ? hist : hist.stream().filter(a -> a.at().isBefore(ci))
-                        .toList();
-                // the collapsing resident's events after the moment are deleted; a second resident's stay
-                List<CoreReplay.Act> acts = new ArrayList<>(before);
-                everything.stream().filter(x -> x.what().startsWith("second resident's ") && x.at().isAfter(ci)
-                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).forEach(acts::add);
-                var fresh = core.newLimits();
-                core.play(fresh, histBefore, t -> false);
-                List<CoreReplay.Alert> alerts = core.play(fresh, acts, t -> true);
-                CoreReplay.Act last = before.get(before.size() - 1);
-                CoreReplay.Alert early = alerts.stream().filter(x -> !x.at().isBefore(last.at())
-                        && !x.at().isAfter(ci)).findFirst().orElse(null);
-                CoreReplay.Alert a = alerts.stream().filter(x -> x.at().isAfter(ci)
-                        && !x.at().isAfter(ci.plus(Duration.ofHours(12)))).findFirst().orElse(null);
-                if (early != null) {
-                    already++;
-                    if (VERBOSE) {
-                        System.out.printf("  ALREADY %s: quiet since %s after %s in %s, limit %s, alert %s%n", c,
-                                early.after().at(), early.after().what(), early.after().room(), early.limit(), early.at());
-                    }
-                } else if (a == null) {
-                    missed++;
-                    if (VERBOSE) {
-                        System.out.printf("  MISSED %s after %s in %s%n", c, last.what(), last.room());
-                    }
-                } else {
-                    detected++;
-                    int h = c.getHour();
-                    (h < 7 || h >= 22 ? nightDelays : dayDelays).add(Duration.between(ci, a.at()).toMinutes());
-                }
+                tally.judge(core, everything, hist, f.cv(), c);
             }
         }
-        int total = detected + already + missed;
+        int total = tally.total();
         System.out.printf("  false alarms / 30 days: day %.1f night %.1f (%d in %.1f days) by room %s%n",
                 (fa - faNight) * 30 / days, faNight * 30 / days, fa, days, faRooms);
-        System.out.printf("  collapses: detected %d/%d (%.1f %%), already alerted %d, missed %d; median delay day %s min"
-                + " night %s min%n", detected, total, 100.0 * detected / total, already, missed, median(dayDelays),
-                median(nightDelays));
-        List<Long> allDelays = new ArrayList<>(dayDelays);
-        allDelays.addAll(nightDelays);
-        allDelays.sort(null);
-        Long p95 = allDelays.isEmpty() ? null : allDelays.get(Math.min(allDelays.size() - 1,
-                (int) Math.ceil(0.95 * allDelays.size()) - 1));
+        System.out.println("  " + tally);
         return new Figures(home.name(), model.name().toLowerCase(java.util.Locale.ROOT), learned,
-                (fa - faNight) * 30 / days, faNight * 30 / days, median(dayDelays), median(nightDelays), p95,
-                total == 0 ? 0 : 100.0 * detected / total, total);
+                (fa - faNight) * 30 / days, faNight * 30 / days, tally.medianDay(), tally.medianNight(), tally.p95(),
+                tally.detectedShare(), total, tally.blindShare());
     }
 
     private static String gapAfter(List<CoreReplay.Act> acts, CoreReplay.Act a) {
         int i = acts.indexOf(a);
         return i + 1 < acts.size() ? Duration.between(a.at(), acts.get(i + 1).at()).toString() : "(end)";
-    }
-
-    private static Long median(List<Long> v) {
-        if (v.isEmpty()) {
-            return null;
-        }
-        List<Long> s = new ArrayList<>(v);
-        s.sort(null);
-        return s.get(s.size() / 2);
     }
 }

@@ -13,7 +13,7 @@ final class CoreTable {
 
     static String markdown(List<CoreSweep.Figures> all) {
         StringBuilder b = new StringBuilder("| home | collapse model | detector | false alarms / 30 d (day + night) "
-                + "| median delay day / night | p95 delay | detected |\n|---|---|---|---|---|---|---|\n");
+                + "| median delay day / night | p95 delay | detected | blind |\n|---|---|---|---|---|---|---|---|\n");
         for (CoreSweep.Figures f : all) {
             b.append(row(f.home(), f.model(), f)).append('\n');
         }
@@ -39,10 +39,20 @@ final class CoreTable {
         return b.toString();
     }
 
+    /** @return the facts line above the table: when, which commit, the exact command, split, collapses, seed */
+    static String facts(java.time.Instant when, String commit, String[] args, int k, int n) {
+        return "Run " + when + ", commit `" + commit + "`, command `./evaluate.sh " + String.join(" ", args)
+                + "` (the detector core, `CoreSweep`; split " + (k > 0 ? "cv" + k : "half: learned from the first half"
+                + " of each recording, judged on the second") + "; " + n + " collapses per home, model and detector;"
+                + " seed 1). False alarms per 30 days by day (07–22) + night; median delay of the detected collapses"
+                + " by the collapse's time of day; blind = share of the drawn collapses that happened while the flat"
+                + " counted as empty (not watched).\n";
+    }
+
     private static String row(String home, String model, CoreSweep.Figures f) {
-        return String.format(Locale.ROOT, "| %s | %s | %s | %.1f + %.1f | %s / %s | %s | %.1f %% of %d |", home, model,
+        return String.format(Locale.ROOT, "| %s | %s | %s | %.1f + %.1f | %s / %s | %s | %.1f %% of %d | %.1f %% |", home, model,
                 f.learned() ? "LEARNED" : "THESIS", f.faDay(), f.faNight(), hm(f.medianDay()), hm(f.medianNight()),
-                hm(f.p95()), f.detected(), f.collapses());
+                hm(f.p95()), f.detected(), f.collapses(), f.blind());
     }
 
     /** @return minutes as "1 h 05" or "35 min", "–" if none */

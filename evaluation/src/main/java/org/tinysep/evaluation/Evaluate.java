@@ -107,7 +107,7 @@ public final class Evaluate {
         }
     }
 
-    private static String commit() {
+    static String commit() {
         try {
             Process p = new ProcessBuilder("git", "rev-parse", "--short=12", "HEAD").redirectErrorStream(true).start();
             String c = new String(p.getInputStream().readAllBytes()).trim();

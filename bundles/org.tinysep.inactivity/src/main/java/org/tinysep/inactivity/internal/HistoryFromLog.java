@@ -32,8 +32,16 @@ final class HistoryFromLog {
             "door closed", "window opened", "window closed", "bed on", "bed off", "seat on", "seat off",
             "flush on", "flush off", "appliance on", "appliance off", "other on", "other off");
 
-    /** A waiting activity entry: when, which device, and whether it was a bed ("bed on") or seat mat turning ON. */
-    record Raw(Instant at, String device, boolean inBed, boolean seated) {
+    /**
+     * A waiting activity entry: when, which device, whether it was a bed ("bed on") or seat mat turning ON, and
+     * whether a bed mat turned OFF ("bed off": the person got up, which ends sleep also in the bedroom at night,
+     * issue 28 item 2).
+     */
+    record Raw(Instant at, String device, boolean inBed, boolean seated, boolean upFromBed) {
+        /** An entry that is no bed mat turning OFF. */
+        Raw(Instant at, String device, boolean inBed, boolean seated) {
+            this(at, device, inBed, seated, false);
+        }
     }
 
     private final HistoryLearner learner;
@@ -122,7 +130,8 @@ final class HistoryFromLog {
             for (EventEntry e : h.entries()) {
                 String m = e.message();
                 if (ACTIVITY.contains(m) || m.startsWith("movement detected at ")) {
-                    pending.add(new Raw(e.time(), e.origin(), m.equals("bed on"), m.equals("seat on")));
+                    pending.add(new Raw(e.time(), e.origin(), m.equals("bed on"), m.equals("seat on"),
+                            m.equals("bed off")));
                     activities++;
                 } else if (m.startsWith("flat unoccupied (") || m.startsWith("flat occupied (")) {
                     learner.occupancy(m.startsWith("flat unoccupied"), e.time());
@@ -137,13 +146,18 @@ final class HistoryFromLog {
     /**
      * Hands the waiting entries of devices that are now sources to the learner.
      *
+     * A "bed off" entry is handed over as getting up ({@link Sighting#upFromBed()}) whatever the caller made of it,
+     * so a night's history read back from the log ends sleep where the live detector did.
+     *
      * @param sighting a device's entry as a sighting, empty while the device is not a source
      * @return how many were handed over
      */
     synchronized int resolve(Function<Raw, Optional<Sighting>> sighting) {
         int n = 0;
         for (var it = pending.iterator(); it.hasNext();) {
-            Optional<Sighting> s = sighting.apply(it.next());
+            Raw raw = it.next();
+            Optional<Sighting> s = sighting.apply(raw).map(x -> raw.upFromBed() && !x.upFromBed()
+                    ? new Sighting(x.at(), x.room(), x.roomName(), x.roomType(), x.inBed(), x.seated(), true) : x);
             if (s.isPresent()) {
                 learner.add(s.get());
                 it.remove();

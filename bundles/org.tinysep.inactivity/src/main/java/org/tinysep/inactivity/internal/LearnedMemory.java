@@ -53,7 +53,7 @@ final class LearnedMemory {
         for (Sighting s : m.sightings()) {
             b.append("S\t").append(s.at()).append('\t').append(esc(s.room())).append('\t').append(esc(s.roomName()))
                     .append('\t').append(esc(s.roomType())).append('\t').append(bit(s.inBed())).append('\t')
-                    .append(bit(s.seated())).append('\n');
+                    .append(bit(s.seated())).append('\t').append(bit(s.upFromBed())).append('\n');
         }
         for (QuietGaps.Away a : m.away()) {
             b.append("A\t").append(a.from()).append('\t').append(a.to()).append('\n');
@@ -63,7 +63,7 @@ final class LearnedMemory {
         }
         for (HistoryFromLog.Raw r : pending) {
             b.append("R\t").append(r.at()).append('\t').append(esc(r.device())).append('\t').append(bit(r.inBed()))
-                    .append('\t').append(bit(r.seated())).append('\n');
+                    .append('\t').append(bit(r.seated())).append('\t').append(bit(r.upFromBed())).append('\n');
         }
         AtomicFiles.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
     }
@@ -92,6 +92,10 @@ final class LearnedMemory {
                     case "covered/2" -> covered = Instant.parse(f[1]);
                     case "S/7" -> sightings.add(new Sighting(Instant.parse(f[1]), unesc(f[2]), unesc(f[3]),
                             unesc(f[4]), "1".equals(f[5]), "1".equals(f[6])));
+                    case "S/8" -> sightings.add(new Sighting(Instant.parse(f[1]), unesc(f[2]), unesc(f[3]),
+                            unesc(f[4]), "1".equals(f[5]), "1".equals(f[6]), "1".equals(f[7])));
+                    case "R/6" -> pending.add(new HistoryFromLog.Raw(Instant.parse(f[1]), unesc(f[2]),
+                            "1".equals(f[3]), "1".equals(f[4]), "1".equals(f[5])));
                     case "A/3" -> away.add(new QuietGaps.Away(Instant.parse(f[1]), Instant.parse(f[2])));
                     case "W/2" -> since = Instant.parse(f[1]);
                     case "R/5" -> pending.add(new HistoryFromLog.Raw(Instant.parse(f[1]), unesc(f[2]),

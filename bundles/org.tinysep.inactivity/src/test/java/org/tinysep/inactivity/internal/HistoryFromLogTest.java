@@ -78,4 +78,28 @@ class HistoryFromLogTest {
         assertEquals(List.of(true, false, false), raw.stream().map(HistoryFromLog.Raw::seated).toList());
         assertEquals(List.of(false, false, true), raw.stream().map(HistoryFromLog.Raw::inBed).toList());
     }
+
+    /**
+     * Issue 28 item 2, for history read back from the log: a bed mat turning OFF at night is getting up, so the
+     * quiet period after it is awake (the bedroom's awake limit for those hours), not sleep — as it is live. The
+     * device hands the logged entry over as it would any (room, bed on, seat on); the log reader keeps "bed off".
+     */
+    @Test
+    void bedOffAtNightEndsSleepInTheHistoryToo() {
+        Instant night = Instant.parse("2026-12-07T23:00:00Z");
+        List<EventEntry> entries = List.of(new EventEntry(0, night, EventKind.DEVICE_EVENT, "Bed", "bed on"),
+                new EventEntry(1, night.plus(Duration.ofHours(4)), EventKind.DEVICE_EVENT, "Bed", "bed off"),
+                new EventEntry(2, night.plus(Duration.ofHours(4).plusMinutes(20)), EventKind.DEVICE_EVENT, "Bed",
+                        "bed on"));
+        SleepRule sleep = new SleepRule(21, 7, ZoneOffset.UTC);
+        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, sleep, LearningSettings.defaults());
+        HistoryFromLog fromLog = new HistoryFromLog(learner);
+        fromLog.load(new Log(entries), night, 28);
+        fromLog.resolve(r -> Optional.of(new Sighting(r.at(), "bedroom", "Bedroom", "Bedroom", r.inBed(),
+                r.seated())));
+        List<Sighting> read = learner.memory().sightings();
+        assertEquals(List.of(true, false, true), read.stream().map(sleep::asleep).toList(),
+                "in bed at 23:00, up at 03:00 (awake), back in bed at 03:20: " + read);
+        assertEquals(List.of(false, true, false), read.stream().map(Sighting::upFromBed).toList());
+    }
 }

@@ -152,4 +152,17 @@ class LearnedMemoryTest {
         Files.writeString(memory.file(), "something else\n");
         assertNull(memory.load(), "not such a file: ignored");
     }
+
+    /** Issue 28 item 2: getting out of bed ("bed off") survives the memory, for sightings and waiting entries. */
+    @Test
+    void gettingUpFromBedSurvivesTheMemory() throws IOException {
+        LearnedMemory memory = new LearnedMemory(dir.resolve("learned-history.txt"));
+        Sighting up = new Sighting(at(0, 3, 0), "bedroom", "Bedroom", "Bedroom", false, false, true);
+        HistoryFromLog.Raw waiting = new HistoryFromLog.Raw(at(0, 3, 0), "bed-mat", false, false, true);
+        memory.save(new HistoryLearner.Memory(List.of(up), List.of(), null), List.of(waiting), at(0, 4, 0));
+        LearnedMemory.Content c = memory.load();
+        assertEquals(List.of(up), c.memory().sightings());
+        assertEquals(List.of(waiting), c.pending());
+        assertEquals(0, c.damaged());
+    }
 }

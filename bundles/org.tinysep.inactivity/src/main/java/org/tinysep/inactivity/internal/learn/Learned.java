@@ -12,9 +12,11 @@ import java.time.Duration;
  * @param limit     the limit that follows from it
  * @param days      how many days of history it was learned from
  * @param periods   how many quiet periods those days held
+ * @param allDay    true when it was learned from the room's whole day because the hours asked about had quiet
+ *                  periods on too few days (a limit longer than the fixed one is then not used, issue 28)
  */
 public record Learned(String roomName, boolean asleep, String scope, Duration usual, Duration limit, int days,
-        int periods) {
+        int periods, boolean allDay) {
 
     /**
      * @return e.g. "usually at most 40 min between 13:00 and 16:00 in Bathroom, from 21 days (63 quiet periods);

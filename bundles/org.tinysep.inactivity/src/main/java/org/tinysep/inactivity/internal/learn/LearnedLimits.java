@@ -41,12 +41,23 @@ public final class LearnedLimits {
     }
 
     /**
-     * "Never worse than the fixed limits" (issue 28): a limit shorter than the fixed one needs at least
-     * {@code minPeriodsToShorten} observed quiet periods behind it; with fewer the fixed limit holds (a short limit
-     * learned from a handful of periods is what raised the learned detector's false alarms).
+     * "Never worse than the fixed limits" (issue 28), both ways. Shorter: a limit shorter than the fixed one needs
+     * at least {@code minPeriodsToShorten} observed quiet periods behind it; with fewer the fixed limit holds (a
+     * short limit learned from a handful of periods is what raised the learned detector's false alarms). Longer: a
+     * limit longer than the fixed one must be learned from the hours it is used at; learned from the room's whole
+     * day (those hours had quiet periods on too few days, or it is a cold start's blend) the fixed limit holds (a
+     * long afternoon sit lengthened the evening's limit to hours and was what made the learned detector slow).
      */
     static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
-        if (learned.limit().compareTo(fixed) >= 0 || l.periods() >= set.minPeriodsToShorten()) {
+        int longer = learned.limit().compareTo(fixed);
+        if (longer > 0 && l.allDay()) {
+            return new Limit(fixed, learned.asleep(), "fixed limit of " + Words.duration(fixed) + " for "
+                    + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
+                    + Words.duration(learned.limit()) + ", but only from other hours of the day (at these hours "
+                    + "there are quiet periods on fewer than " + Words.count(set.minDays(), "day")
+                    + "), and a longer limit must be learned from the hours it is used at (" + l.explain(set) + ")");
+        }
+        if (longer >= 0 || l.periods() >= set.minPeriodsToShorten()) {
             return learned;
         }
         return new Limit(fixed, learned.asleep(), "fixed limit of " + Words.duration(fixed) + " for "

@@ -66,13 +66,13 @@ public final class QuietProfile {
         List<Gap> otherDay = around.stream().filter(g -> dayOf(g) != k.day()).toList();
         if (days(sameDay).size() >= settings.minDays() && days(otherDay).size() >= settings.minDays()) {
             return Optional.of(learn(sameDay, roomName, k.asleep(),
-                    hours + (k.day() == DayType.WEEKEND ? " at weekends" : " on weekdays")));
+                    hours + (k.day() == DayType.WEEKEND ? " at weekends" : " on weekdays"), false));
         }
         if (days(around).size() >= settings.minDays()) {
-            return Optional.of(learn(around, roomName, k.asleep(), hours));
+            return Optional.of(learn(around, roomName, k.asleep(), hours, false));
         }
         if (days(all).size() >= settings.minDays()) {
-            return Optional.of(learn(all, roomName, k.asleep(), "at any time of day" + sit));
+            return Optional.of(learn(all, roomName, k.asleep(), "at any time of day" + sit, true));
         }
         return Optional.empty();
     }
@@ -98,15 +98,15 @@ public final class QuietProfile {
                 && seated(g) == sit && g.start().at().atZone(zone).toLocalDate().isBefore(today)).toList();
         int n = days(all).size();
         return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"
-                + (sit ? " after sitting down (a seat mat turned on)" : "")))
+                + (sit ? " after sitting down (a seat mat turned on)" : ""), true))
                 : Optional.empty();
     }
 
-    private Learned learn(List<Gap> gaps, String roomName, boolean asleep, String scope) {
+    private Learned learn(List<Gap> gaps, String roomName, boolean asleep, String scope, boolean allDay) {
         Map<LocalDate, Duration> maxima = days(gaps);
         Duration usual = UsualQuiet.usual(new ArrayList<>(maxima.values()));
         return new Learned(roomName, asleep, scope, usual, UsualQuiet.limit(usual, settings), maxima.size(),
-                gaps.size());
+                gaps.size(), allDay);
     }
 
     /** @return the longest quiet period per local day */
