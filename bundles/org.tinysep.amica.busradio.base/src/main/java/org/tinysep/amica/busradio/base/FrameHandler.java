@@ -46,7 +46,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     /** More node-and-route pairs than any bus holds (nodes moving between routes): start the origins afresh. */
     static final int MAX_ORIGINS = 20_000;
 
-    private record Via(AmicaAddress sender, R route) {
+    private record Via<T>(AmicaAddress sender, T route) {
     }
 
     private final Nodes<R> nodes;
