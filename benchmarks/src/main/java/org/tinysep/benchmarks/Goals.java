@@ -112,9 +112,9 @@ final class Goals {
             List<Double> each = g.onRatio() ? ratios : v;
             long metRuns = each.stream().filter(x -> !Double.isNaN(x))
                     .filter(x -> g.atMost() ? x <= g.limit() : x >= g.limit()).count();
-            verdict = (met ? "MET" : "**MISSED**") + Report.f(" (%s of the goal; met in %d of %d runs)",
+            verdict = (met ? "MET" : "**MISSED**") + Report.f(" (%s; met in %d of %d runs)",
                     g.onRatio() ? Report.f("%.0f %% of the floor, goal %.0f %%", 100 * judged, 100 * g.limit())
-                            : Report.f("%.2f×", judged / g.limit()), metRuns, each.size());
+                            : Report.f("%.2f× the goal", judged / g.limit()), metRuns, each.size());
         }
         return List.of(g.text(), shown, floor, ratioText, verdict);
     }
