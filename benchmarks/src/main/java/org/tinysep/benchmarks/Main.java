@@ -8,8 +8,11 @@ import java.util.List;
 /**
  * Runs every benchmark against the real distribution and writes RESULTS.md and the plots.
  * <pre>
- * Main [--smoke] --dist runtime/org.tinysep.launcher/target/tinysep --out benchmarks/RESULTS.md --images docs/images
+ * Main [--smoke] [--repeat 3] --dist runtime/org.tinysep.launcher/target/tinysep --out benchmarks/RESULTS.md --images docs/images
  * </pre>
+ * The thesis, throughput and latency steps run {@code --repeat} times (default 3, smoke 1): the last run's tables
+ * are shown, every run's headline figures with their spread, and the issue-29 goals ({@link Goals}) are judged on
+ * the medians.
  * Exit code 0 when every benchmark ran and reported, 1 when one failed (its section says why).
  */
 public final class Main {
@@ -33,22 +36,44 @@ public final class Main {
         Bench b = new Bench(dist, work, smoke, Bench.chosenOptions(dist), report, images);
         String loadBefore = Machine.load();
         long t0 = System.nanoTime();
+        int repeat = Integer.parseInt(arg(args, "--repeat", smoke ? "1" : "3")); // runs of the repeated steps
         Footprint footprint = new Footprint();
-        step("footprint", report, () -> footprint.run(b));
-        step("thesis scenarios", report, () -> new Thesis().run(b));
-        step("throughput", report, () -> new Throughput().run(b));
-        step("latency", report, () -> new Latency().run(b));
+        step("footprint", report, () -> {
+            footprint.run(b);
+            report.figure("start.bannerMs", footprint.chosenStartMs);
+            report.figure("rss.defaultKb", footprint.chosenIdleRssKb);
+        });
+        step("thesis scenarios", report, () -> Repeat.run(b, repeat, "Thesis scenarios", rb -> {
+            Thesis t = new Thesis();
+            t.run(rb);
+            return new double[] {t.scenario5Cpu, t.idleCpu};
+        }, new String[] {"thesis.s5cpu", "thesis.idleCpu"}, new String[] {"scenario 5, % of one core",
+            "idle, % of one core"}));
+        step("throughput", report, () -> Repeat.run(b, repeat, "Throughput", rb -> {
+            Throughput t = new Throughput();
+            t.run(rb);
+            return new double[] {t.platformMax, t.bareMax};
+        }, new String[] {"throughput.platform", "throughput.bare"}, new String[] {"TinySEP loss-free frames/s",
+            "bare receiver loss-free frames/s"}));
+        step("latency", report, () -> Repeat.run(b, repeat, "Latency", rb -> {
+            Latency l = new Latency();
+            l.run(rb);
+            return new double[] {l.p50, l.p99, l.echoP50, l.echoP99};
+        }, new String[] {"latency.p50", "latency.p99", "latency.echoP50", "latency.echoP99"},
+                new String[] {"TinySEP p50 µs (1k frames/s)", "TinySEP p99 µs", "bare echo p50 µs",
+                    "bare echo p99 µs"}));
         step("scale", report, () -> new Scale().run(b, footprint.chosenIdleRssKb));
         step("lockstep", report, () -> new LockStep72h().run(b));
         step("hotupdate", report, () -> new HotUpdate().run(b));
         String loadAfter = Machine.load();
+        Goals.lines(report).forEach(l -> System.out.println("benchmarks: goal " + l));
         StringBuilder md = new StringBuilder();
         if (List.of(args).contains("--append") && Files.isRegularFile(out)) {
             // sections run later (--only …) added below an earlier run's, with their own machine load
             md.append(Files.readString(out)).append("\n---\n\n# Added by a later run (").append(Instant.now())
                     .append(", sections: ").append(String.join(", ", only)).append("; load average before ")
                     .append(loadBefore).append(", after ").append(loadAfter).append(")\n");
-            md.append(report.markdown());
+            md.append(Goals.markdown(report)).append(report.markdown());
             Files.writeString(out, md.toString());
             return report.problems.isEmpty() ? 0 : 1;
         }
@@ -75,6 +100,7 @@ public final class Main {
         if (note != null && !note.isBlank()) {
             md.append("**The machine during this run:** ").append(note.strip()).append("\n\n");
         }
+        md.append(Goals.markdown(report));
         md.append(report.markdown());
         if (only.isEmpty()) {
             try (var notes = Main.class.getResourceAsStream("/closing-notes.md")) {

@@ -1,14 +1,43 @@
 package org.tinysep.benchmarks;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /** The Markdown of RESULTS.md, built section by section. */
 final class Report {
 
     private final StringBuilder md = new StringBuilder();
     final List<String> problems = new ArrayList<>();
+    /** Headline figures by key, one value per run of the step (see {@link Goals} for the keys). */
+    private final Map<String, List<Double>> figures = new LinkedHashMap<>();
+
+    /** Records one run's value of a headline figure (NaN: not measured in that run). */
+    void figure(String key, double value) {
+        figures.computeIfAbsent(key, k -> new ArrayList<>()).add(value);
+    }
+
+    /** @return every run's value of {@code key}, in run order (empty: no step produced it) */
+    List<Double> figures(String key) {
+        return figures.getOrDefault(key, List.of());
+    }
+
+    /** @return the median of the measured values (NaN when none) */
+    static double median(List<Double> values) {
+        double[] v = values.stream().mapToDouble(Double::doubleValue).filter(d -> !Double.isNaN(d)).sorted()
+                .toArray();
+        return v.length == 0 ? Double.NaN : v.length % 2 == 1 ? v[v.length / 2] : (v[v.length / 2 - 1] + v[v.length / 2]) / 2;
+    }
+
+    static double min(List<Double> values) {
+        return values.stream().mapToDouble(Double::doubleValue).filter(d -> !Double.isNaN(d)).min().orElse(Double.NaN);
+    }
+
+    static double max(List<Double> values) {
+        return values.stream().mapToDouble(Double::doubleValue).filter(d -> !Double.isNaN(d)).max().orElse(Double.NaN);
+    }
 
     void heading(String text) {
         md.append("\n## ").append(text).append("\n\n");

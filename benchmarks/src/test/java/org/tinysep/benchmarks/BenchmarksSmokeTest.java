@@ -26,7 +26,7 @@ class BenchmarksSmokeTest {
         for (String section : List.of("## Footprint and start", "## Thesis scenarios 1–5",
                 "## Maximum zero-loss throughput", "## Packet → reaction latency", "## Scale", "virtual hours in lock-step",
                 "## Hot update of AmICA Movement",
-                "load average after")) {
+                "## Issue 29 goals", "load average after")) {
             assertTrue(md.contains(section), "RESULTS.md has " + section);
         }
         for (String png : List.of("bench-footprint.png", "bench-thesis.png", "bench-throughput.png", "bench-scale.png",

@@ -31,12 +31,18 @@ interface LimitPolicy {
                 "fixed limit of " + Words.duration(fixed) + " for " + s.roomName() + " (detector THESIS)");
     }
 
-    /** Learned limits; every activity is also learned from. */
+    /** Learned limits; every activity is also learned from; answers reused until the next learning. */
     static LimitPolicy learned(LearnedLimits limits) {
+        return learned(new CachedLimits(limits));
+    }
+
+    /** Learned limits through {@code cached} (issue 29: one computation per room, hour and state per learning). */
+    static LimitPolicy learned(CachedLimits cached) {
+        LearnedLimits limits = cached.learned();
         return new LimitPolicy() {
             @Override
             public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
-                return limits.limitAfter(s, fixed, now);
+                return cached.limitAfter(s, fixed, now);
             }
 
             @Override

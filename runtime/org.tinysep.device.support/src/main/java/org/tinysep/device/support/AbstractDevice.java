@@ -242,7 +242,15 @@ public abstract class AbstractDevice implements Device {
         backup.save();
     }
 
-    /** Runtime state changed (e.g. a packet arrived): saved at most once per 10 s; cheap on the packet path. */
+    /** Tests: the device's side of the backup (its throttle's clock). */
+    final DeviceBackup backupSide() {
+        return backup;
+    }
+
+    /**
+     * Runtime state changed (e.g. a packet arrived): looked at most once per 10 s, saved when it changes what a
+     * restart needs (the last seen time alone: at most once per 60 s); cheap on the packet path.
+     */
     protected final void stateChanged() {
         backup.stateChanged();
     }

@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.LongSupplier;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.device.DeviceProperties;
@@ -13,19 +14,34 @@ import org.tinysep.api.log.EventKind;
 /**
  * A device's side of the system backup (thesis 3.7): builds its {@link ComponentBackup} (name, room, the writable
  * parameters it keeps, node address and types, last seen time, free state), saves it, and throttles saves of
- * runtime state (e.g. last seen) to one per {@link #STATE_INTERVAL_NANOS}.
+ * runtime state to one per {@link #STATE_INTERVAL_NANOS}. Issue 29: runtime state is saved only when it changes
+ * what a restart needs; the last seen time alone (every frame of a movement sensor moves it) is saved at most once
+ * per {@link #LAST_SEEN_INTERVAL_NANOS} (an orderly stop saves the exact one), so a busy sensor no longer costs a
+ * JAXB write and an fsync every 10 s.
  */
 final class DeviceBackup {
 
     /** Runtime state (e.g. a node's last seen time) is saved at most this often per device: 10 s. */
     static final long STATE_INTERVAL_NANOS = 10_000_000_000L;
+    /** When only the last seen time moved, it is saved at most this often per device: 60 s. */
+    static final long LAST_SEEN_INTERVAL_NANOS = 60_000_000_000L;
 
     private final AbstractDevice device;
+    private volatile LongSupplier nanos = System::nanoTime;
     private volatile long lastStateSave = System.nanoTime() - STATE_INTERVAL_NANOS;
+    private volatile long lastSave = lastStateSave;
+    private volatile ComponentBackup saved;
     private volatile boolean active;
 
     DeviceBackup(AbstractDevice device) {
         this.device = device;
+    }
+
+    /** Tests: the monotonic clock of the throttles. */
+    void nanos(LongSupplier clock) {
+        nanos = clock;
+        lastStateSave = clock.getAsLong() - STATE_INTERVAL_NANOS;
+        lastSave = lastStateSave;
     }
 
     /** @return the device's backup as of now: name, room, kept writable parameters, node, state */
@@ -54,7 +70,7 @@ final class DeviceBackup {
     /** From now on changes are saved (after the device registered, with its restored settings). */
     void activate() {
         active = true;
-        device.context.backups().save(device.backup());
+        store(device.backup());
     }
 
     void deactivate() {
@@ -68,17 +84,40 @@ final class DeviceBackup {
     /** Saves now, without waiting for the disk. */
     void save() {
         if (active) {
-            device.context.backups().save(device.backup());
+            store(device.backup());
         }
     }
 
-    /** Saves runtime state at most once per 10 s per device; cheap to call on every packet. */
+    /**
+     * Runtime state changed: looked at once per 10 s per device (cheap to call on every packet), saved then if
+     * anything but the last seen time changed since the last save, or the last save is 60 s old.
+     */
     void stateChanged() {
-        long now = System.nanoTime();
-        if (active && now - lastStateSave >= STATE_INTERVAL_NANOS) {
-            lastStateSave = now;
-            save();
+        long now = nanos.getAsLong();
+        if (!active || now - lastStateSave < STATE_INTERVAL_NANOS) {
+            return;
         }
+        lastStateSave = now;
+        ComponentBackup b = device.backup();
+        ComponentBackup before = saved;
+        if (before != null && sameForRestart(before, b) && now - lastSave < LAST_SEEN_INTERVAL_NANOS) {
+            return; // only the last seen time moved: it waits (an orderly stop saves it exactly)
+        }
+        store(b);
+    }
+
+    private void store(ComponentBackup b) {
+        saved = b;
+        lastSave = nanos.getAsLong();
+        device.context.backups().save(b);
+    }
+
+    /** @return whether a restart would restore the same device from both (their last seen and saved times aside) */
+    static boolean sameForRestart(ComponentBackup a, ComponentBackup b) {
+        return a.uid().equals(b.uid()) && a.kind() == b.kind() && a.driverUid().equals(b.driverUid())
+                && a.driverName().equals(b.driverName()) && a.type().equals(b.type()) && a.name().equals(b.name())
+                && a.parameters().equals(b.parameters()) && a.nodeAddress().equals(b.nodeAddress())
+                && a.nodeTypes().equals(b.nodeTypes()) && a.state().equals(b.state());
     }
 
     /** Applies a saved backup to a device that is not registered yet: name, settings, then its own state. */

@@ -1,6 +1,8 @@
 package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
@@ -42,8 +44,20 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     private static final Codec<AmicaFrame, RejectReason, AmicaProtocolException> CODEC = new Codec<>(
             raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, e -> e.reason());
 
+    /** More node-and-route pairs than any bus holds (nodes moving between routes): start the origins afresh. */
+    static final int MAX_ORIGINS = 20_000;
+
+    private record Via<T>(AmicaAddress sender, T route) {
+    }
+
     private final Nodes<R> nodes;
     private volatile Instant lastStamp;
+    /**
+     * The packet log's origin text per node and route ("node 1:17 via 127.0.0.1:5000"), formatted once rather than
+     * per frame (issue 29, item 1: formatting the route and the origin was most of the packet log's cost on this
+     * thread).
+     */
+    private final Map<Via<R>, String> origins = new ConcurrentHashMap<>();
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter<RejectReason> rejects) {
         super(context, CODEC, rejects::reject);
@@ -59,7 +73,6 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
         Instant last = lastStamp;
         Instant at = stamp == null ? context().now() : last != null && stamp.isBefore(last) ? last : stamp;
         lastStamp = at;
-        String origin = nodes.describe(from);
         AmicaPayload payload;
         try {
             payload = AmicaPayloads.decode(frame.payload());
@@ -77,14 +90,26 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
             }
             device = nodes.create(frame.sender(), keepAlive, from, at);
             if (device == null) { // over the bus radio's node cap: counted by the node table
-                sample(origin, raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
+                sample(nodes.describe(from), raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
                 return;
             }
-            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
-        } else {
-            context().reporter().packet(Direction.RECEIVED, "node " + frame.sender() + " via " + origin, raw, "");
         }
+        context().reporter().packet(Direction.RECEIVED, originOf(frame.sender(), from), raw, "");
         device.received(frame, payload, from, at);
+    }
+
+    /** @return "node 1:17 via 127.0.0.1:5000", formatted at the first frame of that node by that route */
+    private String originOf(AmicaAddress sender, R from) {
+        Via<R> via = new Via<>(sender, from);
+        String text = origins.get(via);
+        if (text == null) {
+            if (origins.size() >= MAX_ORIGINS) {
+                origins.clear();
+            }
+            text = "node " + sender + " via " + nodes.describe(from);
+            origins.put(via, text);
+        }
+        return text;
     }
 
     @Override

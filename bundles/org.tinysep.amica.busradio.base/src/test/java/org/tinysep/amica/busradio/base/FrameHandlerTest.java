@@ -162,4 +162,23 @@ class FrameHandlerTest {
             throw new AssertionError(e);
         }
     }
+
+    @Test
+    void theRouteIsFormattedOncePerNodeAndRouteNotPerFrame() {
+        feed(frame(1, 17, keepAlive(AmicaNodeType.MOVEMENT)));
+        feed(frame(1, 18, keepAlive(AmicaNodeType.MOVEMENT)));
+        int before = radio.describes;
+        byte[] motion = AmicaPayloads.encode(new MotionDetection(true));
+        for (int i = 0; i < 1_000; i++) {
+            feed(frame(1, 17 + i % 2, motion));
+        }
+        radio.feed(frame(1, 17, motion), "127.0.0.1:40001"); // the node heard by another route
+        assertTrue(radio.describes - before <= 3, "routes formatted for 1,001 frames of 2 nodes by 2 routes: "
+                + (radio.describes - before));
+        List<PacketEntry> packets = radio.logs.packets();
+        assertEquals(1_003, packets.size());
+        assertEquals("node 1.17 via route " + FROM, packets.get(2).origin());
+        assertEquals("node 1.18 via route " + FROM, packets.get(3).origin());
+        assertEquals("node 1.17 via route 127.0.0.1:40001", packets.get(1_002).origin());
+    }
 }

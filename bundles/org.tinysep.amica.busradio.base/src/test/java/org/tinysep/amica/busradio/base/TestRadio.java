@@ -32,6 +32,8 @@ final class TestRadio implements AmicaNodes.Transport<String> {
     final FrameHandler<String> handler = new FrameHandler<>(context, nodes, rejects);
     final List<byte[]> transmitted = new ArrayList<>();
     final List<String> routes = new ArrayList<>();
+    /** How often a route was formatted for people (issue 29: not once per frame). */
+    int describes;
     /** The outcome the next transmissions report; null = sent. */
     String failure;
 
@@ -44,6 +46,7 @@ final class TestRadio implements AmicaNodes.Transport<String> {
 
     @Override
     public String describe(String route) {
+        describes++;
         return "route " + route;
     }
 
