@@ -79,6 +79,10 @@ class RegistryUsesTest {
             addDevice(new BusDevice(context(), uid));
         }
 
+        void drop(String uid) {
+            remove(uid);
+        }
+
         void close() {
             stop();
         }
@@ -190,6 +194,22 @@ class RegistryUsesTest {
             for (var d : bus.devices()) {
                 assertEquals(2, ((BusDevice) d).listeners.size(), d.uid());
             }
+
+            // the bus devices go (as when the bus radio stops first): each one costs its own consumers, one follower
+            // and the watcher, not a look at every device's connections
+            long examined0 = followers.examined + watcher.examined;
+            for (int i = 0; i < n; i++) {
+                bus.drop("bus-" + i);
+            }
+            long firstHalf = followers.examined + watcher.examined - examined0;
+            for (int i = n; i < 2 * n; i++) {
+                bus.drop("bus-" + i);
+            }
+            long secondHalf = followers.examined + watcher.examined - examined0 - firstHalf;
+            assertEquals(2L * n, firstHalf, "devices examined while " + n + " of " + 2 * n + " bus devices went");
+            assertEquals(2L * n, secondHalf, "devices examined while the last " + n + " went");
+            assertEquals(0, followers.devices().size(), "each follower went with its bus device");
+            assertEquals(0, watcher.devices().get(0).connections().size(), "the watcher stays, with no source");
         } finally {
             watcher.shut();
             followers.shut();
