@@ -149,6 +149,10 @@ class RegistryUsesTest {
         }
     }
 
+    private static long cpuNanos() {
+        return java.lang.management.ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
+    }
+
     /** @return the service uses Felix holds for all bundles: the entries its registry searches per use */
     private int usesInRegistry() throws ReflectiveOperationException {
         Field registryField = fw.getClass().getDeclaredField("m_registry");
@@ -181,8 +185,14 @@ class RegistryUsesTest {
         WatcherDriver watcher = new WatcherDriver(context);
         try (TrackedPlacements names = new TrackedPlacements(context)) {
             int base = usesInRegistry();
+            long c0 = cpuNanos();
             int atN = usesAfterCreating(bus, names, 0, n);
+            long c1 = cpuNanos();
             int at2N = usesAfterCreating(bus, names, n, n);
+            long c2 = cpuNanos();
+            // for the report only (CPU time of this thread, so the machine's load does not count): never asserted
+            System.out.printf("RegistryUsesTest: creation CPU per device: first %d %.0f µs, next %d %.0f µs%n", n,
+                    (c1 - c0) / 1e3 / n, n, (c2 - c1) / 1e3 / n);
 
             assertEquals(2 * n, followers.devices().size(), "one follower per bus device");
             assertEquals(2 * n, watcher.devices().get(0).connections().size(), "the watcher hears every bus device");
