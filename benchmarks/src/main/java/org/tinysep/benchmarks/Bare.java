@@ -28,6 +28,7 @@ public final class Bare {
             case "echo" -> echo(Integer.parseInt(args[1]));
             case "idle" -> idle();
             case "felix" -> felix(args[1]);
+            case "registry" -> registry(args[1], Integer.parseInt(args[2]));
             default -> throw new IllegalArgumentException(args[0]);
         }
     }
@@ -90,6 +91,40 @@ public final class Bare {
         Framework f = new org.apache.felix.framework.FrameworkFactory().newFramework(config);
         f.start();
         answer(() -> f.getState() == org.osgi.framework.Bundle.ACTIVE ? "active" : "state " + f.getState());
+        f.stop();
+        f.waitForStop(10_000);
+    }
+
+    /**
+     * The scale floor (issue 29): a bare Felix registers {@code devices} × 2 plain services (a device's Device service
+     * and one provider service, with the device's four identity properties), then unregisters them; no listener.
+     * Answers "createMs stopMs".
+     */
+    private static void registry(String cache, int devices) throws Exception {
+        HashMap<String, String> config = new HashMap<>();
+        config.put("org.osgi.framework.storage", cache);
+        config.put("org.osgi.framework.storage.clean", "onFirstInit");
+        Framework f = new org.apache.felix.framework.FrameworkFactory().newFramework(config);
+        f.start();
+        org.osgi.framework.BundleContext c = f.getBundleContext();
+        java.util.List<org.osgi.framework.ServiceRegistration<?>> regs = new java.util.ArrayList<>(2 * devices);
+        long t0 = System.nanoTime();
+        for (int i = 0; i < devices; i++) {
+            java.util.Hashtable<String, Object> p = new java.util.Hashtable<>();
+            p.put("tinysep.device.uid", "dev-" + i);
+            p.put("tinysep.device.type", "Plain");
+            p.put("tinysep.driver.uid", "drv-plain");
+            p.put("tinysep.driver.name", "Plain");
+            regs.add(c.registerService(Runnable.class.getName(), (Runnable) () -> { }, p));
+            regs.add(c.registerService(Object.class.getName(), new Object(), p));
+        }
+        long t1 = System.nanoTime();
+        for (org.osgi.framework.ServiceRegistration<?> r : regs) {
+            r.unregister();
+        }
+        long t2 = System.nanoTime();
+        String times = String.format(java.util.Locale.ROOT, "%.1f %.1f", (t1 - t0) / 1e6, (t2 - t1) / 1e6);
+        answer(() -> times);
         f.stop();
         f.waitForStop(10_000);
     }

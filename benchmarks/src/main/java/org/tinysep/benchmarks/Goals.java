@@ -15,7 +15,7 @@ import java.util.List;
  * <li>{@code start.bannerMs}, {@code start.felixMs}: start to the banner, TinySEP and bare Felix</li>
  * <li>{@code rss.defaultKb}, {@code rss.headlessKb}, {@code rss.felixKb}: idle RSS, default and headless
  * distribution and bare Felix</li>
- * <li>{@code scale.create20000Ms}, {@code scale.stop20000Ms}, {@code scale.restore20000Ms}: 20,000 devices</li>
+ * <li>{@code scale.create.20000.ms}, {@code scale.stop.20000.ms}, {@code scale.restored.20000.ms}: 20,000 devices</li>
  * </ul>
  */
 final class Goals {
@@ -49,10 +49,10 @@ final class Goals {
                     false, 1024, "MB"),
             new Goal("idle RSS, headless gateway ≤ 64 MB", "rss.headlessKb", "rss.felixKb", 64 * 1024, true, false,
                     1024, "MB"),
-            new Goal("20,000 devices created ≤ 10 s", "scale.create20000Ms", null, 10_000, true, false, 1_000, "s"),
-            new Goal("orderly stop of 20,000 devices ≤ 5 s", "scale.stop20000Ms", null, 5_000, true, false, 1_000,
+            new Goal("20,000 devices created ≤ 10 s", "scale.create.20000.ms", null, 10_000, true, false, 1_000, "s"),
+            new Goal("orderly stop of 20,000 devices ≤ 5 s", "scale.stop.20000.ms", null, 5_000, true, false, 1_000,
                     "s"),
-            new Goal("restart to 20,000 devices restored ≤ 5 s", "scale.restore20000Ms", null, 5_000, true, false,
+            new Goal("restart to 20,000 devices restored ≤ 5 s", "scale.restored.20000.ms", null, 5_000, true, false,
                     1_000, "s"));
 
     private Goals() {

@@ -62,7 +62,11 @@ public final class Main {
         }, new String[] {"latency.p50", "latency.p99", "latency.echoP50", "latency.echoP99"},
                 new String[] {"TinySEP p50 µs (1k frames/s)", "TinySEP p99 µs", "bare echo p50 µs",
                     "bare echo p99 µs"}));
-        step("scale", report, () -> new Scale().run(b, footprint.chosenIdleRssKb));
+        step("scale", report, () -> {
+            Scale scale = new Scale();
+            scale.run(b, footprint.chosenIdleRssKb);
+            scale.figures.forEach(report::figure); // e.g. scale.create.20000.ms, judged by Goals
+        });
         step("lockstep", report, () -> new LockStep72h().run(b));
         step("hotupdate", report, () -> new HotUpdate().run(b));
         String loadAfter = Machine.load();

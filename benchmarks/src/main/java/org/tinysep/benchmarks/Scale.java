@@ -12,8 +12,29 @@ import java.util.List;
 final class Scale {
 
     record Row(int nodes, double createMs, long rssKb, long heapKb, double devicesMs, double stopMs, long backupFiles,
-            double bannerMs, double restoredMs, long restartRssKb) {
+            double bannerMs, double restoredMs, long restartRssKb, Floor floor) {
+
+        int devices() {
+            return 2 * nodes;
+        }
+
+        /** @return µs per device */
+        double perDevice(double ms) {
+            return ms * 1000 / devices();
+        }
     }
+
+    /** Bare Felix registering, then unregistering, the same number of devices × 2 plain services (Bare registry). */
+    record Floor(double createMs, double stopMs) {
+        static final Floor NONE = new Floor(Double.NaN, Double.NaN);
+    }
+
+    /**
+     * Named figures of this section for the goals table (issue 29 item 4), e.g. {@code scale.create.40000.ms},
+     * {@code scale.stop.40000.ms}, {@code scale.restored.40000.ms}, {@code scale.floor.create.40000.ms},
+     * {@code scale.slope.create} (µs per device at the largest count ÷ at the smallest: 1.0 = linear).
+     */
+    final java.util.Map<String, Double> figures = new java.util.LinkedHashMap<>();
 
     /**
      * Announces all nodes (keep-alives at 1,000/s) and repeats the announcement while devices are missing: keep-alives
@@ -42,8 +63,8 @@ final class Scale {
     }
 
     void run(Bench b, double idleRssKb) throws Exception {
-        // nodes; each makes 2 devices (bus + movement): 100, 1,000 and 10,000 devices
-        int[] counts = b.smoke() ? new int[] {20} : new int[] {50, 500, 5_000};
+        // nodes; each makes 2 devices (bus + movement): 5,000, 10,000, 20,000 and 40,000 devices (issue 29: the slope)
+        int[] counts = b.smoke() ? new int[] {20} : new int[] {2_500, 5_000, 10_000, 20_000};
         String only = System.getenv("BENCH_SCALE_NODES"); // e.g. 5000 while working on one size
         if (only != null && !only.isBlank()) {
             counts = java.util.Arrays.stream(only.split(",")).mapToInt(x -> Integer.parseInt(x.strip())).toArray();
@@ -52,12 +73,15 @@ final class Scale {
         List<String> failed = new ArrayList<>();
         for (int n : counts) {
             try {
-                rows.add(measure(b, n));
+                Row row = measure(b, n);
+                rows.add(row);
+                System.out.println("benchmarks: scale " + row); // each row as it comes (a long run may be cut short)
             } catch (Exception e) {
                 failed.add(n + " nodes: " + e);
             }
         }
         report(b, idleRssKb, rows);
+        figures(rows);
         if (!failed.isEmpty()) {
             throw new IllegalStateException("scale: " + failed);
         }
@@ -69,7 +93,7 @@ final class Scale {
         long rss;
         long heap;
         double devicesMs;
-        Platform first = inst.start(b.chosen());
+        Platform first = inst.start(options(b));
         try (Platform p = first; Nodes nodes = new Nodes(n, inst.amicaPort())) {
             long t0 = System.nanoTime();
             create = announceAll(p, nodes, n, t0);
@@ -90,13 +114,55 @@ final class Scale {
         double banner;
         double restored;
         long restartRss;
-        try (Platform p = inst.start(b.chosen())) {
+        try (Platform p = inst.start(options(b))) {
             banner = p.msToBanner();
             Bench.awaitDevices(p, "AmicaMovement", n, Duration.ofMinutes(30));
             restored = p.msSinceStart();
             restartRss = p.rssKb();
         }
-        return new Row(n, create, rss, heap, devicesMs, stopMs, backupFiles, banner, restored, restartRss);
+        return new Row(n, create, rss, heap, devicesMs, stopMs, backupFiles, banner, restored, restartRss,
+                floor(b, 2 * n));
+    }
+
+    /**
+     * The chosen options with a 1 GB heap cap: 40,000 devices hold ~400 MB live (~10 KB each), above the
+     * distribution's 256 MB cap; every row and its floor run with the same options, so the slope compares like with
+     * like.
+     */
+    static List<String> options(Bench b) {
+        List<String> o = new ArrayList<>(b.chosen());
+        o.add("-Xmx1g");
+        return o;
+    }
+
+    /** The floor in the same run: a bare Felix in its own JVM with the same options, the same number of devices. */
+    private static Floor floor(Bench b, int devices) {
+        try (Child felix = new Child(options(b), "registry", b.work().resolve("felix-registry-" + devices).toString(),
+                Integer.toString(devices))) {
+            String[] t = felix.ask().strip().split(" ");
+            return new Floor(Double.parseDouble(t[0]), Double.parseDouble(t[1]));
+        } catch (Exception e) {
+            System.out.println("benchmarks: scale floor for " + devices + " devices failed: " + e);
+            return Floor.NONE;
+        }
+    }
+
+    private void figures(List<Row> rows) {
+        for (Row x : rows) {
+            figures.put("scale.create." + x.devices() + ".ms", x.createMs());
+            figures.put("scale.stop." + x.devices() + ".ms", x.stopMs());
+            figures.put("scale.restored." + x.devices() + ".ms", x.restoredMs());
+            figures.put("scale.floor.create." + x.devices() + ".ms", x.floor().createMs());
+            figures.put("scale.floor.stop." + x.devices() + ".ms", x.floor().stopMs());
+        }
+        if (rows.size() >= 2) {
+            Row first = rows.get(0);
+            Row last = rows.get(rows.size() - 1);
+            figures.put("scale.slope.create", last.perDevice(last.createMs()) / first.perDevice(first.createMs()));
+            figures.put("scale.slope.stop", last.perDevice(last.stopMs()) / first.perDevice(first.stopMs()));
+            figures.put("scale.slope.restored",
+                    last.perDevice(last.restoredMs()) / first.perDevice(first.restoredMs()));
+        }
     }
 
     private static void report(Bench b, double idleRssKb, List<Row> rows) throws Exception {
@@ -121,5 +187,35 @@ final class Scale {
                 List.of(new Plot.Series("RSS", rows.stream().map(x -> x.rssKb() / 1024.0).toList()),
                         new Plot.Series("live heap after GC", rows.stream().map(x -> x.heapKb() / 1024.0).toList())));
         r.text("![scale](../docs/images/bench-scale.png)");
+        r.text("Cost per device (issue 29, item 4: linear means the µs per device stay flat as the count doubles; "
+                + "*slope* = µs per device ÷ the previous row's). Floor: a bare Felix in its own JVM with the same "
+                + "options registers the same number of devices × 2 plain services (a Device and a provider service "
+                + "with the device's identity properties, no listener), then unregisters them. Creation includes "
+                + "the radio taking the announcements (the sender repeats those the kernel dropped); *restored* is "
+                + "from `java -jar` to every device back, so it includes the start. Every row and its floor run with "
+                + "the chosen options plus `-Xmx1g` (40,000 devices hold ~400 MB live, above the distribution's "
+                + "256 MB cap).");
+        List<List<String>> cost = new ArrayList<>();
+        Row prev = null;
+        for (Row x : rows) {
+            cost.add(List.of(Integer.toString(x.devices()),
+                    Report.f("%.0f µs", x.perDevice(x.createMs())), slope(x, prev, Row::createMs),
+                    Report.f("%.1f µs", x.perDevice(x.floor().createMs())), Report.ratio(x.createMs(), x.floor().createMs()),
+                    Report.f("%.0f µs", x.perDevice(x.stopMs())), slope(x, prev, Row::stopMs),
+                    Report.f("%.1f µs", x.perDevice(x.floor().stopMs())), Report.ratio(x.stopMs(), x.floor().stopMs()),
+                    Report.f("%.0f µs", x.perDevice(x.restoredMs())), slope(x, prev, Row::restoredMs),
+                    Report.ratio(x.restoredMs(), x.floor().createMs())));
+            prev = x;
+        }
+        r.table(List.of("devices", "creation per device", "slope", "floor: register per device", "× floor",
+                "orderly stop per device", "slope", "floor: unregister per device", "× floor",
+                "restart to all restored, per device", "slope", "× floor (register)"), cost);
+    }
+
+    private static String slope(Row x, Row prev, java.util.function.ToDoubleFunction<Row> ms) {
+        if (prev == null) {
+            return "–";
+        }
+        return Report.f("%.2f", x.perDevice(ms.applyAsDouble(x)) / prev.perDevice(ms.applyAsDouble(prev)));
     }
 }

@@ -10,6 +10,7 @@ import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.device.Device;
+import org.tinysep.device.support.ServiceUse;
 import org.tinysep.api.health.SensorHealth;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.device.DeviceStatus;
@@ -87,7 +88,7 @@ final class DailySummary implements AutoCloseable {
         List<Device> out = new ArrayList<>();
         try {
             for (ServiceReference<Device> ref : context.getServiceReferences(Device.class, null)) {
-                Device d = context.getService(ref);
+                Device d = ServiceUse.take(context, ref); // no use left per device in the registry (issue 29)
                 if (d != null) {
                     try {
                         DeviceStatus.State s = d.status().state();
@@ -96,7 +97,7 @@ final class DailySummary implements AutoCloseable {
                         }
                     } catch (RuntimeException gone) { // a device going away: not listed
                     } finally {
-                        context.ungetService(ref);
+                        ServiceUse.release(context, ref);
                     }
                 }
             }

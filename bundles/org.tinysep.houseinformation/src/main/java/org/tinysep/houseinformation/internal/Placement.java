@@ -7,6 +7,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
 import org.tinysep.device.support.RoomDirectory;
+import org.tinysep.device.support.ServiceUse;
 import org.tinysep.device.support.Rooms;
 
 /** One attempt to place one device by a rule, and its outcome. */
@@ -25,24 +26,9 @@ record Placement(Result result, String detail) {
         } catch (IllegalArgumentException e) {
             return new Placement(Result.UNKNOWN_ROOM, e.getMessage());
         }
-        Device device;
-        try {
-            device = context.getService(ref);
-        } catch (IllegalStateException e) {
-            return new Placement(Result.SKIPPED, "the device is gone");
-        }
-        if (device == null) {
-            return new Placement(Result.SKIPPED, "the device is gone");
-        }
-        try {
-            return placeOn(device, room);
-        } finally {
-            try {
-                context.ungetService(ref);
-            } catch (IllegalStateException ignored) {
-                // our bundle is stopping
-            }
-        }
+        // given back at once, leaving no use in the registry per device (issue 29)
+        return ServiceUse.with(context, ref, device -> placeOn(device, room),
+                new Placement(Result.SKIPPED, "the device is gone"));
     }
 
     private static Placement placeOn(Device device, Room room) {

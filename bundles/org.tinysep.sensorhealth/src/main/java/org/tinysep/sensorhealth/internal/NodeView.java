@@ -10,6 +10,7 @@ import org.osgi.util.tracker.ServiceTrackerCustomizer;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.health.NodeHealthSource;
+import org.tinysep.device.support.ServiceUse;
 import org.tinysep.sensorhealth.internal.Placements.OnNode;
 
 /**
@@ -25,7 +26,7 @@ final class NodeView implements AutoCloseable {
         this.sources = new ServiceTracker<>(context, NodeHealthSource.class, new ServiceTrackerCustomizer<>() {
             @Override
             public NodeHealthSource addingService(ServiceReference<NodeHealthSource> ref) {
-                NodeHealthSource s = context.getService(ref);
+                NodeHealthSource s = ServiceUse.take(context, ref); // no use left per node (issue 29)
                 if (s != null) {
                     index.sourceAdded(uid(ref), String.valueOf(ref.getProperty(DeviceProperties.NODE_ADDRESS)),
                             (String) ref.getProperty(DeviceProperties.ROOM), s);
@@ -41,7 +42,7 @@ final class NodeView implements AutoCloseable {
             @Override
             public void removedService(ServiceReference<NodeHealthSource> ref, NodeHealthSource s) {
                 index.sourceRemoved(uid(ref), s);
-                context.ungetService(ref);
+                ServiceUse.release(context, ref);
             }
         });
         try {
@@ -50,7 +51,7 @@ final class NodeView implements AutoCloseable {
                     new ServiceTrackerCustomizer<Device, Device>() {
                         @Override
                         public Device addingService(ServiceReference<Device> ref) {
-                            Device d = context.getService(ref);
+                            Device d = ServiceUse.take(context, ref);
                             if (d != null) {
                                 index.deviceChanged(onNode(ref, d));
                             }
@@ -65,7 +66,7 @@ final class NodeView implements AutoCloseable {
                         @Override
                         public void removedService(ServiceReference<Device> ref, Device d) {
                             index.deviceRemoved(uid(ref));
-                            context.ungetService(ref);
+                            ServiceUse.release(context, ref);
                         }
                     });
         } catch (InvalidSyntaxException e) {

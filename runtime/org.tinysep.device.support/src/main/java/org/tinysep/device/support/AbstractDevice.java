@@ -126,8 +126,7 @@ public abstract class AbstractDevice implements Device {
      * @return whether the device stays: it still holds a vital connection, or it {@link #watchesThePerson()}
      */
     final boolean loseProvider(String providerUid) {
-        boolean hadVital = registration.connections().stream()
-                .anyMatch(c -> c.providerDeviceUid().equals(providerUid) && c.vital());
+        boolean hadVital = registration.connectionsTo(providerUid).stream().anyMatch(ConnectionInfo::vital);
         Object provider = registration.provider(providerUid);
         follow.gone(providerUid);
         boolean stillVital = registration.providerGone(providerUid);

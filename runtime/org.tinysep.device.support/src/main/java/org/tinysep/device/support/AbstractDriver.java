@@ -28,6 +28,8 @@ public abstract class AbstractDriver implements Driver {
     private final Map<String, AbstractDevice> devices = new LinkedHashMap<>();
     private volatile DriverContext context;
     private volatile ServiceRegistration<Driver> registration;
+    /** Devices examined because a provider went, counted for the scale test (RegistryUsesTest). */
+    long examined;
 
     protected AbstractDriver(String name) {
         this.name = name;
@@ -151,9 +153,15 @@ public abstract class AbstractDriver implements Driver {
         if (own != null && own.stopping()) {
             return;
         }
-        for (AbstractDevice d : snapshot()) {
-            boolean hadIt = d.connections().stream().anyMatch(c -> c.providerDeviceUid().equals(providerUid));
-            if (hadIt && !d.loseProvider(providerUid)) {
+        // only the devices connected to it (an index), not every device's connections: n providers going from n
+        // devices was n² (issue 29)
+        for (String deviceUid : context().consumers().consumersOf(providerUid)) {
+            AbstractDevice d;
+            synchronized (devices) {
+                d = devices.get(deviceUid);
+            }
+            examined++;
+            if (d != null && !d.loseProvider(providerUid)) {
                 context().event(EventKind.DEVICE_EVENT, d.uid() + " lost its vital connections and is removed");
                 remove(d.uid()); // its backup stays: the settings come back with the provider
             }

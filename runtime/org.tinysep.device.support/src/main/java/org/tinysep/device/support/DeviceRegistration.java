@@ -50,6 +50,7 @@ final class DeviceRegistration {
     <L> void connect(Provider<L> provider, Class<?> providerInterface, L listener, boolean vital) {
         consumptions.add(providerInterface.getSimpleName(), provider.deviceUid(), vital, provider.connect(listener));
         providers.put(provider.deviceUid(), provider);
+        context.consumers().connected(provider.deviceUid(), uid);
         context.reporter().event(EventKind.CONNECTED, uid, "connected to " + providerInterface.getSimpleName()
                 + " of " + provider.deviceUid() + (vital ? " (vital)" : " (optional)"));
     }
@@ -57,8 +58,9 @@ final class DeviceRegistration {
     /** Drops every connection to the given provider device. @return whether a vital connection is still held */
     boolean providerGone(String providerUid) {
         providers.remove(providerUid);
-        for (ConnectionInfo c : consumptions.infos()) {
-            if (c.providerDeviceUid().equals(providerUid) && consumptions.remove(c.interfaceName(), providerUid)) {
+        context.consumers().disconnected(providerUid, uid);
+        for (ConnectionInfo c : consumptions.to(providerUid)) {
+            if (consumptions.remove(c.interfaceName(), providerUid)) {
                 context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName()
                         + " of " + providerUid + " (provider removed)");
             }
@@ -75,6 +77,11 @@ final class DeviceRegistration {
         return consumptions.infos();
     }
 
+    /** @return the connections held to one provider device */
+    List<ConnectionInfo> connectionsTo(String providerUid) {
+        return consumptions.to(providerUid);
+    }
+
     /** Closes every connection, then unregisters the services. */
     void unregister() {
         // inputs before services: once its inputs are closed, what arrives for this device waits for a replacement
@@ -83,6 +90,7 @@ final class DeviceRegistration {
         for (ConnectionInfo c : consumptions.infos()) {
             context.reporter().event(EventKind.DISCONNECTED, uid, "disconnected from " + c.interfaceName() + " of "
                     + c.providerDeviceUid());
+            context.consumers().disconnected(c.providerDeviceUid(), uid);
         }
         consumptions.closeAll();
         providers.clear();

@@ -18,6 +18,7 @@ public final class DriverContext implements AutoCloseable {
     private final PlatformClock clock;
     private final RoomDirectory rooms;
     private final Backups backups;
+    private final ConsumerIndex consumers = new ConsumerIndex();
 
     /** The context of a driver running in a framework: logs and clock follow the services. */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
@@ -113,6 +114,11 @@ public final class DriverContext implements AutoCloseable {
     /** @return the device manager's backup store, when installed (thesis 3.7) */
     public Backups backups() {
         return backups;
+    }
+
+    /** @return which of the driver's devices are connected to which provider device */
+    ConsumerIndex consumers() {
+        return consumers;
     }
 
     public Instant now() {

@@ -64,7 +64,7 @@ public final class ProviderTracker<P> implements AutoCloseable {
         this.tracker = new ServiceTracker<>(context, filter, null) {
             @Override
             public P addingService(ServiceReference<P> ref) {
-                P p = context.getService(ref);
+                P p = ServiceUse.take(context, ref); // no use left in the registry per provider (issue 29)
                 if (p == null) {
                     return null;
                 }
@@ -86,11 +86,7 @@ public final class ProviderTracker<P> implements AutoCloseable {
                             e.toString());
                     LOG.debug("detail", e);
                 } finally {
-                    try {
-                        context.ungetService(ref);
-                    } catch (IllegalStateException ignored) {
-                        // our bundle is stopping: nothing to release
-                    }
+                    ServiceUse.release(context, ref);
                 }
             }
         };

@@ -75,15 +75,10 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
     public String nameOf(String deviceUid) {
         for (ServiceReference<Object> ref : byUid.getOrDefault(deviceUid, List.of())) {
             if (isDevice(ref)) {
-                Object d = context.getService(ref);
-                try {
-                    if (d instanceof Device device) {
-                        return device.name();
-                    }
-                } finally {
-                    if (d != null) {
-                        context.ungetService(ref);
-                    }
+                String name = ServiceUse.with(context, ref, d -> d instanceof Device device ? device.name() : null,
+                        null);
+                if (name != null) {
+                    return name;
                 }
             }
         }

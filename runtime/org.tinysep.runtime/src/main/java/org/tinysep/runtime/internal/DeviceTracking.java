@@ -9,6 +9,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.device.support.ServiceUse;
 
 /**
  * Keeps the directory's devices in step with the registry and announces creation and removal. A device's
@@ -33,7 +34,8 @@ final class DeviceTracking implements ServiceTrackerCustomizer<Device, DeviceRec
 
     @Override
     public DeviceRecord addingService(ServiceReference<Device> ref) {
-        Device device = context.getService(ref);
+        // kept without a use left in the registry: Felix's per-bundle use array made n devices cost n² (issue 29)
+        Device device = ServiceUse.take(context, ref);
         if (device == null) {
             LOG.warn("Device service {} could not be obtained; ignored", ref.getProperty(Constants.SERVICE_ID));
             return null;
@@ -60,6 +62,6 @@ final class DeviceTracking implements ServiceTrackerCustomizer<Device, DeviceRec
         if (!closing.getAsBoolean()) {
             announcer.deviceRemoved(r);
         }
-        Tracking.unget(context, ref);
+        ServiceUse.release(context, ref);
     }
 }

@@ -1,7 +1,6 @@
 package org.tinysep.runtime.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -56,7 +55,10 @@ class DeviceManagerStopTest {
         log.set(manager, new RecordingEventLog());
         manager.activate(context);
         assertEquals(200, manager.devices().size());
-        assertNotNull(devices.get(7).getReference().getUsingBundles(), "the manager holds each device service");
+        // issue 29: it keeps each device object but no use of it in the registry (a device's services are singletons)
+        assertNull(devices.get(7).getReference().getUsingBundles(), "the manager holds no use of a device service");
+        assertEquals("Fake 7", manager.devices().stream().filter(d -> d.uid().equals("dev-7")).findFirst()
+                .orElseThrow().device().name(), "and still reaches the device");
 
         // told after the manager's listener (same bundle, registered later): what is still in use at that moment
         AtomicReference<Bundle[]> inUseWhenStopping = new AtomicReference<>(new Bundle[0]);

@@ -13,6 +13,7 @@ import org.osgi.framework.Constants;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.tinysep.api.device.Device;
+import org.tinysep.device.support.ServiceUse;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
 
@@ -38,7 +39,7 @@ public final class PlatformView {
     public List<DeviceRef> devices() {
         List<DeviceRef> out = new ArrayList<>();
         for (ServiceReference<Device> ref : refs(Device.class, null)) {
-            Device d = context.getService(ref);
+            Device d = ServiceUse.take(context, ref); // no use left per device in the registry (issue 29)
             if (d != null) {
                 try {
                     String uid = String.valueOf(ref.getProperty(DeviceProperties.DEVICE_UID));
@@ -46,7 +47,7 @@ public final class PlatformView {
                             text(ref, DeviceProperties.NODE_ADDRESS), strings(ref.getProperty(DeviceProperties.NODE_TYPE)),
                             provides(uid)));
                 } finally {
-                    context.ungetService(ref); // DS components stay registered; calls after unget are still answered
+                    ServiceUse.release(context, ref); // DS components stay registered; calls after unget are still answered
                 }
             }
         }
