@@ -23,6 +23,7 @@ final class Platform implements AutoCloseable {
     final Path home;
     final int amicaPort;
     private final PlatformProcess shell;
+    private final long processId;
     private final long startNanos;
     private volatile long bannerNanos;
     private volatile String banner = "";
@@ -32,6 +33,7 @@ final class Platform implements AutoCloseable {
         this.home = home;
         this.amicaPort = amicaPort;
         this.startNanos = startNanos;
+        this.processId = process.pid();
         this.shell = PlatformProcess.attach(process, this::saw);
     }
 
@@ -74,7 +76,23 @@ final class Platform implements AutoCloseable {
         if (bannerNanos == 0 && line.contains("bundles active")) {
             bannerNanos = System.nanoTime();
             banner = line.strip();
+            bannerCpuTicks = Proc.cpuTicks(processId);
+        } else if (webNanos == 0 && line.startsWith("Web console: ")) {
+            webNanos = System.nanoTime(); // issue 29: the console starts after the banner
         }
+    }
+
+    private volatile long bannerCpuTicks = -1;
+    private volatile long webNanos;
+
+    /** @return the process's CPU time (user + system) when the banner came, in ms; NaN if unknown */
+    double cpuMsToBanner() {
+        return bannerCpuTicks < 0 ? Double.NaN : bannerCpuTicks * 1000.0 / Proc.HZ;
+    }
+
+    /** @return ms from the banner to the line "Web console: <address>" (bound); NaN without one */
+    double msBannerToWeb() {
+        return webNanos == 0 || bannerNanos == 0 ? Double.NaN : (webNanos - bannerNanos) / 1e6;
     }
 
     /** @return ms from closing the shell's input to the process's end (0 before {@link #close}) */

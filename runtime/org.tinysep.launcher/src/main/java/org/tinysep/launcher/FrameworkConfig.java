@@ -62,8 +62,13 @@ public final class FrameworkConfig {
         p.put(Constants.FRAMEWORK_BEGINNING_STARTLEVEL, Integer.toString(startLevel));
         p.put("felix.startlevel.bundle", Integer.toString(startLevel)); // bundles installed later: deploy/, shell
         p.put("felix.log.level", "2");
-        // slf4j-simple is on the launcher's class path too: with Felix's implicit boot delegation,
-        // java.util.ServiceLoader inside slf4j-api would find it there ("not a subtype") and SLF4J falls to NOP
+        // SLF4J is the launcher's (lib/slf4j-api + lib/slf4j-simple): the system bundle exports its packages, so
+        // every bundle logs through the one logger the launcher configured. slf4j-api finds slf4j-simple with
+        // java.util.ServiceLoader on the class path, as outside OSGi: no Service Loader Mediator (SPI Fly) and no
+        // bytecode weaving at start (issue 29; before, SPI Fly + ASM wove every class of Jetty, JAXB and SLF4J)
+        p.put(Constants.FRAMEWORK_SYSTEMPACKAGES_EXTRA, Slf4jExports.header());
+        // no implicit boot delegation: a bundle sees only what it imports (the launcher's class path holds SLF4J,
+        // Felix and the launcher itself)
         p.put("felix.bootdelegation.implicit", "false");
         // FileInstall: etc/ holds ConfigAdmin configurations (<pid>.cfg, <factoryPid>-<name>.cfg)
         p.put("felix.fileinstall.dir", home.resolve("etc").toString());

@@ -39,6 +39,12 @@ public final class Launcher {
     public static final String DRIVERS_BSN = "org.tinysep.drivers";
     /** Name of the group the drivers list installs (folder {@code 5-apps}). */
     public static final String APPS_GROUP = "apps";
+    /**
+     * Name of the web console's group (folder {@code 4-web}: Felix HTTP on Jetty, the console's bundles): installed
+     * with the others but started only after the banner ({@link #startWeb()}), so the HTTP service is not on the
+     * start path (issue 29); not installed at all on a headless gateway ({@link Options#headless()}).
+     */
+    public static final String WEB_GROUP = "web";
 
     private static final Logger LOG = LoggerFactory.getLogger(Launcher.class);
     private static final Duration START_TIMEOUT = Duration.ofSeconds(60);
@@ -49,6 +55,9 @@ public final class Launcher {
     private final List<StartReport.Failure> installFailures = new ArrayList<>();
     /** Groups left to the drivers list: their bundles are reported, not installed, by the launcher. */
     private final List<BundleGroup> delegated = new ArrayList<>();
+    /** The web console's bundles, installed but not started before the banner. */
+    private final List<Bundle> web = new ArrayList<>();
+    private String webGroup = "";
     private volatile Framework framework;
     private Bundle shell;
 
@@ -98,6 +107,11 @@ public final class Launcher {
         for (BundleGroup group : groups) {
             if (driversList && APPS_GROUP.equals(group.name())) {
                 delegated.add(group); // the drivers list (var/drivers.xml) installs and starts these
+            } else if (WEB_GROUP.equals(group.name()) && options.headless()) {
+                LOG.info("Headless gateway: not installing bundles/{} (the web console and its HTTP service)",
+                        group.label());
+            } else if (WEB_GROUP.equals(group.name())) {
+                installWeb(fw.getBundleContext(), group); // started after the banner: startWeb()
             } else {
                 install(fw.getBundleContext(), group);
             }
@@ -111,7 +125,33 @@ public final class Launcher {
         }
         Readiness.await(fw.getBundleContext(), home.resolve("etc")); // the radios listen as configured
         StartReport report = report(Duration.ofNanos(System.nanoTime() - t0), level);
-        return report.withWarnings(signals.warnings(CONSOLE_WAIT));
+        return report.withWarnings(signals.warnings());
+    }
+
+    /**
+     * Starts the web console's group (after the banner: its HTTP service is not on the start path). Does nothing
+     * on a headless gateway or without a {@code *-web} group.
+     *
+     * @return the bundles that did not start, each with a one-line reason (empty when all started)
+     */
+    public List<StartReport.Failure> startWeb() {
+        List<StartReport.Failure> failures = new ArrayList<>();
+        for (Bundle b : web) {
+            try {
+                if (!isFragment(b)) {
+                    b.start();
+                }
+            } catch (BundleException | RuntimeException e) {
+                failures.add(new StartReport.Failure(b.getSymbolicName() + " " + b.getVersion(), webGroup,
+                        Failures.describe(e)));
+            }
+        }
+        return failures;
+    }
+
+    /** @return whether this start has a web console (a {@code *-web} group, not headless) */
+    public boolean hasWeb() {
+        return !web.isEmpty();
     }
 
     /**
@@ -127,6 +167,11 @@ public final class Launcher {
         if (shell != null) {
             shell.start();
         }
+    }
+
+    /** @return the options this launcher starts with */
+    public Options options() {
+        return options;
     }
 
     /** @return the running framework, or {@code null} before {@link #start()} */
@@ -160,6 +205,20 @@ public final class Launcher {
             LOG.error("Could not stop the framework: {}", Failures.describe(e));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+    }
+
+    private void installWeb(BundleContext context, BundleGroup group) {
+        webGroup = group.label();
+        for (Path jar : group.jars()) {
+            try {
+                Bundle bundle = context.installBundle(jar.toUri().toString());
+                bundle.adapt(BundleStartLevel.class).setStartLevel(group.startLevel());
+                web.add(bundle);
+            } catch (BundleException | RuntimeException e) {
+                installFailures.add(new StartReport.Failure(jar.getFileName().toString(), group.label(),
+                        "cannot install: " + Failures.describe(e)));
+            }
         }
     }
 
@@ -221,9 +280,6 @@ public final class Launcher {
         return new StartReport(version == null ? "(dev)" : version, took, level, options.daemon(),
                 active, installed, failures);
     }
-
-    /** How long the banner waits for the web console's own verdict when its HTTP service is not up. */
-    static final Duration CONSOLE_WAIT = Duration.ofSeconds(10);
 
     private static boolean isUp(Bundle bundle) {
         return bundle.getState() == Bundle.ACTIVE

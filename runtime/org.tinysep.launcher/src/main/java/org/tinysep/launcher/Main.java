@@ -104,14 +104,17 @@ public final class Main {
                     .ifPresent(s -> log.warn("{} (the event log and the caregivers are told)", s));
             heartbeat.write("STARTING", Instant.now());
             StartReport report = launcher.start();
+            long banner = System.nanoTime();
             report.lines().forEach(System.out::println);
             System.out.println(launcher.alertsLine(ALERTS_WAIT));
-            System.out.println(WebConsoleLine.line(launcher.framework().getBundleContext(), ALERTS_WAIT));
             System.out.flush();
             beating[0] = new Heartbeat(new LivenessProbe(launcher.framework()), heartbeat, systemd,
                     Heartbeat.interval(SdNotify.watchdogInterval(System.getenv())));
             beating[0].start();
             systemd.ifPresent(s -> s.ready(report.lines().get(0)));
+            // the web console after the banner: its HTTP service (Jetty) is not on the start path (issue 29)
+            webConsole(launcher, options, banner).forEach(System.out::println);
+            System.out.flush();
             launcher.startShell();
             int code = launcher.awaitStop();
             beating[0].close();
@@ -124,6 +127,27 @@ public final class Main {
             launcher.stop(STOP_TIMEOUT);
             return 1;
         }
+    }
+
+    /**
+     * Starts the web console's bundles ({@code bundles/4-web}) and waits until its HTTP service has bound.
+     *
+     * @param banner {@link System#nanoTime()} when the banner was printed
+     * @return the lines for below the banner: the console's address and how soon after the banner it answered, or a
+     *         warning; on a headless gateway the one line that says there is no console
+     */
+    static List<String> webConsole(Launcher launcher, Options options, long banner) throws InterruptedException {
+        if (options.headless()) {
+            return List.of("Headless gateway (--headless): no web console, no HTTP port; the shell and the event log"
+                    + " say what the console would");
+        }
+        if (!launcher.hasWeb()) {
+            return List.of("No web console in this distribution (no bundles/*-web group)");
+        }
+        List<String> lines = new java.util.ArrayList<>();
+        launcher.startWeb().forEach(f -> lines.add("  FAILED " + f.bundle() + " (" + f.group() + "): " + f.reason()));
+        lines.add(WebConsoleLine.line(launcher.framework().getBundleContext(), WebConsoleLine.WAIT, banner));
+        return lines;
     }
 
     /** A clean stop: the next start is not a restart after a failure. */

@@ -16,8 +16,15 @@ import java.util.Map;
  * @param help   print the usage and exit
  * @param supervise run the platform as a supervised child process, restarted when it fails or hangs
  *                  ({@code --supervise}: {@link Supervisor})
+ * @param headless  the headless gateway profile ({@code --headless} or {@code TINYSEP_HEADLESS=1}): the web console
+ *                  ({@code bundles/4-web}: its HTTP service, Jetty, and the console's bundles) is not installed
  */
-public record Options(boolean daemon, Path home, Path var, boolean help, boolean supervise) {
+public record Options(boolean daemon, Path home, Path var, boolean help, boolean supervise, boolean headless) {
+
+    /** Options with the web console (not headless). */
+    public Options(boolean daemon, Path home, Path var, boolean help, boolean supervise) {
+        this(daemon, home, var, help, supervise, false);
+    }
 
     /** Options whose state folder is {@code <home>/var}. */
     public Options(boolean daemon, Path home, boolean help) {
@@ -31,6 +38,8 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
 
     /** Environment variable that switches daemon mode on ({@code 1}, {@code true} or {@code yes}). */
     public static final String DAEMON_ENV = "TINYSEP_DAEMON";
+    /** Environment variable that switches the headless gateway profile on ({@code 1}, {@code true} or {@code yes}). */
+    public static final String HEADLESS_ENV = "TINYSEP_HEADLESS";
     /** System property naming the distribution directory. */
     public static final String HOME_PROPERTY = "tinysep.home";
     /** System property naming the state folder. */
@@ -38,8 +47,11 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
 
     /** The usage text printed by {@code --help} and on a bad argument. */
     public static final String USAGE = String.join(System.lineSeparator(),
-            "Usage: java -jar tinysep.jar [--daemon] [--supervise] [--home DIR] [--var DIR] [--web-password ROLE] [--help]",
+            "Usage: java -jar tinysep.jar [--daemon] [--headless] [--supervise] [--home DIR] [--var DIR] [--web-password ROLE]"
+                    + " [--help]",
             "  --daemon, -d   no interactive shell; run until SIGTERM (also: TINYSEP_DAEMON=1)",
+            "  --headless     headless gateway: no web console and no HTTP port (bundles/4-web is not installed;",
+            "                 also: TINYSEP_HEADLESS=1); less memory, docs/footprint.md",
             "  --home DIR     distribution directory (default: -Dtinysep.home, else the folder of tinysep.jar,",
             "                 else the current directory)",
             "  --var DIR      state folder: drivers list, house, mail spool, framework cache (default:",
@@ -61,6 +73,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
      */
     public static Options parse(List<String> args, Map<String, String> env, Path defaultHome) {
         boolean daemon = isTrue(env.get(DAEMON_ENV));
+        boolean headless = isTrue(env.get(HEADLESS_ENV));
         boolean help = false;
         boolean supervise = false;
         Path home = defaultHome;
@@ -72,6 +85,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
                 case "--daemon", "-d" -> daemon = true;
                 case "--help", "-h" -> help = true;
                 case "--supervise" -> supervise = true;
+                case "--headless" -> headless = true;
                 case "--home" -> {
                     if (i + 1 >= args.size()) {
                         throw new IllegalArgumentException("--home needs a directory");
@@ -97,7 +111,7 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
         }
         Path absoluteHome = home.toAbsolutePath().normalize();
         Path absoluteVar = (var == null ? absoluteHome.resolve("var") : var.toAbsolutePath()).normalize();
-        return new Options(daemon, absoluteHome, absoluteVar, help, supervise);
+        return new Options(daemon, absoluteHome, absoluteVar, help, supervise, headless);
     }
 
     /**

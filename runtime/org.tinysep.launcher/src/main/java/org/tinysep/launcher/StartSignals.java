@@ -1,7 +1,6 @@
 package org.tinysep.launcher;
 
 import java.lang.reflect.Method;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -26,7 +25,6 @@ import org.slf4j.LoggerFactory;
 final class StartSignals {
 
     static final String EVENT_LOG = "org.tinysep.api.log.EventLog";
-    static final String CONSOLE_RUNTIME = "org.osgi.service.servlet.runtime.HttpServiceRuntime";
     static final List<String> PREFIXES = List.of("Monitoring reduced: ", "Node type mismatch: ");
     private static final Logger LOG = LoggerFactory.getLogger(StartSignals.class);
 
@@ -50,19 +48,12 @@ final class StartSignals {
     }
 
     /**
-     * @param consoleWait how long to wait for the web console's verdict when its HTTP service is not up
-     * @return one {@code WARNING: …} line per signal of this start, in order, without repeats
+     * @return one {@code WARNING: …} line per signal of this start, in order, without repeats (the web console starts
+     *         after the banner: its own verdict is the line {@link WebConsoleLine} prints below the banner)
      */
-    List<String> warnings(Duration consoleWait) throws InterruptedException {
+    List<String> warnings() {
         context.removeServiceListener(listener);
-        long end = System.nanoTime() + consoleWait.toNanos();
-        List<String> lines = lines();
-        // the console says after a few seconds that it cannot listen: wait for that verdict, not longer
-        while (!consoleUp() && lines.stream().noneMatch(l -> l.contains("web console")) && System.nanoTime() < end) {
-            Thread.sleep(200);
-            lines = lines();
-        }
-        return lines;
+        return lines();
     }
 
     private List<String> lines() {
@@ -116,20 +107,6 @@ final class StartSignals {
         } catch (Exception e) {
             LOG.debug("Cannot read the event log's newest entry: {}", e.toString());
             return 0;
-        }
-    }
-
-    private boolean consoleUp() {
-        try {
-            ServiceReference<?>[] refs = context.getAllServiceReferences(CONSOLE_RUNTIME, null);
-            if (refs != null && refs.length > 0) {
-                return true;
-            }
-            // no web console installed: nothing to wait for
-            return java.util.stream.Stream.of(context.getBundles())
-                    .noneMatch(b -> "org.tinysep.web.api".equals(b.getSymbolicName()));
-        } catch (InvalidSyntaxException e) {
-            return true;
         }
     }
 

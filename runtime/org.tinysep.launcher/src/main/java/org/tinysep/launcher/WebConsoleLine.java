@@ -20,23 +20,33 @@ final class WebConsoleLine {
     private WebConsoleLine() {
     }
 
-    /** @return {@code Web console: <address> - …} once bound, else a warning that it did not start */
-    static String line(BundleContext context, Duration wait) throws InterruptedException {
+    /**
+     * How long the line waits for the HTTP service to bind (it starts after the banner; on a loaded machine Jetty
+     * takes seconds; a port held by another program never binds).
+     */
+    static final Duration WAIT = Duration.ofSeconds(10);
+
+    /**
+     * @param since {@link System#nanoTime()} of the banner: the line says how soon after it the console was bound
+     * @return {@code Web console: <address> (…) - …} once bound, else a warning that it did not start
+     */
+    static String line(BundleContext context, Duration wait, long since) throws InterruptedException {
         long end = System.nanoTime() + wait.toNanos();
         String endpoint = endpoint(context);
         while (endpoint == null && System.nanoTime() < end) {
-            Thread.sleep(50);
+            Thread.sleep(20);
             endpoint = endpoint(context);
         }
-        return describe(endpoint);
+        return describe(endpoint, Duration.ofNanos(System.nanoTime() - since));
     }
 
-    static String describe(String endpoint) {
+    static String describe(String endpoint, Duration afterBanner) {
         if (endpoint == null) {
             return "WARNING: the web console did not start (its port, org.osgi.service.http.port in "
                     + "etc/org.apache.felix.http.cfg, may be held by another program; the log says why)";
         }
-        return "Web console: " + endpoint + " - " + HOW_TO_GET_IN;
+        return String.format(java.util.Locale.ROOT, "Web console: %s (up %.1f s after the banner) - %s", endpoint,
+                afterBanner.toMillis() / 1000.0, HOW_TO_GET_IN);
     }
 
     private static String endpoint(BundleContext context) {

@@ -29,7 +29,10 @@ final class WebPassword {
     static final String OPTION = "--web-password";
     static final int MIN_LENGTH = 8;
     private static final int ITERATIONS = 120_000;
-    private static final SecureRandom RANDOM = new SecureRandom();
+    /** Made on first use: every start reads the arguments here, and a SecureRandom loads the security providers. */
+    private static final class Random {
+        static final SecureRandom RANDOM = new SecureRandom();
+    }
 
     private WebPassword() {
     }
@@ -99,7 +102,7 @@ final class WebPassword {
 
     static String hash(String password) {
         byte[] salt = new byte[16];
-        RANDOM.nextBytes(salt);
+        Random.RANDOM.nextBytes(salt);
         PBEKeySpec spec = new PBEKeySpec(password.toCharArray(), salt, ITERATIONS, 256);
         try {
             byte[] hash = SecretKeyFactory.getInstance("PBKDF2WithHmacSHA256").generateSecret(spec).getEncoded();

@@ -41,7 +41,15 @@ class DistributionIT {
         dist = new TestDistribution(home, null);
         report = dist.start();
         launcher = dist.launcher();
+        // at once, before any test: how soon after the banner the console answers HTTP (it starts after it)
+        try {
+            webAnswered = WebConsoleProbe.awaitAnswer(dist.httpPort(), Duration.ofSeconds(30));
+        } catch (AssertionError none) {
+            webAnswered = Long.MAX_VALUE; // theWebConsoleAnswersSoonAfterTheBanner fails; the other tests run
+        }
     }
+
+    private static long webAnswered;
 
     @AfterAll
     static void shutdown() {
@@ -66,10 +74,30 @@ class DistributionIT {
 
     @Test
     void slf4jInsideTheFrameworkIsBoundToSimpleLogger() throws Exception {
-        Class<?> factory = bundle("slf4j.api").loadClass("org.slf4j.LoggerFactory");
+        Class<?> factory = bundle("org.tinysep.runtime").loadClass("org.slf4j.LoggerFactory");
         Object loggerFactory = factory.getMethod("getILoggerFactory").invoke(null);
         assertEquals("org.slf4j.simple.SimpleLoggerFactory", loggerFactory.getClass().getName(),
                 "SLF4J inside the framework must not fall back to NOP (pitfall 1)");
+        assertEquals(org.slf4j.LoggerFactory.class, factory, "the bundles log through the launcher's SLF4J");
+    }
+
+    @Test
+    void nothingWeavesBytecodeAtStart() throws Exception {
+        // issue 29: SPI Fly's weaving of Jetty, JAXB and SLF4J was a quarter of the start's CPU
+        assertTrue(Arrays.stream(context().getBundles()).noneMatch(b -> String.valueOf(b.getSymbolicName())
+                .startsWith("org.apache.aries.spifly")), "no Service Loader Mediator in the distribution");
+        assertTrue(context().getServiceReferences(org.osgi.framework.hooks.weaving.WeavingHook.class.getName(), null)
+                == null, "no weaving hook registered");
+    }
+
+    @Test
+    void theWebConsoleAnswersSoonAfterTheBanner() throws Exception {
+        // its group starts after the banner (issue 29): HTTP answers within a bound of it, on the configured port
+        assertTrue(webAnswered != Long.MAX_VALUE, "the web console did not answer HTTP within 30 s of the banner");
+        double seconds = (webAnswered - dist.bannerNanos()) / 1e9;
+        System.out.printf("web console answered %.2f s after the banner%n", seconds);
+        assertTrue(seconds <= WebConsoleProbe.BOUND.toSeconds(), "the console answers within "
+                + WebConsoleProbe.BOUND.toSeconds() + " s of the banner (load permitting): " + seconds + " s");
     }
 
     @Test

@@ -32,6 +32,15 @@ class OptionsTest {
     }
 
     @Test
+    void headlessFromFlagOrEnvironment() {
+        assertFalse(Options.parse(List.of(), Map.of(), HOME).headless(), "the web console is there by default");
+        assertTrue(Options.parse(List.of("--headless"), Map.of(), HOME).headless());
+        assertTrue(Options.parse(List.of(), Map.of("TINYSEP_HEADLESS", "yes"), HOME).headless());
+        assertFalse(Options.parse(List.of(), Map.of("TINYSEP_HEADLESS", "0"), HOME).headless());
+        assertTrue(Options.USAGE.contains("--headless"), Options.USAGE);
+    }
+
+    @Test
     void homeInBothSpellingsIsMadeAbsolute() {
         assertEquals(Path.of("/srv/t"), Options.parse(List.of("--home", "/srv/t"), Map.of(), HOME).home());
         assertEquals(Path.of("/srv/u"), Options.parse(List.of("--home=/srv/x/../u"), Map.of(), HOME).home());

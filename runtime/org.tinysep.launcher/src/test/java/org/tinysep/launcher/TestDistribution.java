@@ -39,6 +39,35 @@ final class TestDistribution {
         copy(Path.of(System.getProperty("tinysep.dist", "target/tinysep")), home);
         Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=0\nbindAddress=127.0.0.1\n");
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
+        httpPort = freeTcpPort(); // the web console on a port nobody holds (8080 may be another TinySEP's)
+        Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
+                "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + httpPort + "\n");
+    }
+
+    private final int httpPort;
+    private boolean headless;
+    private long bannerNanos;
+
+    /** The next {@link #start()} is of the headless gateway profile ({@code --headless}). @return this */
+    TestDistribution headless() {
+        headless = true;
+        return this;
+    }
+
+    /** @return the web console's port, as this copy's {@code etc/org.apache.felix.http.cfg} sets it */
+    int httpPort() {
+        return httpPort;
+    }
+
+    /** @return {@link System#nanoTime()} when the last {@link #start()} had its banner */
+    long bannerNanos() {
+        return bannerNanos;
+    }
+
+    static int freeTcpPort() throws IOException {
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1"))) {
+            return s.getLocalPort();
+        }
     }
 
     /** Runs the time controller in real time (synchroniser on port 0), as process tests want it. @return this */
@@ -63,9 +92,13 @@ final class TestDistribution {
 
     StartReport start() throws Exception {
         LoggingDefaults.apply();
-        launcher = new Launcher(var == null ? new Options(true, home, false) : new Options(true, home, var, false));
+        Path state = var == null ? home.resolve("var") : var;
+        launcher = new Launcher(new Options(true, home, state, false, false, headless));
         StartReport report = launcher.start();
+        bannerNanos = System.nanoTime();
         report.lines().forEach(System.out::println);
+        // as Main does: the web console's group starts after the banner
+        Main.webConsole(launcher, launcher.options(), bannerNanos).forEach(System.out::println);
         return report;
     }
 
