@@ -21,7 +21,7 @@ import org.tinysep.simulator.replay.SensorEvent;
 import org.tinysep.simulator.replay.SensorMapping;
 
 /**
- * A recorded home ready for evaluation: its events and labels (DESIGN.md formats), the mapping pinned to the node
+ * A recorded home ready for evaluation: its events and labels (simulator/README-replay.md formats), the mapping pinned to the node
  * addresses of the whole recording (so a window replayed later finds the same devices in a snapshot), the House
  * Information file and placements, and the split into history (first half) and test (second half).
  *

@@ -78,7 +78,7 @@ record TestHalfFigures(int alertsDay, int alertsNight, double days, Agreement oc
                 home.isZero() ? 0 : blind / home.toSeconds(), home);
     }
 
-    /** Day is 07:00 to 22:00, night the rest (DESIGN.md "Judging the alert"). */
+    /** Day is 07:00 to 22:00, night the rest (evaluation/README.md "What is counted, and how"). */
     static boolean isDay(LocalDateTime t) {
         int h = t.getHour();
         return h >= 7 && h < 22;

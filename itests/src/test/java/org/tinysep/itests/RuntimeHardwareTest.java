@@ -27,7 +27,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 
 /**
- * DESIGN.md scenario 3 (thesis Fig 3.6): with the AmICA flat running and Flat Occupancy connected, the Sun SPOT
+ * docs/acceptance.md scenario 3 (thesis Fig 3.6): with the AmICA flat running and Flat Occupancy connected, the Sun SPOT
  * bundles are installed and started at runtime through the Felix shell. A Sun SPOT movement node appears and
  * Flat Occupancy connects to it, with no restart and no change to Flat Occupancy's code.
  */

@@ -23,7 +23,7 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
 
 /**
- * DESIGN.md acceptance scenarios 1, 2 and 5 (thesis Figs 3.3, 3.4 and driver removal) on the real bundles in a
+ * docs/acceptance.md scenarios 1, 2 and 5 (thesis Figs 3.3, 3.4 and driver removal) on the real bundles in a
  * real Felix framework, fed with real AmICA frames over UDP on 127.0.0.1. Each step asserts the exact device
  * graph, so a missing or extra device or connection fails the test.
  */

@@ -16,7 +16,7 @@ import org.tinysep.simulator.cli.Run;
 import org.tinysep.testsupport.process.PlatformProcess;
 
 /**
- * DESIGN.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the
+ * docs/acceptance.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the
  * real simulator over UDP in lock-step); the user adds a room, places devices in other rooms, changes a parameter and
  * names one device; the framework stops (end of the shell's input: a clean stop) and starts again with the same home.
  * Before any packet arrives (the simulator does not run again) {@code tinysep:devices} shows the same devices,

@@ -34,7 +34,7 @@ import org.tinysep.itests.AmicaNode;
 import org.tinysep.itests.TinySepTestSupport;
 
 /**
- * DESIGN.md scenario 4 (thesis Fig 3.8): House Information's device exists at once; the house is edited through
+ * docs/acceptance.md scenario 4 (thesis Fig 3.8): House Information's device exists at once; the house is edited through
  * the shell, listeners hear every change, and a real AmICA movement device is placed in a room so consumers can
  * filter on {@code tinysep.room}. The house file lives in a fresh temp folder per framework.
  */

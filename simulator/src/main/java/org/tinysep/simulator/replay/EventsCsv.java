@@ -10,7 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The generic event log {@code events.csv} (DESIGN.md "Recorded-home replay formats"): header
+ * The generic event log {@code events.csv} (simulator/README-replay.md "Generic: events.csv and labels.csv"): header
  * {@value #HEADER}; one row per state change in time order; time local ISO-8601 without zone (fractional seconds
  * optional); kind one of motion, door, pressure, flush, electric, other; value ON/OFF or OPEN/CLOSE.
  */

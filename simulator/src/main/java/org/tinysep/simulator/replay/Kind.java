@@ -2,7 +2,10 @@ package org.tinysep.simulator.replay;
 
 import java.util.Locale;
 
-/** What a recorded sensor senses (DESIGN.md "Recorded-home replay formats"); written lower case in events.csv. */
+/**
+ * What a recorded sensor senses (simulator/README-replay.md "Generic: events.csv and labels.csv"); written lower case
+ * in events.csv.
+ */
 public enum Kind {
     /** Passive infrared motion sensor. */
     MOTION,

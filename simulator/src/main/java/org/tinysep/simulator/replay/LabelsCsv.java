@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The optional label file {@code labels.csv} (DESIGN.md): header {@value #HEADER}; times local ISO-8601 without
+ * The optional label file {@code labels.csv} (simulator/README-replay.md): header {@value #HEADER}; times local ISO-8601 without
  * zone; resident may be empty. Used for evaluation only. Labels are kept as recorded (an end before the start is
  * not rejected, see {@link Label#isProper()}).
  */

@@ -11,7 +11,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** events.csv and labels.csv exactly as DESIGN.md specifies them. */
+/** events.csv and labels.csv exactly as simulator/README-replay.md specifies them. */
 class CsvFormatsTest {
 
     @TempDir

@@ -12,7 +12,7 @@ import org.tinysep.api.device.Connection;
 
 /**
  * The listeners connected to one provider. Dispatch is synchronous on the caller's thread; a listener that
- * throws is logged and skipped so delivery to the others goes on (DESIGN.md, threading).
+ * throws is logged and skipped so delivery to the others goes on (docs/architecture.md, "Threading").
  *
  * @param <L> the listener type
  */

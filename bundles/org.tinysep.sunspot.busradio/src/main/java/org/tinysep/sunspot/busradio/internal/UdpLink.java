@@ -16,7 +16,10 @@ import org.tinysep.link.udp.DatagramLink;
  */
 final class UdpLink implements AutoCloseable {
 
-    /** Receive buffer of the socket (DESIGN.md: the default one drops packets during millisecond stalls). */
+    /**
+     * Receive buffer of the socket (docs/architecture.md "Threading": the default one drops packets during
+     * millisecond stalls).
+     */
     static final int SOCKET_BUFFER = 4 * 1024 * 1024;
     private static final Logger LOG = LoggerFactory.getLogger(UdpLink.class);
 
