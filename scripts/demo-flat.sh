@@ -29,7 +29,9 @@
 #       TINYSEP_DEMO_RELEASE=1 returns it to real time at the end instead
 #   scripts/demo-flat.sh forget-old-demo <dist> removes the etc/ files an older demo (before the demo had its own
 #       state) wrote into <dist>/etc: they froze the clock in EXTERNAL mode after the demo
-set -euo pipefail
+set -Eeuo pipefail
+# an unexpected failure says where, instead of ending the demo without a word (the log is shown by ./run.sh)
+trap 'echo "demo flat: stopped by a failing command at line $LINENO (exit $?)" >&2' ERR
 repo="$(cd "$(dirname "$0")/.." && pwd)"
 flat="$repo/simulator/src/main/resources/flats/flat-a"
 usage="usage: demo-flat.sh wanted|forget-old-demo <dist> | prepare <dist> <demo folder> | simulate <dist> <demo folder> [<platform pid>] | ports-ours <demo folder> <platform pid>"
@@ -96,7 +98,10 @@ demo_ports() { # lines "udp <port> <what>" the simulator sends to
 holder() { # holder udp|tcp <port>: "pid=N (name)" of the process bound to the port, or "" when none (or not visible)
   local flag=-lunp
   [ "$1" = tcp ] && flag=-ltnp
-  ss -H $flag "sport = :$2" 2>/dev/null | sed -n 's/.*users:(("\([^"]*\)",pid=\([0-9]*\).*/pid=\2 (\1)/p' | head -1
+  # never fails: ss can exit 1 when a process it inspects ends meanwhile, and under set -e that would end the demo
+  # silently; sed reads all its input so that no SIGPIPE fails the pipe
+  { ss -H $flag "sport = :$2" 2>/dev/null || true; } | sed -n 's/.*users:(("\([^"]*\)",pid=\([0-9]*\).*/pid=\2 (\1)/p' \
+    | sed -n 1p
 }
 
 ports_ours() { # ports_ours <pid> <wait seconds>: 0 when every demo port is bound by <pid>; 3 with a message if not
