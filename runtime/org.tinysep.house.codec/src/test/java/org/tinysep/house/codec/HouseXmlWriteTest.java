@@ -4,12 +4,17 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
+import javax.xml.transform.stream.StreamSource;
+import javax.xml.validation.Schema;
+import javax.xml.validation.SchemaFactory;
 import org.junit.jupiter.api.Test;
 import org.tinysep.testsupport.repo.RepoFiles;
+import org.xml.sax.SAXException;
 
 /**
  * The writer gives the bytes House Information's JAXB marshaller wrote: {@code written-by-jaxb/} holds its output
@@ -51,5 +56,18 @@ class HouseXmlWriteTest {
         HouseRooms bad = new HouseRooms(List.of(new HouseRoom("u-1", "Bell\u0007", "Hall", List.of())));
         assertEquals("room #1 (UID u-1): NAME holds the character U+0007, which an XML file cannot carry",
                 assertThrows(IllegalArgumentException.class, () -> HouseXml.toBytes(bad)).getMessage());
+    }
+
+    @Test
+    void whatIsWrittenPassesTheBackupRestoresSchema() throws Exception {
+        Schema xsd = SchemaFactory.newDefaultInstance().newSchema(RepoFiles.require("runtime", "org.tinysep.runtime",
+                "src", "main", "resources", "org", "tinysep", "runtime", "internal", "backup", "house.xsd").toFile());
+        for (String name : List.of("fig37.xml", "flat-a.xml", "empty.xml", "special.xml")) {
+            byte[] written = HouseXml.toBytes(HouseXml.read(jaxb(name), name));
+            xsd.newValidator().validate(new StreamSource(new ByteArrayInputStream(written)));
+        }
+        byte[] unknownNeighbour = HouseXml.toBytes(new HouseRooms(List.of(new HouseRoom("a", "A", "T", List.of("zz")))));
+        assertThrows(SAXException.class, () -> xsd.newValidator().validate(
+                new StreamSource(new ByteArrayInputStream(unknownNeighbour))), "the schema check can fail");
     }
 }
