@@ -1,16 +1,23 @@
 package org.tinysep.evaluation;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Collection;
+import java.util.List;
 import java.util.UUID;
+import org.tinysep.house.codec.HouseRoom;
+import org.tinysep.house.codec.HouseRooms;
+import org.tinysep.house.codec.HouseXml;
 
 /**
  * A House Information file (format of {@code org.tinysep.houseinformation}) for a recorded home that brings none:
  * one room per mapped room name, its type guessed from the name ({@link #typeOf}: the room types Inactivity
  * Recognition has limits for, and {@code Bedroom}, which its sleep state needs), else the name itself (then the
- * default limit applies). No neighbour links: the data gives no floor plan and the evaluation does not use them.
+ * default limit applies), written by the platform's house codec ({@code org.tinysep.house.codec}). No neighbour
+ * links: the data gives no floor plan and the evaluation does not use them.
  */
 final class HouseFile {
 
@@ -18,14 +25,12 @@ final class HouseFile {
     }
 
     static Path write(Collection<String> rooms, Path file) throws IOException {
-        StringBuilder x = new StringBuilder("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<HOUSE_ROOMS>\n");
+        List<HouseRoom> list = new ArrayList<>();
         for (String r : rooms) {
-            String uid = UUID.nameUUIDFromBytes(("room " + r).getBytes(java.nio.charset.StandardCharsets.UTF_8))
-                    .toString();
-            x.append("    <ROOM>\n        <UID>").append(uid).append("</UID>\n        <NAME>").append(esc(r))
-                    .append("</NAME>\n        <TYPE>").append(esc(typeOf(r))).append("</TYPE>\n        <NEIGHBORS/>\n    </ROOM>\n");
+            String uid = UUID.nameUUIDFromBytes(("room " + r).getBytes(StandardCharsets.UTF_8)).toString();
+            list.add(new HouseRoom(uid, r, typeOf(r), List.of()));
         }
-        Files.writeString(file, x.append("</HOUSE_ROOMS>\n").toString());
+        Files.write(file, HouseXml.toBytes(new HouseRooms(list)));
         return file;
     }
 
@@ -49,9 +54,5 @@ final class HouseFile {
             return "Living room";
         }
         return r.matches(".*(hall|entrance|entry|corridor|foyer|porch|vestibule|landing).*") ? "Hall" : room;
-    }
-
-    private static String esc(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;");
     }
 }

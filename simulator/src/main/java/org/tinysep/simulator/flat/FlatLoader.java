@@ -31,7 +31,7 @@ public final class FlatLoader {
 
     public static Flat load(String name, byte[] houseXml, String houseSource, String nodes, String nodesSource)
             throws IOException {
-        House house = HouseXml.parse(new ByteArrayInputStream(houseXml), houseSource);
+        House house = House.read(new ByteArrayInputStream(houseXml), houseSource);
         return new Flat(name, house, NodeLayout.parse(nodes, nodesSource, house));
     }
 

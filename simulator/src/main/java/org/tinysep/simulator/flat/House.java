@@ -1,5 +1,7 @@
 package org.tinysep.simulator.flat;
 
+import java.io.IOException;
+import java.io.InputStream;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -10,6 +12,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import org.tinysep.house.codec.HouseRoom;
+import org.tinysep.house.codec.HouseXml;
+import org.tinysep.house.codec.HouseXmlException;
 
 /** The house graph: rooms by name (case-insensitive), their neighbours (symmetric) and shortest walks. */
 public final class House {
@@ -17,6 +22,35 @@ public final class House {
     private final Map<String, Room> byKey = new LinkedHashMap<>();
     private final Map<String, Room> byUid = new HashMap<>();
     private final Map<String, List<String>> neighbours = new HashMap<>();
+
+    /**
+     * Reads a House Information file (thesis Figure 3.7) with the platform's house codec
+     * ({@code org.tinysep.house.codec}, copied into the simulator's jar).
+     *
+     * @throws IllegalArgumentException naming {@code source} (with line and column for bad XML) and the problem
+     */
+    public static House read(InputStream in, String source) throws IOException {
+        List<Room> rooms = new ArrayList<>();
+        try {
+            int n = 0;
+            for (HouseRoom r : HouseXml.read(in, source).rooms()) {
+                n++;
+                for (String[] field : new String[][] {{"UID", r.uid()}, {"NAME", r.name()}, {"TYPE", r.type()}}) {
+                    if (field[1].isEmpty()) {
+                        throw new IllegalArgumentException(source + ": ROOM #" + n + " has no " + field[0]);
+                    }
+                }
+                rooms.add(new Room(r.uid(), r.name(), r.type(), r.neighbours()));
+            }
+        } catch (HouseXmlException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+        try {
+            return new House(rooms);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(source + ": " + e.getMessage(), e);
+        }
+    }
 
     /** @throws IllegalArgumentException for duplicate UIDs or names or a neighbour UID that names no room */
     public House(List<Room> rooms) {

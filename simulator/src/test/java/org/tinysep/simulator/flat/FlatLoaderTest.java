@@ -43,7 +43,7 @@ class FlatLoaderTest {
     }
 
     private static House twoRooms() throws Exception {
-        return HouseXml.parse(new ByteArrayInputStream("""
+        return House.read(new ByteArrayInputStream("""
                 <HOUSE_ROOMS>
                   <ROOM><UID>a</UID><NAME>Hall</NAME><TYPE>Hall</TYPE><NEIGHBORS><ROOM_UID>b</ROOM_UID></NEIGHBORS></ROOM>
                   <ROOM><UID>b</UID><NAME>Kitchen</NAME><TYPE>Kitchen</TYPE><NEIGHBORS/></ROOM>
@@ -60,12 +60,13 @@ class FlatLoaderTest {
             "<HOUSE_ROOMS><ROOM><UID>a</UID><NAME>X</NAME><TYPE>T</TYPE><NEIGHBORS><ROOM_UID>zz</ROOM_UID></NEIGHBORS></ROOM></HOUSE_ROOMS>; unknown neighbour zz",
             "<HOUSE_ROOMS><ROOM><UID>a</UID><NAME></NAME><TYPE>T</TYPE></ROOM></HOUSE_ROOMS>; has no NAME",
             "<HOUSE_ROOMS><ROOM><UID>a</UID><NAME>X</NAME><TYPE>T</TYPE></ROOM><ROOM><UID>a</UID><NAME>Y</NAME><TYPE>T</TYPE></ROOM></HOUSE_ROOMS>; duplicate room UID a",
-            "<!DOCTYPE x [<!ENTITY e SYSTEM 'file:///etc/passwd'>]><HOUSE_ROOMS/>; bad XML",
-            "<HOUSE_ROOMS><ROOM>; test.xml:1:",
-            "<ROOMS/>; root element must be HOUSE_ROOMS"})
+            "<!DOCTYPE x [<!ENTITY e SYSTEM 'file:///etc/passwd'>]><HOUSE_ROOMS/>; a DOCTYPE is not allowed",
+            "<HOUSE_ROOMS><ROOM>; test.xml at line 1, column 20: bad XML",
+            "<HOUSE_ROOMS><ROOM><UID>a</UID><FLOOR/></ROOM></HOUSE_ROOMS>; expected <UID>, <NAME>, <TYPE>, <NEIGHBORS> or </ROOM> in room #1, found <FLOOR>",
+            "<ROOMS/>; expected <HOUSE_ROOMS> as the root element, found <ROOMS>"})
     void badHouseFilesAreRefusedClearly(String xml, String expected) {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> HouseXml.parse(new ByteArrayInputStream(xml.getBytes(StandardCharsets.UTF_8)), "test.xml"));
+                () -> House.read(new ByteArrayInputStream(xml.getBytes(StandardCharsets.UTF_8)), "test.xml"));
         assertTrue(e.getMessage().contains(expected) && e.getMessage().startsWith("test.xml"), e.getMessage());
     }
 

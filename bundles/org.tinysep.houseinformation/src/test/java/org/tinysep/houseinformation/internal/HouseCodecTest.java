@@ -13,7 +13,7 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.service.Room;
 
-/** The thesis Figure 3.7 format, read and written with JAXB. */
+/** The thesis Figure 3.7 format, read and written through the house codec. */
 class HouseCodecTest {
 
     static final String BEDROOM = "decb2a7f-88e6-4238-9d09-9fc2e932d4ec";
