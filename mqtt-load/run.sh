@@ -8,12 +8,12 @@ set -e
 cd "$(dirname "$0")/.."
 FLATS=${1:-200}
 SECONDS_RUN=${2:-180}
-mvn -B -o -q -pl bundles/org.tinysep.mqtt.board -am verify \
+mvn -B -o -q -pl bundles/fleet/org.tinysep.mqtt.board -am verify \
   -Dtest=LoadSmokeTest -Dsurefire.failIfNoSpecifiedTests=false \
   -Dload.flats="$FLATS" -Dload.seconds="$SECONDS_RUN" -Dload.heartbeatSeconds=10 -Dload.stateMillis=2000 \
   -Dload.alertSeconds=30 -Dload.occupancySeconds=30
 mkdir -p mqtt-load/results
 OUT=mqtt-load/results/$(date -u +%Y%m%dT%H%M%SZ).txt
-cp bundles/org.tinysep.mqtt.board/target/mqtt-load-report.txt "$OUT"
+cp bundles/fleet/org.tinysep.mqtt.board/target/mqtt-load-report.txt "$OUT"
 cat "$OUT"
 echo "kept in $OUT"
