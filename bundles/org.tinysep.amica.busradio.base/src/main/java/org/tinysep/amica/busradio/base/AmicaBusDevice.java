@@ -327,19 +327,8 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
                             e.toString());
                 }
             }
-            HandoverConnection c = new HandoverConnection(connection, handover);
-            return d == null ? c : new Connection() {
-                @Override
-                public void close() {
-                    c.close();
-                    d.forget(target);
-                }
-
-                @Override
-                public boolean isOpen() {
-                    return c.isOpen();
-                }
-            };
+            return d == null ? new HandoverConnection(connection, handover)
+                    : new HandoverConnection(connection, handover, () -> d.stop(target));
         }
     }
 

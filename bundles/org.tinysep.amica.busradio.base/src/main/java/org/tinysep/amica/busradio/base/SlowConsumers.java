@@ -2,6 +2,8 @@ package org.tinysep.amica.busradio.base;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
@@ -67,9 +69,22 @@ public final class SlowConsumers implements AutoCloseable {
         return lane;
     }
 
-    /** Forgets a lane whose connection closed (what is queued is still delivered). */
-    void forget(BusRadioAmicaListener guarded) {
+    /**
+     * Stops a guarded listener whose connection closes: it gets nothing more from its queue.
+     *
+     * @return what was still queued for it, oldest first (its bus device holds it for a replacement listener)
+     */
+    List<Handover.Held> stop(BusRadioAmicaListener guarded) {
         lanes.remove(guarded);
+        if (!(guarded instanceof SlowConsumers.Lane lane)) {
+            return List.of();
+        }
+        lane.closed = true;
+        List<Handover.Held> left = new ArrayList<>();
+        for (Item i = lane.queue.poll(); i != null; i = lane.queue.poll()) {
+            left.add(new Handover.Held(i.payload(), i.at()));
+        }
+        return left;
     }
 
     /** @return the listener behind a guarded one (e.g. the device, to name it), else {@code listener} itself */
@@ -115,6 +130,7 @@ public final class SlowConsumers implements AutoCloseable {
         private final AtomicBoolean scheduled = new AtomicBoolean();
         private final AtomicLong droppedHere = new AtomicLong();
         private volatile long busySince; // 0 while not delivering
+        private volatile boolean closed;
         private long unreported; // guarded by this
         private long lastReport = System.nanoTime() - REPORT_NANOS;
         private Instant since;
@@ -145,7 +161,7 @@ public final class SlowConsumers implements AutoCloseable {
             do {
                 while (true) {
                     busySince = System.nanoTime(); // before the poll: a payload taken is never "idle"
-                    Item i = queue.poll();
+                    Item i = closed ? null : queue.poll();
                     if (i == null) {
                         busySince = 0;
                         break;

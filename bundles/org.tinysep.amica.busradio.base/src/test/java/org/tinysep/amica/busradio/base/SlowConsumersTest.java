@@ -31,9 +31,10 @@ import org.tinysep.api.log.EventKind;
  */
 class SlowConsumersTest {
 
-    private static final int FRAMES_PER_NODE = 1_000;
+    private static final int FRAMES_PER_NODE = 3_000;
+    private static final int QUEUE = 512;
     private final TestRadio radio = new TestRadio();
-    private final SlowConsumers delivery = new SlowConsumers(radio.context, 64);
+    private final SlowConsumers delivery = new SlowConsumers(radio.context, QUEUE);
     private final ExecutorService loop = Executors.newSingleThreadExecutor();
 
     @AfterEach
@@ -100,7 +101,7 @@ class SlowConsumersTest {
         waitFor(() -> fastCalls.get() >= FRAMES_PER_NODE, System.nanoTime() + Duration.ofSeconds(5).toNanos());
         assertEquals(FRAMES_PER_NODE, fastCalls.get(), "the other node's listener got every payload");
         assertEquals(1, slowCalls.get(), "the sleeper is still on its first payload");
-        assertEquals(FRAMES_PER_NODE - 1 - 64, delivery.dropped(), "beyond its queue of 64, its payloads are dropped");
+        assertEquals(FRAMES_PER_NODE - 1 - QUEUE, delivery.dropped(), "beyond its queue, its payloads are dropped");
         String problem = radio.logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM)
                 .map(e -> e.message()).filter(m -> m.contains("is too slow")).findFirst().orElse("(none)");
         assertTrue(problem.startsWith("The listener ") && problem.contains(" of AmICA node 1.1 is too slow: 1 payload "
@@ -120,6 +121,46 @@ class SlowConsumersTest {
         try {
             assertTrue(roomy.awaitIdle(Duration.ofSeconds(5)));
             assertEquals(500, calls.get(), "every payload delivered, in the tick, before it goes on");
+        } finally {
+            roomy.close();
+        }
+    }
+
+    /** A listener that leaves (its driver is updated) with payloads still queued: its replacement gets them. */
+    @Test
+    void whatWasQueuedForALeavingListenerGoesToItsReplacementInOrder() throws Exception {
+        SlowConsumers roomy = new SlowConsumers(radio.context);
+        try {
+            radio.nodes.delivery(roomy);
+            radio.feed(frame(1, 2, keepAlive(AmicaNodeType.MOVEMENT)), "sender");
+            java.util.concurrent.CountDownLatch release = new java.util.concurrent.CountDownLatch(1);
+            java.util.List<String> old = new java.util.concurrent.CopyOnWriteArrayList<>();
+            java.util.List<String> replacement = new java.util.concurrent.CopyOnWriteArrayList<>();
+            AmicaBusDevice<String> node = radio.nodes.find(new AmicaAddress(1, 2));
+            org.tinysep.api.device.Connection c = node.connect((src, payload, at) -> {
+                old.add(java.util.Arrays.toString(payload));
+                try {
+                    release.await(5, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            java.util.List<String> fed = new java.util.ArrayList<>();
+            for (int i = 0; i < 11; i++) { // motion, no motion, motion, …
+                byte[] p = AmicaPayloads.encode(new MotionDetection(i % 2 == 0));
+                fed.add(java.util.Arrays.toString(p));
+                if (i < 10) {
+                    radio.feed(frame(1, 2, p), "sender");
+                }
+            }
+            waitFor(() -> old.size() == 1, System.nanoTime() + Duration.ofSeconds(5).toNanos());
+            c.close(); // the old driver's device leaves while it is still on payload 1
+            release.countDown();
+            node.connect((src, payload, at) -> replacement.add(java.util.Arrays.toString(payload)));
+            radio.feed(frame(1, 2, AmicaPayloads.encode(new MotionDetection(true))), "sender"); // fed[10]
+            assertTrue(roomy.awaitIdle(Duration.ofSeconds(5)));
+            assertEquals(fed.subList(0, 1), old, "the leaving listener finished the payload it was on");
+            assertEquals(fed.subList(1, 11), replacement, "none lost, none twice, in order");
         } finally {
             roomy.close();
         }
