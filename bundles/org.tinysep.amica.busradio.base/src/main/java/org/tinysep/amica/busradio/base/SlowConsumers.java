@@ -98,14 +98,16 @@ public final class SlowConsumers implements AutoCloseable {
     }
 
     /**
-     * Waits until every listener not known to be slow has taken what was queued for it, at most {@code max}.
+     * Waits until every listener not known to be slow has been given what was queued for it before this call (not
+     * what comes meanwhile), at most {@code max}.
      *
      * @return whether all of them had
      */
     public boolean awaitIdle(Duration max) {
         long end = System.nanoTime() + max.toNanos();
         for (Lane l : lanes) {
-            while (!l.idle() && !l.slow()) {
+            long target = l.enqueued.get();
+            while (l.delivered.get() < target && !l.closed && !l.slow()) {
                 if (System.nanoTime() - end >= 0) {
                     return false;
                 }
@@ -131,6 +133,8 @@ public final class SlowConsumers implements AutoCloseable {
         private final AtomicLong droppedHere = new AtomicLong();
         private volatile long busySince; // 0 while not delivering
         private volatile boolean closed;
+        private final AtomicLong enqueued = new AtomicLong();
+        private final AtomicLong delivered = new AtomicLong();
         private long unreported; // guarded by this
         private long lastReport = System.nanoTime() - REPORT_NANOS;
         private Instant since;
@@ -142,7 +146,9 @@ public final class SlowConsumers implements AutoCloseable {
 
         @Override
         public void payloadReceived(BusRadioAmicaProvider source, byte[] payload, Instant at) {
-            if (!queue.offer(new Item(source, payload, at))) {
+            if (queue.offer(new Item(source, payload, at))) {
+                enqueued.incrementAndGet();
+            } else {
                 droppedHere.incrementAndGet();
                 dropped.incrementAndGet();
                 drop(at);
@@ -171,13 +177,10 @@ public final class SlowConsumers implements AutoCloseable {
                     } catch (RuntimeException | LinkageError e) {
                         LOG.warn("Listener {} of {} failed: {}", listener.getClass().getName(), owner, e.toString());
                     }
+                    delivered.incrementAndGet();
                 }
                 scheduled.set(false);
             } while (!queue.isEmpty() && scheduled.compareAndSet(false, true));
-        }
-
-        boolean idle() {
-            return queue.isEmpty() && busySince == 0;
         }
 
         /** @return whether it dropped payloads or has been on one payload for over a second */
