@@ -131,6 +131,7 @@ public final class SlowConsumers implements AutoCloseable {
         private final ArrayBlockingQueue<Item> queue = new ArrayBlockingQueue<>(capacity);
         private final AtomicBoolean scheduled = new AtomicBoolean();
         private final AtomicLong droppedHere = new AtomicLong();
+        private volatile long lastDrop;
         private volatile long busySince; // 0 while not delivering
         private volatile boolean closed;
         private final AtomicLong enqueued = new AtomicLong();
@@ -150,6 +151,7 @@ public final class SlowConsumers implements AutoCloseable {
                 enqueued.incrementAndGet();
             } else {
                 droppedHere.incrementAndGet();
+                lastDrop = System.nanoTime();
                 dropped.incrementAndGet();
                 drop(at);
             }
@@ -183,10 +185,11 @@ public final class SlowConsumers implements AutoCloseable {
             } while (!queue.isEmpty() && scheduled.compareAndSet(false, true));
         }
 
-        /** @return whether it dropped payloads or has been on one payload for over a second */
+        /** @return whether it dropped payloads in the last 10 s or has been on one payload for over a second */
         boolean slow() {
             long b = busySince;
-            return droppedHere.get() > 0 || (b != 0 && System.nanoTime() - b > 1_000_000_000L);
+            long now = System.nanoTime();
+            return (droppedHere.get() > 0 && now - lastDrop < 10_000_000_000L) || (b != 0 && now - b > 1_000_000_000L);
         }
 
         private synchronized void drop(Instant at) {
