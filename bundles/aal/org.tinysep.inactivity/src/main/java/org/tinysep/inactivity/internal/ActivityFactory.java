@@ -42,6 +42,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private final Supplier<Instant> clock;
     private final Consumer<Activity> sink;
     private volatile Map<String, Room> rooms = Map.of();
+    private final UnplacedNames unplaced;
 
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
@@ -59,6 +60,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         this.policy = policy;
         this.clock = clock;
         this.sink = sink;
+        this.unplaced = new UnplacedNames(directory);
     }
 
     @Override
@@ -126,12 +128,12 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
 
     private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated,
             boolean upFromBed) {
-        String name = directory.nameOf(deviceUid);
-        String description = what.apply(name);
         Placed p = placed(deviceUid);
         Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated, upFromBed), p.fixed(),
                 clock.get());
-        return new Activity(p.uid(), p.name(), description, at, l.limit(), l.explanation());
+        // the device's name is a registry look-up: made when the description is read, not per activity
+        return Activity.described(p.uid(), p.name(), () -> what.apply(directory.nameOf(deviceUid)), at, l.limit(),
+                l.explanation());
     }
 
     /** A device's room now: UID (empty if unplaced), name, type and fixed limit. */
@@ -141,8 +143,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     Placed placed(String deviceUid) {
         Optional<String> roomUid = directory.roomOf(deviceUid);
         if (roomUid.isEmpty()) {
-            return new Placed("", "unknown room (device " + directory.nameOf(deviceUid) + ")", "",
-                    limits.defaultLimit());
+            return new Placed("", unplaced.nameOf(deviceUid), "", limits.defaultLimit());
         }
         Room room = rooms.get(roomUid.get());
         if (room == null) {

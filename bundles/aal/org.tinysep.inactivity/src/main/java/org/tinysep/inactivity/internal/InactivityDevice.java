@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.function.Supplier;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.sensor.MovementLocation;
@@ -146,7 +147,7 @@ final class InactivityDevice extends WholeFlatDevice
                 logic.rebase(now);
                 change = logic.activity(a);
             }
-            announce(change, a.at(), a.description());
+            announce(change, a.at(), a::description);
         });
     }
 
@@ -212,7 +213,7 @@ final class InactivityDevice extends WholeFlatDevice
         wentBack.ifPresent(from -> clockWentBack(from, now));
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
-        announce(change, a.at(), a.description() + " in " + a.roomName());
+        announce(change, a.at(), () -> a.description() + " in " + a.roomName()); // built on a change only
         persons.room(a, now).forEach(this::event);
     }
 
@@ -238,7 +239,7 @@ final class InactivityDevice extends WholeFlatDevice
         synchronized (logic) {
             change = logic.occupancy(occupancy, at);
         }
-        announce(change, at, "flat " + lower(occupancy));
+        announce(change, at, () -> "flat " + lower(occupancy));
         persons.occupancy(occupancy, at).forEach(this::event);
     }
 
@@ -251,7 +252,7 @@ final class InactivityDevice extends WholeFlatDevice
             change = logic.tick(now);
         }
         wentBack.ifPresent(from -> clockWentBack(from, now));
-        announce(change, now, "limit reached");
+        announce(change, now, () -> "limit reached");
         persons.tick(now).forEach(this::event);
         resolveHistory();
         long wall = System.nanoTime();
@@ -261,11 +262,11 @@ final class InactivityDevice extends WholeFlatDevice
         }
     }
 
-    private void announce(Optional<InactivityState> change, Instant at, String reason) {
+    private void announce(Optional<InactivityState> change, Instant at, Supplier<String> reason) {
         change.ifPresent(s -> {
             String detail = s == InactivityState.ALERT ? alert().map(a -> help.subject(a) + words.why(a)).orElse("")
                     : "";
-            event("inactivity " + lower(s) + " (" + reason + ")" + (detail.isEmpty() ? "" : ": " + detail));
+            event("inactivity " + lower(s) + " (" + reason.get() + ")" + (detail.isEmpty() ? "" : ": " + detail));
             listeners.fire(l -> l.inactivityStateChanged(this, s, at));
             saveBackup(); // whether (since when) the flat is watched survives a crash
             if (s == InactivityState.ALERT) {

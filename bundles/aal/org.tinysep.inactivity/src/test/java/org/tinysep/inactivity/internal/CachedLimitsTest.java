@@ -1,7 +1,9 @@
 package org.tinysep.inactivity.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.lang.management.ManagementFactory;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.LocalDate;
@@ -111,5 +113,66 @@ class CachedLimitsTest {
             cached.limitAfter(sighting(t.plusSeconds(600), "Bathroom", false), FIXED, t.plusSeconds(600));
         }
         assertEquals(10, history.size());
+    }
+
+    /**
+     * The cache's own work per activity allocates nothing once an answer is known: its key was a record of three
+     * strings, a Duration and the local time as a ZonedDateTime (about 140 bytes and a hash of every field per
+     * activity, 15 % of the radio thread). Measured as the bytes this thread allocates beyond the work every
+     * activity needs anyway (history add, profile, sleep rule), which the same loop does without the cache.
+     */
+    @Test
+    void aKnownAnswerCostsNoAllocation() {
+        int n = 20_000;
+        Sighting[] day = new Sighting[n];
+        for (int i = 0; i < n; i++) { // rooms of the house, same hour: all answers known after the first two
+            Instant t = at(10, 14, (i / 60) % 60, i % 60);
+            day[i] = new Sighting(t, i % 2 == 0 ? "Bathroom" : "Kitchen", i % 2 == 0 ? "Bathroom" : "Kitchen",
+                    i % 2 == 0 ? "Bathroom" : "Kitchen", false);
+        }
+        CachedLimits cached = new CachedLimits(new LearnedLimits(learner(10)));
+        LearnedLimits plain = new LearnedLimits(learner(10));
+        long baseline = Long.MAX_VALUE;
+        long withCache = Long.MAX_VALUE;
+        for (int round = 0; round < 3; round++) { // the least of three rounds: the first one warms up
+            long a = allocated();
+            for (Sighting s : day) {
+                plain.history().add(s);
+                plain.history().profile(s.at());
+                plain.history().sleep().asleep(s);
+            }
+            long b = allocated();
+            for (Sighting s : day) {
+                cached.limitAfter(s, FIXED, s.at());
+            }
+            long c = allocated();
+            baseline = Math.min(baseline, b - a);
+            withCache = Math.min(withCache, c - b);
+        }
+        double perActivity = (withCache - baseline) / (double) n;
+        assertTrue(perActivity < 16, "bytes allocated per activity by the cache beyond the learning itself: "
+                + perActivity + " (cache " + withCache / n + ", learning " + baseline / n + ")");
+        assertEquals(2, cached.computed());
+    }
+
+    /** The answer's place is the local hour and day type, also across a change to summer time. */
+    @Test
+    void theIndexIsTheLocalHourAndDayType() {
+        java.time.ZoneId zurich = java.time.ZoneId.of("Europe/Zurich");
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
+        for (Instant t = Instant.parse("2026-03-27T00:30:00Z"); t.isBefore(Instant.parse("2026-04-01T00:00:00Z"));
+                t = t.plusSeconds(3_600)) {
+            java.time.ZonedDateTime z = t.atZone(zurich);
+            int weekend = z.getDayOfWeek().getValue() >= 6 ? 1 : 0;
+            assertEquals(weekend * 24 + z.getHour(), CachedLimits.index(t, zurich.getRules(), false, false), t.toString());
+            assertEquals(((1 * 2 + 0) * 2 + weekend) * 24 + z.getHour(), CachedLimits.index(t, zurich.getRules(), true, false));
+            seen.add(CachedLimits.index(t, zurich.getRules(), false, true));
+        }
+        assertEquals(48, seen.size(), "weekday and weekend hours: " + seen);
+    }
+
+    private static long allocated() {
+        return ((com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean())
+                .getThreadAllocatedBytes(Thread.currentThread().getId());
     }
 }

@@ -1,6 +1,8 @@
 package org.tinysep.amica.busradio.base;
 
+import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Supplier;
 import org.tinysep.api.device.Connection;
 
 /** A bus device listener's connection; closing it tells the {@link Handover} that a replacement may follow. */
@@ -9,11 +11,18 @@ final class HandoverConnection implements Connection {
     private final Connection connection;
     private final Handover handover;
     private final AtomicBoolean closed = new AtomicBoolean();
+    private final Supplier<List<Handover.Held>> undelivered;
 
     /** @param handover also the lock the bus device holds around it */
     HandoverConnection(Connection connection, Handover handover) {
+        this(connection, handover, List::of);
+    }
+
+    /** @param undelivered stops the listener's queue and gives what it still held (held for the replacement) */
+    HandoverConnection(Connection connection, Handover handover, Supplier<List<Handover.Held>> undelivered) {
         this.connection = connection;
         this.handover = handover;
+        this.undelivered = undelivered;
     }
 
     @Override
@@ -24,7 +33,7 @@ final class HandoverConnection implements Connection {
             // list's handle takes no lock.
             synchronized (handover) {
                 connection.close();
-                handover.listenerLeft();
+                handover.listenerLeft(undelivered.get());
             }
         }
     }

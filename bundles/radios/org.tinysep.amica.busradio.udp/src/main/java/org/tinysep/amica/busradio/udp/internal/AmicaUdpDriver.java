@@ -15,6 +15,7 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.amica.busradio.base.AmicaNodes;
+import org.tinysep.amica.busradio.base.SlowConsumers;
 import org.tinysep.amica.busradio.base.FrameHandler;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.device.Parameter;
@@ -54,6 +55,10 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private DatagramLink transport;
     private String listening;
     private PlatformTicker ticker;
+    /** Each bus device listener's own queue (issue 29: a slow consumer must never stall the radio). */
+    private SlowConsumers delivery;
+    /** How long a tick waits for what it handed over to be delivered. */
+    private static final java.time.Duration TICK_DELIVERY = java.time.Duration.ofMillis(500);
     private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
     private Instant beforeTick;
@@ -93,6 +98,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
                 "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
         nodes.policy(policy);
+        delivery = new SlowConsumers(context()); // a slow listener never stalls the receive thread (issue 29)
+        nodes.delivery(delivery);
         handler = new FrameHandler<>(context(), nodes, rejects);
         settingProblems.forEach(p -> context().event(EventKind.PROBLEM, p));
         if (gate.enforced()) {
@@ -115,6 +122,9 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         Instant stamp = beforeTick == null ? now : beforeTick;
         beforeTick = now;
         transport.drain((data, length, from) -> datagram(data, length, from, stamp));
+        // lock-step: every frame taken before this tick reaches its listeners before the tick goes on (and before
+        // the TICK's DONE), as when they were called on the receive thread; a listener known to be slow is not waited for
+        delivery.awaitIdle(TICK_DELIVERY);
         nodes.checkHealth(now);
         handler.flushRejects();
     }
@@ -145,7 +155,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     @Deactivate
     void deactivate() {
-        stop(ticker, transport); // then removes the bus devices one by one (each leaves the node table), the driver
+        stop(ticker, transport, delivery); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override
