@@ -16,6 +16,7 @@ import org.tinysep.simulator.person.PersonNodeFrames;
 import org.tinysep.simulator.person.PersonNodePlayer;
 import org.tinysep.simulator.time.SyncClient;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Fall detection through the real distribution (issue 26, item 5): one platform process ({@link Platform}) plays a
@@ -58,7 +59,7 @@ public final class FallPlatforms {
         Path var = dir.resolve("var");
         List<Instant> starts = new ArrayList<>();
         Instant end;
-        try (SmtpSink sink = new SmtpSink();
+        try (SmtpSink sink = new SmtpSink().start();
                 Platform platform = Platform.start(dist, dir.resolve("home"), var, sink.port(), "LEARNED", Map.of(
                         "org.tinysep.sunspot.busradio", "udpPort=" + spotPort + "\nudpBindAddress=127.0.0.1\n",
                         "org.tinysep.falldetection", fallConfig + "\ntimeZone=UTC\n",

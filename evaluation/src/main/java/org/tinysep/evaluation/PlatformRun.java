@@ -14,6 +14,7 @@ import org.tinysep.simulator.cli.Run;
 import org.tinysep.simulator.replay.EventsCsv;
 import org.tinysep.simulator.replay.SensorEvent;
 import org.tinysep.simulator.time.SyncClient;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * One replay through one platform process: copy the snapshot (if any) to a fresh state folder, start the
@@ -69,7 +70,7 @@ final class PlatformRun {
             Snapshot.copy(snapshot, var);
         }
         long before = LogEntry.lastSequence(var);
-        try (SmtpSink smtp = new SmtpSink();
+        try (SmtpSink smtp = new SmtpSink().start();
                 Platform platform = Platform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
                         Map.of("org.tinysep.houseinformation", "file=" + setup.home().house().toAbsolutePath() + "\n",
                                 "org.tinysep.houseinformation.placement", "placements=" + setup.home().placements()
@@ -90,13 +91,13 @@ final class PlatformRun {
                 results.add(Run.replay(args.toArray(String[]::new)));
             }
             long deadline = System.nanoTime() + MAIL_WAIT_NANOS;
-            while (handedOver(var, before) > alertMails(smtp.subjects()).size() && System.nanoTime() < deadline) {
+            while (handedOver(var, before) > alertMails(subjects(smtp)).size() && System.nanoTime() < deadline) {
                 Thread.sleep(100);
             }
             long drops = org.tinysep.simulator.measure.KernelDrops.at(platform.amicaPort());
             platform.close();
             List<LogEntry> entries = LogEntry.read(var).stream().filter(e -> e.sequence() > before).toList();
-            return new Outcome(entries, alertMails(smtp.subjects()), results, handedOver(var, before), drops);
+            return new Outcome(entries, alertMails(subjects(smtp)), results, handedOver(var, before), drops);
         }
     }
 
@@ -116,6 +117,11 @@ final class PlatformRun {
      * @return each alert's first mail (the alert service's repeats, escalations and all clears, and Sensor Health's
      *         notices, are not alerts)
      */
+    /** @return the subjects of the messages the sink received so far, in order */
+    private static List<String> subjects(SmtpSink smtp) {
+        return smtp.messages().stream().map(SmtpSink.Received::subject).toList();
+    }
+
     static List<String> alertMails(List<String> subjects) {
         return subjects.stream().filter(s -> s.startsWith("TinySEP: no activity")).toList();
     }

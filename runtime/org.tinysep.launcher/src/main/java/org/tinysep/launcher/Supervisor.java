@@ -11,6 +11,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.device.support.Backoff;
 
 /**
  * {@code java -jar tinysep.jar --supervise …}: the same guarantee as systemd's {@code Restart=on-failure} and
@@ -51,7 +52,7 @@ final class Supervisor {
     /** Supervises until the platform stops cleanly or the supervisor is stopped; @return the exit code */
     int run(Path launcherJar) throws InterruptedException {
         Runtime.getRuntime().addShutdownHook(new Thread(this::stopChild, "tinysep-supervisor-stop"));
-        Duration backoff = Duration.ofSeconds(1);
+        Backoff backoff = Backoff.of(Duration.ofSeconds(1), MAX_BACKOFF); // 1, 2, 4 … 60 s
         while (!stopping) {
             Instant started = Instant.now();
             Process p;
@@ -72,12 +73,12 @@ final class Supervisor {
                 LOG.warn("Supervisor: cannot write {}: {}", RestartNote.FILE, e.toString());
             }
             if (Duration.between(started, Instant.now()).compareTo(MAX_BACKOFF.multipliedBy(5)) > 0) {
-                backoff = Duration.ofSeconds(1); // it ran a good while: not a crash loop
+                backoff = backoff.reset(); // it ran a good while: not a crash loop
             }
+            backoff = backoff.failed();
             System.out.println("Supervisor: TinySEP " + failure.get().cause() + " at " + failure.get().at()
-                    + "; restarting it in " + backoff.toSeconds() + " s");
-            Thread.sleep(backoff.toMillis());
-            backoff = backoff.multipliedBy(2).compareTo(MAX_BACKOFF) > 0 ? MAX_BACKOFF : backoff.multipliedBy(2);
+                    + "; restarting it in " + backoff.delaySeconds() + " s");
+            Thread.sleep(backoff.delay().toMillis());
         }
         return 0;
     }

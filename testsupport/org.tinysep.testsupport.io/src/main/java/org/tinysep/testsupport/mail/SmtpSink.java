@@ -1,17 +1,11 @@
 package org.tinysep.testsupport.mail;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.net.SocketException;
-import java.nio.charset.StandardCharsets;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
@@ -19,30 +13,53 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
+import javax.net.ssl.SSLContext;
 
 /**
- * A small but real SMTP server for integration tests: listens on 127.0.0.1 (a free port on the first
- * {@link #start()}, the same port on every later one), speaks plain SMTP (EHLO/HELO, MAIL FROM, RCPT TO, DATA
- * with dot-unstuffing, RSET, NOOP, QUIT; no AUTH, no STARTTLS) and records each accepted message. {@link #stop()}
- * closes the port and every open connection, so a client sees the server go down; {@link #start()} brings it
- * back. {@link #mailboxFull} makes it answer {@code 552 5.2.2 mailbox full} to RCPT for an address (RFC 5321
- * 4.5.3.1.10: the client must treat it as temporary). Use it with the Mail Manager configured to
- * {@code security=NONE}, {@code host=127.0.0.1}, {@code port=}{@link #port()}.
+ * The one SMTP server of the tests and the evaluation: small but real, on 127.0.0.1 (a free port on the first
+ * {@link #start()}, the same port on every later one). It speaks plain SMTP (EHLO/HELO, MAIL FROM, RCPT TO, DATA
+ * with dot-unstuffing, RSET, NOOP, QUIT) and records each accepted message. What a test may make it do:
+ * <ul>
+ * <li>{@link #stop()} closes the port and every open connection, so a client sees the server go down;
+ * {@link #start()} brings it back on the same port;</li>
+ * <li>{@link #mailboxFull} answers {@code 552 5.2.2 mailbox full} to RCPT for an address (RFC 5321 4.5.3.1.10: the
+ * client must treat it as temporary); {@link #refuse} answers {@code 550 5.1.1 no such user} (permanent);</li>
+ * <li>{@link #requireLogin} offers {@code AUTH PLAIN LOGIN} and refuses MAIL until that user logged in
+ * ({@code 535} for wrong credentials, {@code 530} without a login);</li>
+ * <li>{@link #tls} speaks TLS with a given server key: from the first byte ({@code smtps}) or after
+ * {@code STARTTLS}, which is then required before MAIL.</li>
+ * </ul>
+ * Use it with the Mail Manager configured to {@code host=127.0.0.1}, {@code port=}{@link #port()} and the matching
+ * {@code security} ({@code NONE} unless {@link #tls} was called).
  */
 public final class SmtpSink implements AutoCloseable {
 
-    /** One accepted message: envelope sender, envelope recipients and the raw data (headers and body). */
-    public record Received(String from, List<String> to, String data) {
+    /**
+     * One accepted message: envelope sender, envelope recipients, the raw data (headers and body) and whether it
+     * travelled inside TLS.
+     */
+    public record Received(String from, List<String> to, String data, boolean tls) {
 
         /** @return the value of the {@code Subject:} header, or "" */
         public String subject() {
-            for (String line : data.split("\r\n")) {
-                if (line.isEmpty()) {
-                    break;
-                }
-                if (line.regionMatches(true, 0, "Subject:", 0, 8)) {
-                    return line.substring(8).strip();
+            return header("Subject");
+        }
+
+        /** @return the (unfolded) value of the first header with this name, or "" */
+        public String header(String name) {
+            String[] lines = data.split("\r\n");
+            for (int i = 0; i < lines.length && !lines[i].isEmpty(); i++) {
+                String line = lines[i];
+                if (line.length() > name.length() && line.charAt(name.length()) == ':'
+                        && line.regionMatches(true, 0, name, 0, name.length())) {
+                    StringBuilder value = new StringBuilder(line.substring(name.length() + 1).strip());
+                    while (i + 1 < lines.length && !lines[i + 1].isEmpty()
+                            && (lines[i + 1].charAt(0) == ' ' || lines[i + 1].charAt(0) == '\t')) {
+                        value.append(' ').append(lines[++i].strip());
+                    }
+                    return value.toString();
                 }
             }
             return "";
@@ -55,19 +72,47 @@ public final class SmtpSink implements AutoCloseable {
         }
     }
 
-    private final List<Received> received = new CopyOnWriteArrayList<>();
+    /** A user name and password the server accepts. */
+    record Login(String user, String password) {
+    }
+
+    final List<Received> received = new CopyOnWriteArrayList<>();
+    final List<String> handshakeFailures = new CopyOnWriteArrayList<>();
     private final Set<Socket> clients = ConcurrentHashMap.newKeySet();
     private final Set<String> fullMailboxes = ConcurrentHashMap.newKeySet();
+    private final Set<String> refused = ConcurrentHashMap.newKeySet();
+    private volatile Login login;
+    private volatile SSLContext tls;
+    private volatile boolean implicitTls;
     private volatile ServerSocket server;
     private volatile ExecutorService threads;
     private int port;
+
+    /**
+     * Makes the server speak TLS with the key of {@code context} (call before {@link #start()}).
+     *
+     * @param implicit true: TLS from the first byte ({@code smtps}); false: plain, {@code STARTTLS} offered and
+     *                 required before MAIL
+     */
+    public synchronized SmtpSink tls(SSLContext context, boolean implicit) {
+        this.tls = context;
+        this.implicitTls = implicit;
+        return this;
+    }
+
+    /** Offers {@code AUTH PLAIN LOGIN} and accepts MAIL only after this user logged in with this password. */
+    public SmtpSink requireLogin(String user, String password) {
+        this.login = new Login(user, password);
+        return this;
+    }
 
     /** Opens the port (a free one the first time, the same one afterwards) and starts accepting. */
     public synchronized SmtpSink start() throws IOException {
         if (server != null) {
             return this;
         }
-        ServerSocket s = new ServerSocket();
+        ServerSocket s = tls != null && implicitTls ? tls.getServerSocketFactory().createServerSocket()
+                : new ServerSocket();
         s.setReuseAddress(true);
         s.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
         port = s.getLocalPort();
@@ -107,6 +152,11 @@ public final class SmtpSink implements AutoCloseable {
         }
     }
 
+    /** Makes RCPT for {@code address} answer {@code 550 5.1.1 no such user}, for good. */
+    public void refuse(String address) {
+        refused.add(address.toLowerCase(Locale.ROOT));
+    }
+
     /** @return the port, fixed by the first {@link #start()} */
     public synchronized int port() {
         return port;
@@ -115,6 +165,16 @@ public final class SmtpSink implements AutoCloseable {
     /** @return the messages accepted so far, in order */
     public List<Received> messages() {
         return List.copyOf(received);
+    }
+
+    /** @return the envelope recipients of the messages accepted so far, once per message, in order */
+    public List<String> recipients() {
+        return received.stream().flatMap(m -> m.to().stream()).toList();
+    }
+
+    /** @return why each failed TLS handshake failed (e.g. the client refused the certificate) */
+    public List<String> handshakeFailures() {
+        return List.copyOf(handshakeFailures);
     }
 
     /** Waits until at least {@code count} messages were accepted. @return whether they were, within the limit */
@@ -134,111 +194,43 @@ public final class SmtpSink implements AutoCloseable {
         stop();
     }
 
+    /** @return the RCPT reply for this address: a refusal, or null to accept it */
+    String refusal(String address) {
+        String a = address.toLowerCase(Locale.ROOT);
+        if (refused.contains(a)) {
+            return "550 5.1.1 no such user";
+        }
+        return fullMailboxes.contains(a) ? "552 5.2.2 mailbox full" : null;
+    }
+
+    Login login() {
+        return login;
+    }
+
+    /** @return the TLS context for STARTTLS, or null when the server offers none (plain, or TLS from the start) */
+    SSLContext startTls() {
+        return implicitTls ? null : tls;
+    }
+
     private void acceptLoop(ServerSocket s) {
         while (!s.isClosed()) {
             try {
                 Socket c = s.accept();
                 clients.add(c);
-                threads.execute(() -> session(c));
-            } catch (IOException | java.util.concurrent.RejectedExecutionException e) {
+                threads.execute(() -> {
+                    try {
+                        new SmtpDialogue(this, c).run();
+                    } finally {
+                        clients.remove(c);
+                    }
+                });
+            } catch (IOException | RejectedExecutionException e) {
                 return; // stopped
             }
         }
     }
 
-    private void session(Socket c) {
-        try (c) {
-            c.setSoTimeout(10_000);
-            BufferedReader in = new BufferedReader(new InputStreamReader(c.getInputStream(), StandardCharsets.UTF_8));
-            OutputStream out = c.getOutputStream();
-            reply(out, "220 smtp-sink ESMTP ready");
-            String from = null;
-            List<String> to = new ArrayList<>();
-            String line;
-            while ((line = in.readLine()) != null) {
-                String verb = line.length() < 4 ? line.toUpperCase(Locale.ROOT) : line.substring(0, 4).toUpperCase(Locale.ROOT);
-                switch (verb) {
-                    case "EHLO" -> reply(out, "250-smtp-sink\r\n250-8BITMIME\r\n250 SMTPUTF8");
-                    case "HELO" -> reply(out, "250 smtp-sink");
-                    case "MAIL" -> {
-                        from = address(line);
-                        to.clear();
-                        reply(out, "250 sender ok");
-                    }
-                    case "RCPT" -> {
-                        if (fullMailboxes.contains(address(line).toLowerCase(Locale.ROOT))) {
-                            reply(out, "552 5.2.2 mailbox full");
-                            continue;
-                        }
-                        to.add(address(line));
-                        reply(out, "250 recipient ok");
-                    }
-                    case "DATA" -> {
-                        if (from == null || to.isEmpty()) {
-                            reply(out, "503 need MAIL FROM and RCPT TO first");
-                            continue;
-                        }
-                        reply(out, "354 end with <CRLF>.<CRLF>");
-                        String data = readData(in);
-                        if (data == null) {
-                            return;
-                        }
-                        received.add(new Received(from, List.copyOf(to), data));
-                        from = null;
-                        to.clear();
-                        reply(out, "250 message accepted");
-                    }
-                    case "RSET" -> {
-                        from = null;
-                        to.clear();
-                        reply(out, "250 reset");
-                    }
-                    case "NOOP" -> reply(out, "250 ok");
-                    case "QUIT" -> {
-                        reply(out, "221 bye");
-                        return;
-                    }
-                    default -> reply(out, "502 command not implemented");
-                }
-            }
-        } catch (SocketException e) {
-            // closed by stop() or by the client
-        } catch (IOException e) {
-            // a broken session ends; the server goes on
-        } finally {
-            clients.remove(c);
-        }
-    }
-
-    /** Reads DATA lines up to the lone dot, undoing dot-stuffing. @return null if the connection ended first */
-    private static String readData(BufferedReader in) throws IOException {
-        StringBuilder b = new StringBuilder();
-        String line;
-        while ((line = in.readLine()) != null) {
-            if (line.equals(".")) {
-                return b.toString();
-            }
-            b.append(line.startsWith("..") ? line.substring(1) : line).append("\r\n");
-        }
-        return null;
-    }
-
-    private static String address(String line) {
-        int lt = line.indexOf('<');
-        int gt = line.indexOf('>', lt + 1);
-        if (lt >= 0 && gt > lt) {
-            return line.substring(lt + 1, gt);
-        }
-        int colon = line.indexOf(':');
-        return colon < 0 ? "" : line.substring(colon + 1).strip();
-    }
-
-    private static void reply(OutputStream out, String text) throws IOException {
-        out.write((text + "\r\n").getBytes(StandardCharsets.UTF_8));
-        out.flush();
-    }
-
-    private static void closeQuietly(java.io.Closeable c) {
+    static void closeQuietly(java.io.Closeable c) {
         try {
             c.close();
         } catch (IOException ignored) {

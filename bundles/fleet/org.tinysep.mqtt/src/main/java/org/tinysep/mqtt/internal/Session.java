@@ -10,6 +10,7 @@ import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.DeviceStatus;
+import org.tinysep.device.support.Backoff;
 
 /**
  * The bridge's side of the link, on the bridge's thread: what the broker's answers do (connected: publish the
@@ -19,6 +20,7 @@ import org.tinysep.api.device.DeviceStatus;
 final class Session implements Link.Events {
 
     private static final Logger LOG = LoggerFactory.getLogger(Bridge.class);
+    private static final long MAX_WAIT_SECONDS = 30;
 
     private final Settings settings;
     private final ScheduledExecutorService executor;
@@ -31,7 +33,8 @@ final class Session implements Link.Events {
     private final DeviceScan scan;
     private Link link;
     private int connectedGeneration = -1;
-    private int backoffSeconds = 1;
+    /** Reconnect waits: 1 s after the first failure, doubled up to {@link #MAX_WAIT_SECONDS}. */
+    private Backoff backoff = Backoff.ofSeconds(1, MAX_WAIT_SECONDS);
     private String lastProblem = "";
     private long accepted;
     private long rejected;
@@ -74,7 +77,7 @@ final class Session implements Link.Events {
             return;
         }
         connectedGeneration = generation;
-        backoffSeconds = 1;
+        backoff = backoff.reset();
         linkWords = "connected to " + settings.brokerUrl();
         LOG.info("MQTT bridge connected to {} as {}", settings.brokerUrl(), settings.flatId());
         lastProblem = "";
@@ -102,12 +105,12 @@ final class Session implements Link.Events {
 
     private void offline(String why, boolean refused) {
         connectedGeneration = -1;
-        int wait = backoffSeconds;
-        backoffSeconds = Math.min(30, backoffSeconds * 2);
+        backoff = backoff.failed();
+        long wait = backoff.delaySeconds();
         linkWords = why + "; trying again in " + wait + " s";
         if (!why.equals(lastProblem)) {
             lastProblem = why;
-            LOG.warn("MQTT bridge: {}; trying again every {} s at most, alerts wait on disk", why, 30);
+            LOG.warn("MQTT bridge: {}; trying again every {} s at most, alerts wait on disk", why, MAX_WAIT_SECONDS);
         }
         status.accept(refused ? DeviceStatus.State.ERROR : DeviceStatus.State.OFFLINE, linkWords);
         executor.schedule(Bridge.guard(link::connect), wait, TimeUnit.SECONDS);

@@ -7,6 +7,7 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
+import org.tinysep.device.support.Backoff;
 
 /**
  * One delivery attempt of one message and what follows from it (README, "Retry and give-up policy"): recipients
@@ -22,9 +23,10 @@ final class Delivery {
      * @param delaySeconds when to try it again
      * @param detail       the status detail while retrying
      * @param serverWide   the failure concerned the server, not particular recipients: hold the whole queue
+     * @param backoff      the message's back-off after this attempt, to pass to its next one (null when finished)
      */
-    record Next(MailMessage retry, long delaySeconds, String detail, boolean serverWide) {
-        static final Next FINISHED = new Next(null, 0, "", false);
+    record Next(MailMessage retry, long delaySeconds, String detail, boolean serverWide, Backoff backoff) {
+        static final Next FINISHED = new Next(null, 0, "", false, null);
     }
 
     private final SmtpTransport transport;
@@ -75,7 +77,7 @@ final class Delivery {
         }
         if (!a.delivered().isEmpty()) {
             events.delivered(m, a.delivered());
-            backoff.reset();
+            backoff = backoff.reset(); // some got it: the others start again from the first wait
         }
         MailMessage now = m;
         List<String> failures = new ArrayList<>(); // reported once the spool says the same
@@ -84,7 +86,7 @@ final class Delivery {
             failures.add(Words.failed(now, a.permanent(), "refused for good by the server, not retried", ""));
         }
         if (a.temporary().isEmpty()) {
-            return finish(now, backoff, failures);
+            return finish(now, failures);
         }
         Instant wallNow = wall.instant();
         Instant first = m.firstFailure() == null || m.firstFailure().isAfter(wallNow) ? wallNow : m.firstFailure();
@@ -93,7 +95,7 @@ final class Delivery {
             now = now.failing(List.copyOf(a.temporary().keySet()));
             failures.add(Words.failed(now, a.temporary(), "given up after " + Words.duration(age) + " of retrying",
                     "last reply: "));
-            return finish(now, backoff, failures);
+            return finish(now, failures);
         }
         MailMessage retry = now.retrying(List.copyOf(a.temporary().keySet()), List.of(), first);
         try {
@@ -103,12 +105,13 @@ final class Delivery {
         }
         failures.forEach(w -> fail(m, w));
         long left = settings.giveUpAfterSeconds() - age.getSeconds();
-        long delay = Math.max(1, Math.min(backoff.fail(), left)); // the last try comes at the give-up age
+        Backoff failed = backoff.failed();
+        long delay = Math.max(1, Math.min(failed.delaySeconds(), left)); // the last try comes at the give-up age
         Instant at = clock.get().plusSeconds(delay);
         events.retrying(m, Words.retrying(m, a.temporary(), at, delay));
         return new Next(retry, delay, Words.mail(m) + " not delivered yet to " + Words.replies(a.temporary())
-                + "; attempt " + backoff.failures() + " failed, next try at " + Words.time(at) + " (in " + delay
-                + " s)", a.serverWide());
+                + "; attempt " + failed.failures() + " failed, next try at " + Words.time(at) + " (in " + delay
+                + " s)", a.serverWide(), failed);
     }
 
     /** @param what e.g. {@code mail "Alert" NOT delivered to a@b: refused for good by the server (550 ...)} */
@@ -123,8 +126,7 @@ final class Delivery {
         events.undelivered(notice);
     }
 
-    private Next finish(MailMessage m, Backoff backoff, List<String> failures) {
-        backoff.reset();
+    private Next finish(MailMessage m, List<String> failures) {
         try {
             if (m.failed().isEmpty()) {
                 spool.delete(m);

@@ -79,8 +79,8 @@ final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
     void reconfigure(MailSettings next, String problem) {
         settings = next;
         configProblem = problem;
+        outbox.reconfigure(next); // queued before anything sent once the properties below show the new settings
         showHealth(); // the outbox may stay in the same state (e.g. NOT_CONFIGURED for a refused and for no host)
-        outbox.reconfigure(next);
     }
 
     private String sendTo(List<String> to, String subject, String body) {

@@ -13,6 +13,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import org.tinysep.api.service.MailStatus;
+import org.tinysep.device.support.Backoff;
 
 /**
  * The sending engine: a FIFO queue mirrored in a {@link MailSpool}, worked off one message at a time on its own
@@ -166,12 +167,13 @@ final class Outbox implements AutoCloseable {
         MailMessage m = serverDue - now > 0 ? null : queue.values().stream()
                 .filter(x -> due.getOrDefault(x.id(), now) - now <= 0).findFirst().orElse(null);
         if (m != null) {
-            Delivery.Next next = delivery.attempt(m, backoffs.computeIfAbsent(m.id(),
-                    id -> new Backoff(settings.retryInitialSeconds(), settings.retryMaxSeconds())));
+            Delivery.Next next = delivery.attempt(m, backoffs.getOrDefault(m.id(),
+                    Backoff.ofSeconds(settings.retryInitialSeconds(), settings.retryMaxSeconds())));
             long at = System.nanoTime() + TimeUnit.SECONDS.toNanos(next.delaySeconds());
             serverDue = next.serverWide() ? at : 0;
             if (next.retry() != null) {
                 queue.put(m.id(), next.retry());
+                backoffs.put(m.id(), next.backoff());
                 due.put(m.id(), at);
                 status(MailStatus.RETRYING, next.detail());
             } else {

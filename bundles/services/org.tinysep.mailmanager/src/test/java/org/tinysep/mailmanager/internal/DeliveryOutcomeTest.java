@@ -14,7 +14,7 @@ import org.tinysep.api.service.MailManagerProvider;
 /**
  * Delivery you can see (issue 12, item 4): {@code sendTo} a given address returns the message's id, and
  * {@code delivery(id)} / {@code deliveries()} tell what became of it (sent, retrying, failed, only logged), against
- * a real SMTP server ({@link RefusingSmtpServer}).
+ * a real SMTP server ({@link org.tinysep.testsupport.mail.SmtpSink} refusing some addresses).
  */
 class DeliveryOutcomeTest extends RefusingServerFixture {
 
@@ -30,7 +30,7 @@ class DeliveryOutcomeTest extends RefusingServerFixture {
         String retrying = mail.sendTo(List.of("full@care.test"), "to a full mailbox", "body");
         MailHarness.await("three outcomes", () -> outcome(mail, sent) == Outcome.SENT
                 && outcome(mail, failed) == Outcome.FAILED && outcome(mail, retrying) == Outcome.RETRYING);
-        assertEquals(List.of("second@care.test"), server.acceptedRecipients, "only to the given address");
+        assertEquals(List.of("second@care.test"), server.recipients(), "only to the given address");
         MailDelivery f = mail.delivery(failed).orElseThrow();
         assertTrue(f.detail().contains("NOT delivered to nobody@care.test") && f.detail().contains("550"),
                 f.detail());

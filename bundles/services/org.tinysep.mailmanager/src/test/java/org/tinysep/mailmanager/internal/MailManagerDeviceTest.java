@@ -4,15 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.icegreen.greenmail.configuration.GreenMailConfiguration;
-import com.icegreen.greenmail.util.GreenMail;
-import com.icegreen.greenmail.util.GreenMailUtil;
-import com.icegreen.greenmail.util.ServerSetup;
-import jakarta.mail.Message;
-import jakarta.mail.internet.MimeMessage;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
@@ -24,48 +17,37 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
+import org.tinysep.testsupport.mail.SmtpSink;
 
-/** The Mail Manager against a real SMTP server (GreenMail on 127.0.0.1). */
+/** The Mail Manager against a real SMTP server ({@link SmtpSink} on 127.0.0.1). */
 class MailManagerDeviceTest {
 
     @TempDir
     Path spool;
 
     private final MailHarness h = new MailHarness();
-    private GreenMail server;
-
-    private GreenMail startServer(int port, GreenMailConfiguration config) {
-        server = new GreenMail(new ServerSetup(port, "127.0.0.1", ServerSetup.PROTOCOL_SMTP));
-        if (config != null) {
-            server.withConfiguration(config);
-        }
-        server.start();
-        return server;
-    }
+    private final SmtpSink server = new SmtpSink();
 
     @AfterEach
     void tearDown() {
         h.close();
-        if (server != null) {
-            server.stop();
-        }
+        server.close();
     }
 
     @Test
     void deliversWithSenderRecipientsSubjectAndBody() throws Exception {
-        int port = MailHarness.freePort();
-        startServer(port, null);
+        int port = server.start().port();
         MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
 
         mail.send("Inactivity in the kitchen", "No movement for 2 h.\nPlease call Anna.");
 
-        awaitReceived(2); // one copy per recipient
-        MimeMessage m = server.getReceivedMessages()[0];
-        assertEquals("Inactivity in the kitchen", m.getSubject());
-        assertEquals("tinysep@home.test", m.getFrom()[0].toString());
-        assertEquals(List.of("carer@care.test", "family@kin.test"),
-                Arrays.stream(m.getRecipients(Message.RecipientType.TO)).map(Object::toString).toList());
-        assertEquals("No movement for 2 h.\r\nPlease call Anna.", GreenMailUtil.getBody(m).strip());
+        awaitReceived(2); // one message, two recipients
+        SmtpSink.Received m = server.messages().get(0);
+        assertEquals("Inactivity in the kitchen", m.subject());
+        assertEquals("tinysep@home.test", m.header("From"));
+        assertEquals("carer@care.test, family@kin.test", m.header("To"));
+        assertEquals(List.of("carer@care.test", "family@kin.test"), m.to(), "the envelope");
+        assertEquals("No movement for 2 h.\r\nPlease call Anna.", m.body().strip());
         MailHarness.await("IDLE and spool empty", () -> mail.status() == MailStatus.IDLE && spoolFiles().isEmpty());
         assertTrue(h.eventTexts().contains("mail \"Inactivity in the kitchen\" queued for carer@care.test, "
                 + "family@kin.test"), h.eventTexts().toString());
@@ -75,8 +57,7 @@ class MailManagerDeviceTest {
 
     @Test
     void keepsMailWhileServerIsDownAndSendsItExactlyOnceWhenBack() throws Exception {
-        int port = MailHarness.freePort();
-        startServer(port, null);
+        int port = server.start().port();
         MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
         server.stop();
 
@@ -86,7 +67,7 @@ class MailManagerDeviceTest {
         assertTrue(h.statuses.contains(MailStatus.RETRYING), "listeners heard it");
         assertEquals(2, spoolFiles().size(), "both kept on disk while the server is down");
 
-        startServer(port, null);
+        server.start(); // the same port
         MailHarness.await("IDLE again", () -> mail.status() == MailStatus.IDLE);
         awaitReceived(4);
         assertEquals(List.of("first", "second"), subjectsFor("carer@care.test"), "in order, exactly once");
@@ -97,8 +78,7 @@ class MailManagerDeviceTest {
     @Test
     void passwordNeverAppearsInLogsStatusOrParameters() throws Exception {
         String secret = "Very-Secret-42";
-        int port = MailHarness.freePort();
-        startServer(port, GreenMailConfiguration.aConfig().withUser("alice@home.test", "alice", "other-pw"));
+        int port = server.requireLogin("alice", "other-pw").start().port();
         Map<String, Object> config = MailHarness.smtp(port, spool);
         config.put("user", "alice");
         config.put("password", secret);
@@ -124,7 +104,8 @@ class MailManagerDeviceTest {
 
     @Test
     void spoolSurvivesARestartOfTheComponent() throws Exception {
-        int port = MailHarness.freePort(); // nobody listens yet
+        int port = server.start().port();
+        server.stop(); // nobody listens yet
         MailManagerProvider mail = h.start(MailHarness.smtp(port, spool)).provider();
         mail.send("before restart 1", "a");
         mail.send("before restart 2", "b");
@@ -132,7 +113,7 @@ class MailManagerDeviceTest {
         h.stopDevice();
         Files.writeString(spool.resolve("00000000000000000001.mail"), "id=oops\nsubject=half");
 
-        startServer(port, null);
+        server.start();
         MailManagerDevice again = h.start(MailHarness.smtp(port, spool));
 
         awaitReceived(4);
@@ -176,25 +157,14 @@ class MailManagerDeviceTest {
         }
     }
 
+    /** Waits for {@code n} (message, recipient) pairs at the server. */
     private void awaitReceived(int n) {
-        MailHarness.await(n + " messages at the server", () -> server.getReceivedMessages().length >= n);
+        MailHarness.await(n + " deliveries at the server", () -> server.recipients().size() >= n);
     }
 
-    /** Subjects received in one mailbox, in arrival order (GreenMail groups received messages by mailbox). */
-    private List<String> subjectsFor(String recipient) throws Exception {
-        List<String> subjects = new java.util.ArrayList<>();
-        var inbox = server.getManagers().getImapHostManager().getInbox(server.getUserManager().getUserByEmail(recipient));
-        for (var stored : inbox.getMessages()) {
-            subjects.add(subject(stored.getMimeMessage()));
-        }
-        return subjects;
-    }
-
-    private static String subject(MimeMessage m) {
-        try {
-            return m.getSubject();
-        } catch (jakarta.mail.MessagingException e) {
-            throw new AssertionError(e);
-        }
+    /** Subjects of the messages received for one recipient, in arrival order. */
+    private List<String> subjectsFor(String recipient) {
+        return server.messages().stream().filter(m -> m.to().contains(recipient)).map(SmtpSink.Received::subject)
+                .toList();
     }
 }

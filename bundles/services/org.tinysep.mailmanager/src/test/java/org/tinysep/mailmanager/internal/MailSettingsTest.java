@@ -63,19 +63,6 @@ class MailSettingsTest {
                 problem("host", "smtp://x"));
     }
 
-    @Test
-    void backoffDoublesUpToTheMaximum() {
-        Backoff b = new Backoff(5, 600);
-        long[] delays = new long[10];
-        for (int i = 0; i < delays.length; i++) {
-            delays[i] = b.fail();
-        }
-        assertEquals(List.of(5L, 10L, 20L, 40L, 80L, 160L, 320L, 600L, 600L, 600L),
-                java.util.Arrays.stream(delays).boxed().toList());
-        b.reset();
-        assertEquals(5, b.fail());
-    }
-
     private static String problem(String key, Object value) {
         Map<String, Object> c = valid();
         c.put(key, value);

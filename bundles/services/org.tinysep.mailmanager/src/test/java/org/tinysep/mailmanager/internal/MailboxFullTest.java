@@ -31,7 +31,7 @@ class MailboxFullTest extends RefusingServerFixture {
 
         MailHarness.await("a truthful 'failed temporarily' entry", () -> h.eventTexts().stream().anyMatch(e -> e
                 .startsWith("mail \"Inactivity alert\" to full@care.test: delivery failed temporarily ("
-                        + RefusingSmtpServer.FULL + " to RCPT), retrying at ")));
+                        + FULL + " to RCPT), retrying at ")));
         assertTrue(h.eventTexts().contains("mail \"Inactivity alert\" queued for full@care.test"), h.eventTexts()
                 .toString());
         // the entry is written during the attempt, the status (and the device's) right after it
@@ -47,8 +47,8 @@ class MailboxFullTest extends RefusingServerFixture {
             assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(f)));
         }
 
-        server.mailboxFull = false; // the carer emptied the mailbox
-        MailHarness.await("delivered", () -> server.acceptedRecipients.contains("full@care.test"));
+        emptyMailboxes(); // the carer emptied the mailbox
+        MailHarness.await("delivered", () -> server.recipients().contains("full@care.test"));
         MailHarness.await("logged as delivered", () -> h.eventTexts()
                 .contains("mail \"Inactivity alert\" delivered to full@care.test"));
         MailHarness.await("IDLE", () -> mail.status() == MailStatus.IDLE);
@@ -66,11 +66,11 @@ class MailboxFullTest extends RefusingServerFixture {
                 .contains("mail \"alert\" delivered to carer@care.test"));
         MailHarness.await("retrying the full mailbox", () -> h.eventTexts().stream()
                 .anyMatch(e -> e.startsWith("mail \"alert\" to full@kin.test: delivery failed temporarily")));
-        server.mailboxFull = false;
+        emptyMailboxes();
         MailHarness.await("delivered to the other", () -> h.eventTexts()
                 .contains("mail \"alert\" delivered to full@kin.test"));
-        assertEquals(1, Collections.frequency(server.acceptedRecipients, "carer@care.test"), "the carer once");
-        assertEquals(1, Collections.frequency(server.acceptedRecipients, "full@kin.test"));
+        assertEquals(1, Collections.frequency(server.recipients(), "carer@care.test"), "the carer once");
+        assertEquals(1, Collections.frequency(server.recipients(), "full@kin.test"));
     }
 
     @Test
@@ -87,14 +87,14 @@ class MailboxFullTest extends RefusingServerFixture {
         mail.send("second", "y");
         MailHarness.await("second delivered to the carer at once", () -> h.eventTexts()
                 .contains("mail \"second\" delivered to carer@care.test"));
-        assertEquals(2, Collections.frequency(server.acceptedRecipients, "carer@care.test"));
+        assertEquals(2, Collections.frequency(server.recipients(), "carer@care.test"));
 
-        server.mailboxFull = false;
+        emptyMailboxes();
         device.invoke("retryNow");
         MailHarness.await("both delivered to the emptied mailbox",
-                () -> Collections.frequency(server.acceptedRecipients, "full@kin.test") == 2);
+                () -> Collections.frequency(server.recipients(), "full@kin.test") == 2);
         MailHarness.await("IDLE", () -> mail.status() == MailStatus.IDLE);
-        assertEquals(2, Collections.frequency(server.acceptedRecipients, "carer@care.test"), "nobody twice");
+        assertEquals(2, Collections.frequency(server.recipients(), "carer@care.test"), "nobody twice");
     }
 
     @Test
@@ -106,7 +106,7 @@ class MailboxFullTest extends RefusingServerFixture {
         device.provider().send("Inactivity alert", "x");
         MailHarness.await("given up", () -> h.logs.events().stream().anyMatch(e -> e.kind() == EventKind.PROBLEM
                 && e.message().startsWith("mail \"Inactivity alert\" NOT delivered to full@care.test: given up "
-                        + "after ") && e.message().contains("(last reply: " + RefusingSmtpServer.FULL + " to RCPT)")));
+                        + "after ") && e.message().contains("(last reply: " + FULL + " to RCPT)")));
         MailHarness.await("ERROR", () -> device.status().state() == DeviceStatus.State.ERROR);
         assertTrue(device.status().detail().startsWith("mail \"Inactivity alert\" NOT delivered to full@care.test"),
                 device.status().toString());
@@ -119,7 +119,7 @@ class MailboxFullTest extends RefusingServerFixture {
         MailHarness.await("ERROR after a restart", () -> restarted.status().state() == DeviceStatus.State.ERROR);
         assertTrue(restarted.health().summary().contains("NOT delivered"), restarted.health().summary());
 
-        server.mailboxFull = false;
+        emptyMailboxes();
         restarted.provider().send("next", "y");
         MailHarness.await("delivered", () -> h.eventTexts().contains("mail \"next\" delivered to full@care.test"));
         MailHarness.await("ONLINE again", () -> restarted.status().state() == DeviceStatus.State.ONLINE);

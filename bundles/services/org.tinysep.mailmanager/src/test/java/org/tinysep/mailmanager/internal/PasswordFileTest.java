@@ -4,9 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import com.icegreen.greenmail.configuration.GreenMailConfiguration;
-import com.icegreen.greenmail.util.GreenMail;
-import com.icegreen.greenmail.util.ServerSetup;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
@@ -15,6 +12,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
  * Issue 10, item 6 (password part): the SMTP password comes from an owner-only file kept out of the configuration
@@ -28,21 +26,16 @@ class PasswordFileTest {
     Path dir;
 
     private final MailHarness h = new MailHarness();
-    private GreenMail server;
+    private final SmtpSink server = new SmtpSink().requireLogin("alice", SECRET);
 
     @AfterEach
     void tearDown() {
         h.close();
-        if (server != null) {
-            server.stop();
-        }
+        server.close();
     }
 
     private Map<String, Object> withLogin() throws Exception {
-        int port = MailHarness.freePort();
-        server = new GreenMail(new ServerSetup(port, "127.0.0.1", ServerSetup.PROTOCOL_SMTP));
-        server.withConfiguration(GreenMailConfiguration.aConfig().withUser("alice@home.test", "alice", SECRET));
-        server.start();
+        int port = server.start().port();
         Map<String, Object> config = MailHarness.smtp(port, dir.resolve("spool"));
         config.put("user", "alice");
         config.put("passwordFile", dir.resolve("secrets/smtp.password").toString());
@@ -64,7 +57,7 @@ class PasswordFileTest {
 
         device.provider().send("alert", "body");
 
-        MailHarness.await("delivered with the file's password", () -> server.getReceivedMessages().length == 2);
+        MailHarness.await("delivered with the file's password", () -> server.recipients().size() == 2);
         assertTrue(h.logs.events().stream().noneMatch(e -> e.kind() == EventKind.PROBLEM), h.eventTexts().toString());
         assertTrue(device.parameters().stream().anyMatch(p -> p.key().equals("passwordFile")
                 && p.value().endsWith("smtp.password (owner-only)")));
@@ -82,7 +75,7 @@ class PasswordFileTest {
                         + "(mode rw-r--r--); make it owner-only: chmod 600 " + f)));
         assertTrue(h.stderr().contains("can be read by other users"), "a WARN line too");
         device.provider().send("alert", "body");
-        MailHarness.await("still delivered", () -> server.getReceivedMessages().length == 2);
+        MailHarness.await("still delivered", () -> server.recipients().size() == 2);
         assertSecretNowhere(device);
     }
 
@@ -96,7 +89,7 @@ class PasswordFileTest {
                 + "set with the key 'password' of configuration org.tinysep.mailmanager: it is stored in plain text "
                 + "in the framework cache")));
         device.provider().send("alert", "body");
-        MailHarness.await("delivered", () -> server.getReceivedMessages().length == 2);
+        MailHarness.await("delivered", () -> server.recipients().size() == 2);
         assertSecretNowhere(device);
     }
 
@@ -113,7 +106,7 @@ class PasswordFileTest {
         writePassword("rw-------");
         device.invoke("retryNow");
         MailHarness.await("delivered once the file is there (read at each attempt)",
-                () -> server.getReceivedMessages().length == 2);
+                () -> server.recipients().size() == 2);
     }
 
     private void assertSecretNowhere(MailManagerDevice device) {
