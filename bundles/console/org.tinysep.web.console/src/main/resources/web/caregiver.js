@@ -50,7 +50,8 @@ async function refresh() {
     detail.textContent = (c.inactivity.state === 'WATCHING' ? 'Someone is home; an alert is raised when activity stops for longer than the room\'s limit.'
       : 'Nobody seems to be home: not watching.') + (c.inactivity.sight ? ' ' + c.inactivity.sight : '');
   }
-  // the person nodes (issue 26): who wears each, when it last reported, its battery; whether it is worn: later
+  // the person nodes (issue 26): who wears each, when it last reported, its battery, and from Inactivity
+  // Recognition's persons(): whether it is worn, its last movement, where its wearer was last seen, the wearer's watch
   const persons = Tiny.clear(document.getElementById('person-nodes'));
   const nodes = c.personNodes || [];
   if (!nodes.length) persons.append(Tiny.el('p', {class: 'muted'}, 'No person node: nobody wears a node (help button, fall detection).'));
@@ -59,8 +60,12 @@ async function refresh() {
       Tiny.el('h3', {}, n.person ? n.person : n.name),
       Tiny.el('div', {class: n.online === false ? 'error' : ''}, (n.lastReport ? Tiny.time(n.lastReport) + ': ' : '') + n.lastReportWords),
       Tiny.el('div', {class: n.batteryLow ? 'warning' : 'muted'}, 'Battery: ' + n.batteryWords),
-      // WORN: Inactivity Recognition's persons() will say whether the node is worn (wornWords until then)
-      Tiny.el('div', {class: 'muted'}, 'Worn: ' + n.wornWords),
+      Tiny.el('div', {class: 'worn ' + (n.worn === false ? 'warning' : 'muted')}, n.worn === false
+        ? 'Seems not worn since ' + Tiny.time(n.lastMovement) + ': ' + n.wornWords : 'Worn: ' + n.wornWords),
+      Tiny.el('div', {class: 'last-movement muted'}, 'Last movement: '
+        + (n.lastMovement ? Tiny.time(n.lastMovement) + ' (' + n.lastMovementWords + ')' : n.lastMovementWords)),
+      Tiny.el('div', {class: 'last-room muted'}, 'Last room: ' + n.lastRoomWords),
+      Tiny.el('div', {class: 'person-watch ' + (n.watch === 'ALERT' ? 'error' : 'muted')}, 'Watch: ' + n.watchWords),
       Tiny.el('div', {class: 'muted'}, n.personWords + ' · node ' + n.node)));
   }
   const body = Tiny.clear(document.getElementById('rooms'));

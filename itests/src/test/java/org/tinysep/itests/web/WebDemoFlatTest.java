@@ -172,6 +172,17 @@ public class WebDemoFlatTest extends WebTestSupport {
                         + " && Array.from(document.querySelectorAll('#person-nodes .person-node')).some(n => n.textContent"
                         + ".startsWith('Anna') && n.textContent.includes('Battery: not reported'))", WAIT,
                         "the FALL alert with its explanation and Anna's pendant");
+                // issue 26 item 4: from Inactivity Recognition's persons(): her pendant is worn (it lay still only
+                // after the fall, with no room activity since), she was last seen in the Bathroom, and her own watch
+                // called for help after the Bathroom's limit
+                browser.waitFor("Array.from(document.querySelectorAll('#person-nodes .person-node')).some(n => "
+                        + "n.querySelector('.worn').textContent === \"Worn: yes: its movement counts as Anna's activity\""
+                        + " && n.querySelector('.last-movement').textContent.startsWith('Last movement: ')"
+                        + " && n.querySelector('.last-room').textContent === 'Last room: last seen in the Bathroom'"
+                        + " && n.querySelector('.person-watch').textContent.startsWith('Watch: ALERT: Anna has not been "
+                        + "active for longer than the limit of the Bathroom'))"
+                        + " && !document.getElementById('person-nodes').textContent.includes('not known here yet')", WAIT,
+                        "Anna's pendant worn, last seen in the Bathroom, her own watch in ALERT");
                 shot(browser, "caregiver", 1250); // the alerts and the sensors below the cards
             } catch (AssertionError | RuntimeException e) {
                 log.error("Demo flat browser test failed at '{}'; {}", step, browser.failureScreenshot("web-demo-screenshots", step));

@@ -5,6 +5,7 @@ import java.net.InetSocketAddress;
 import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.List;
 import org.tinysep.simulator.time.LockStepDriver;
 import org.tinysep.simulator.time.SyncClient;
@@ -12,8 +13,9 @@ import org.tinysep.simulator.time.VirtualClock;
 
 /**
  * Plays a person node's frames ({@link PersonNodeFrames}) to the Sun SPOT UDP bus radio in lock-step time: for each
- * second that has frames, the platform is TICKed to it, then that second's frames go out in order (the radio stamps
- * them with that second, so instants inside a second are rounded down to it).
+ * instant that has frames, the platform is TICKed to that very instant (milliseconds kept), then that instant's
+ * frames go out in order, so the radio stamps each with the instant the node sent it (a burst's trigger 4.42 s in,
+ * not 4 s: before, whole seconds were played and instants inside a second were rounded down to it).
  */
 public final class PersonNodePlayer implements AutoCloseable {
 
@@ -28,8 +30,8 @@ public final class PersonNodePlayer implements AutoCloseable {
     }
 
     /**
-     * Plays {@code frames} (sorted by time) from their first second to {@code until}, TICKing only the seconds that
-     * have frames and then {@code until} itself.
+     * Plays {@code frames} (sorted by time) from their first instant to {@code until}, TICKing only the instants
+     * that have frames (as they are, with their milliseconds) and then {@code until} itself.
      *
      * @return how many frames were sent
      */
@@ -38,24 +40,25 @@ public final class PersonNodePlayer implements AutoCloseable {
         if (frames.isEmpty()) {
             return 0;
         }
-        Instant from = second(frames.get(0).at());
+        List<Instant> instants = new ArrayList<>();
+        for (PersonNodeFrames.Timed f : frames) {
+            if (instants.isEmpty() || f.at().isAfter(instants.get(instants.size() - 1))) {
+                instants.add(f.at());
+            }
+        }
+        instants.add(until);
         int[] next = {0};
         long[] sent = {0};
-        new LockStepDriver(sync, new VirtualClock(from), paceNanos).run(from, until.plusSeconds(1), t -> {
+        new LockStepDriver(sync, new VirtualClock(frames.get(0).at()), paceNanos).runInstants(instants, t -> {
             int n = 0;
-            while (next[0] < frames.size() && !second(frames.get(next[0]).at()).isAfter(t)) {
+            while (next[0] < frames.size() && !frames.get(next[0]).at().isAfter(t)) {
                 channel.send(ByteBuffer.wrap(frames.get(next[0]++).frame()), radio);
                 n++;
             }
             sent[0] += n;
             return n;
-        }, t -> Math.max(t + 1, next[0] < frames.size() ? second(frames.get(next[0]).at()).getEpochSecond()
-                : until.getEpochSecond()));
+        });
         return (int) sent[0];
-    }
-
-    private static Instant second(Instant i) {
-        return Instant.ofEpochSecond(i.getEpochSecond());
     }
 
     @Override

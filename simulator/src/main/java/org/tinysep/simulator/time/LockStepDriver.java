@@ -1,6 +1,7 @@
 package org.tinysep.simulator.time;
 
 import java.time.Instant;
+import java.util.List;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -35,6 +36,31 @@ public final class LockStepDriver {
     /** Plays every second from {@code from} (inclusive) to {@code until} (exclusive). @return seconds played */
     public long run(Instant from, Instant until, Stepper stepper) throws Exception {
         return run(from, until, stepper, EVERY_SECOND);
+    }
+
+    /**
+     * Plays the given instants in order, milliseconds kept (a TICK may move the clock by less than a second,
+     * docs/time-sync.md): per instant the clock is set, the platform TICKed to it, then {@code stepper} sends what is
+     * due then (the bus radio stamps it with that instant). Instants not later than the one before are skipped.
+     *
+     * @return instants played
+     */
+    public long runInstants(List<Instant> instants, Stepper stepper) throws Exception {
+        long played = 0;
+        Instant before = null;
+        for (Instant at : instants) {
+            if (before != null && !at.isAfter(before)) {
+                continue;
+            }
+            before = at;
+            clock.set(at);
+            sync.tick(at);
+            played++;
+            if (stepper.step(at) > 0 && paceNanos > 0) {
+                LockSupport.parkNanos(paceNanos);
+            }
+        }
+        return played;
     }
 
     /** Plays the seconds from {@code from} (inclusive) to {@code until} (exclusive) chosen by {@code next}. */

@@ -34,7 +34,7 @@ class PersonNodePlayerTest {
     Path dir;
 
     @Test
-    void aFallIsSentAsSummariesAndAChunkedBurstEachInItsSecond() throws Exception {
+    void aFallIsSentAsSummariesAndAChunkedBurstEachAtItsOwnInstant() throws Exception {
         SyntheticRecordings.write(dir, "SX01", 3);
         SisfallRecording fall = SisfallRecording.read(dir.resolve("SX01/F01_SX01_R01.txt.gz"));
         Instant start = Instant.parse("2026-11-23T08:00:00Z");
@@ -72,8 +72,12 @@ class PersonNodePlayerTest {
                     .findFirst().orElseThrow().at();
             assertEquals(1980, lastChunk.toEpochMilli() - trigger.toEpochMilli(), "the last chunk 2 s later");
             List<Instant> ticks = peer.ticks();
-            assertEquals(start.plusSeconds(1), ticks.get(0), "the first summary leaves at 1.98 s");
-            assertTrue(ticks.contains(Instant.ofEpochSecond(trigger.getEpochSecond())), ticks.toString());
+            assertEquals(start.plusMillis(1980), ticks.get(0), "the first summary leaves at 1.98 s: the platform is "
+                    + "TICKed to that instant, milliseconds kept, so the radio stamps it 1.98 s, not 1 s");
+            assertTrue(trigger.getNano() != 0, "the trigger lies inside a second: " + trigger);
+            assertTrue(ticks.contains(trigger), "TICKed to the trigger itself, not its whole second: " + ticks);
+            assertEquals(frames.stream().map(PersonNodeFrames.Timed::at).distinct().toList(),
+                    ticks.subList(0, ticks.size() - 1), "one TICK per instant with frames, each as it is");
             assertEquals(start.plusSeconds(20), ticks.get(ticks.size() - 1), "played up to the end");
             assertInstanceOf(MovementSummaryReport.class, received.get(0));
         }

@@ -115,7 +115,7 @@ final class InactivityDevice extends WholeFlatDevice
         sources.add(p.deviceUid());
     }
 
-    /** Sets how wearers of person nodes are watched (before any person node is given). */
+    /** Sets how wearers of person nodes are watched (before the backup is restored and any person node given). */
     void watchPersons(WearerSettings settings, java.time.ZoneId zone, HelpCall.AlertDesk desk) {
         PersonAlertWords w = new PersonAlertWords(zone);
         persons = new PersonWatches(new Wearers(settings, w::time), w, limitDefault(), desk, help::mailer);
@@ -141,6 +141,7 @@ final class InactivityDevice extends WholeFlatDevice
         Instant now = now();
         PersonWatches.Moved m = persons.summary(source.deviceUid(), source.person(), summary, now);
         m.events().forEach(this::event);
+        personSave(m.events()); // the wearer's watch (README "System backup and restarts")
         m.activity().ifPresent(a -> { // someone moved: the flat is active too
             Optional<InactivityState> change;
             synchronized (logic) {
@@ -214,7 +215,21 @@ final class InactivityDevice extends WholeFlatDevice
         rooms.seen(a);
         stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
         announce(change, a.at(), () -> a.description() + " in " + a.roomName()); // built on a change only
-        persons.room(a, now).forEach(this::event);
+        List<String> said = persons.room(a, now);
+        said.forEach(this::event);
+        personSave(said);
+    }
+
+    /**
+     * A wearer's watch changed: saved at once when it said something (a state change, a hand-over, worn or not
+     * worn), else at most every 10 s like the flat's activity (docs/backup.md).
+     */
+    private void personSave(List<String> said) {
+        if (said.isEmpty()) {
+            stateChanged();
+        } else {
+            saveBackup();
+        }
     }
 
     /** The clock went back: says so in plain words (the logic already counts the quiet time from now). */
@@ -240,7 +255,11 @@ final class InactivityDevice extends WholeFlatDevice
             change = logic.occupancy(occupancy, at);
         }
         announce(change, at, () -> "flat " + lower(occupancy));
-        persons.occupancy(occupancy, at).forEach(this::event);
+        List<String> said = persons.occupancy(occupancy, at);
+        said.forEach(this::event);
+        if (!said.isEmpty()) {
+            saveBackup();
+        }
     }
 
     /** Advances the algorithm's clock; called every platform second by the driver. */
@@ -253,7 +272,11 @@ final class InactivityDevice extends WholeFlatDevice
         }
         wentBack.ifPresent(from -> clockWentBack(from, now));
         announce(change, now, () -> "limit reached");
-        persons.tick(now).forEach(this::event);
+        List<String> said = persons.tick(now);
+        said.forEach(this::event);
+        if (!said.isEmpty()) {
+            saveBackup(); // a wearer's alert raised or handed on: not handed on twice after a restart
+        }
         resolveHistory();
         long wall = System.nanoTime();
         if (wall - lastHeartbeat >= HEARTBEAT_NANOS) {
@@ -368,23 +391,29 @@ final class InactivityDevice extends WholeFlatDevice
 
     @Override
     protected Map<String, String> backupState() {
+        Map<String, String> state;
         synchronized (logic) {
-            return rooms.state(logic.lastActivity().orElse(null), logic.watchingFrom().orElse(null),
-                    help.handedOverDue());
+            state = new java.util.LinkedHashMap<>(rooms.state(logic.lastActivity().orElse(null),
+                    logic.watchingFrom().orElse(null), help.handedOverDue()));
         }
+        state.putAll(persons.state()); // each wearer's watch (PersonBackup)
+        return state;
     }
 
     /**
      * After a restart: the last activity, since when the flat was watched and the alert already handed over come
      * back, so the quiet time that began before keeps counting once Flat Occupancy (restored too) says OCCUPIED;
      * an alert that fell due meanwhile is raised by the first tick and says it is late. Times from the future are
-     * counted from now.
+     * counted from now. Each wearer's own watch comes back too ({@link PersonBackup}).
      */
     @Override
     protected void onRestore(ComponentBackup saved) {
         Restart.Report r = Restart.apply(saved, now(), logic, rooms, help, words);
-        r.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
-        r.events().forEach(this::event);
+        List<String> problems = new java.util.ArrayList<>(r.problems());
+        List<String> events = new java.util.ArrayList<>(r.events());
+        events.addAll(persons.restore(saved.state(), now(), problems)); // each wearer's watch
+        problems.forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        events.forEach(this::event);
     }
 
     @Override

@@ -124,8 +124,15 @@ final class PersonWatches {
     synchronized List<String> occupancy(Occupancy o, Instant at) {
         occupancy = o;
         List<String> events = new ArrayList<>();
-        watches.forEach((uid, w) -> w.logic.occupancy(o, at).ifPresent(state -> events.addAll(left(uid, w, state,
-                "the flat became " + o.name().toLowerCase(Locale.ROOT) + " at " + words.time(at)))));
+        watches.forEach((uid, w) -> w.logic.occupancy(o, at).ifPresent(state -> {
+            String why = "the flat became " + o.name().toLowerCase(Locale.ROOT) + " at " + words.time(at);
+            if (state == InactivityState.WATCHING) { // no alert to clear; one handed on before a restart stays so
+                events.add("inactivity watching for " + wearers.view(uid).map(Wearers.View::person).orElse(uid)
+                        + " (" + why + ")");
+            } else {
+                events.addAll(left(uid, w, state, why));
+            }
+        }));
         return events;
     }
 
@@ -190,6 +197,47 @@ final class PersonWatches {
         watches.remove(nodeUid);
         wearers.remove(nodeUid);
         unnamed.remove(nodeUid);
+    }
+
+    /** @return each wearer's watch for the device's backup state ({@link PersonBackup}) */
+    synchronized Map<String, String> state() {
+        return PersonBackup.write(wearers.saved().stream().filter(w -> watches.containsKey(w.nodeUid())).map(w -> {
+            Watch x = watches.get(w.nodeUid());
+            return new PersonBackup.SavedWatch(w, x.basis, x.logic.lastActivity().orElse(null),
+                    x.logic.watchingFrom().orElse(null), x.handedOver, x.toService);
+        }).toList());
+    }
+
+    /**
+     * After a restart, before the nodes are heard: each saved wearer's watch comes back (last movement, where last
+     * seen, worn, last activity, since when watched, the alert handed on), so the quiet time keeps counting from
+     * before the restart. @return the event-log lines (one per wearer)
+     */
+    synchronized List<String> restore(Map<String, String> state, Instant now, List<String> problems) {
+        List<String> events = new ArrayList<>();
+        for (PersonBackup.SavedWatch s : PersonBackup.read(state, problems)) {
+            String uid = s.wearer().nodeUid();
+            wearers.restore(s.wearer(), now);
+            Watch w = new Watch(new InactivityLogic(defaultLimit, now));
+            Activity last = s.last() == null ? null : s.last().description().endsWith(" (before restart)") ? s.last()
+                    : new Activity(s.last().roomUid(), s.last().roomName(), s.last().description()
+                            + " (before restart)", s.last().at(), s.last().limit(), s.last().explanation());
+            w.logic.resume(last, s.watchingFrom());
+            w.logic.rebase(now);
+            w.basis = s.seen();
+            w.handedOver = s.handedOver();
+            w.toService = s.toService();
+            watches.put(uid, w);
+            unnamed.remove(uid);
+            Wearers.View v = wearers.view(uid).orElseThrow();
+            events.add("restored after a restart: " + v.person() + "'s watch: " + (s.last() == null ? "no activity "
+                    + "counted yet" : "last active at " + words.time(s.last().at()) + " (" + s.last().description()
+                    + ")") + (v.roomName().isEmpty() ? ", not seen in a room yet" : ", last seen in " + v.roomName())
+                    + ", pendant " + (v.worn() ? "worn" : "seems not to be worn") + ", still since "
+                    + words.time(v.lastMovement()) + (s.handedOver() == null ? "" : ", the alert due at "
+                    + words.time(s.handedOver()) + " was already handed on") + "; the quiet time keeps counting");
+        }
+        return events;
     }
 
     /** @return the names of the wearers watched now (empty: no named person node) */

@@ -44,6 +44,22 @@ public final class Wearers {
     public record Attribution(Set<String> countsFor, Set<String> seenThere, List<Notice> notices) {
     }
 
+    /**
+     * What the system backup keeps of a wearer (README "System backup and restarts"): the node, the name, when it was
+     * first heard and last moved (null: not since it was heard), whether it seemed worn, where last seen.
+     */
+    public record Saved(String nodeUid, String person, Instant heard, Instant lastMovement, boolean worn,
+            String roomUid, String roomName) {
+
+        public Saved {
+            Objects.requireNonNull(nodeUid, "nodeUid");
+            Objects.requireNonNull(person, "person");
+            Objects.requireNonNull(heard, "heard");
+            roomUid = roomUid == null ? "" : roomUid;
+            roomName = roomName == null ? "" : roomName;
+        }
+    }
+
     private static final class Wearer {
         final String nodeUid;
         String person;
@@ -140,6 +156,25 @@ public final class Wearers {
             }
         }
         return new Attribution(counts, seen, notices);
+    }
+
+    /** @return each wearer as the backup keeps it, in the order their nodes were first heard */
+    public synchronized List<Saved> saved() {
+        return nodes.values().stream().map(w -> new Saved(w.nodeUid, w.person, w.heard, w.lastMovement, w.worn,
+                w.roomUid, w.roomName)).toList();
+    }
+
+    /**
+     * After a restart: takes a saved wearer back (before its node is heard again); times later than {@code now} (a
+     * backup from virtual time) are taken as {@code now}. Who explained room activity meanwhile is not kept.
+     */
+    public synchronized void restore(Saved s, Instant now) {
+        Wearer w = new Wearer(s.nodeUid(), s.person(), s.heard().isAfter(now) ? now : s.heard());
+        w.lastMovement = s.lastMovement() == null || !s.lastMovement().isAfter(now) ? s.lastMovement() : now;
+        w.worn = s.worn();
+        w.roomUid = s.roomUid();
+        w.roomName = s.roomName();
+        nodes.put(s.nodeUid(), w);
     }
 
     /** The node went away. */

@@ -6,23 +6,33 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Function;
+import java.util.stream.Collectors;
 import java.util.Map;
 import java.util.Optional;
 import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.health.NodeHealthSource;
 import org.tinysep.api.sensor.person.MovementSummary;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
+import org.tinysep.api.service.InactivityRecognitionProvider;
+import org.tinysep.api.service.PersonWatch;
 
 /**
  * The person nodes for the caregiver page ({@code personNodes} of {@code GET /api/caregiver}, issue 26 item 7): per
- * node the wearer's name, when it last reported and its battery, each also in words. The battery and the last report
+ * node the wearer's name, when it last reported and its battery, whether it is worn, its last movement, where its
+ * wearer was last seen and the wearer's own inactivity watch, each also in words. The battery and the last report
  * come from the node's bus device ({@link NodeHealthSource}); the Sun SPOT protocol carries no battery level, which
- * is said rather than left blank.
+ * is said rather than left blank. Worn, movement, room and watch come from Inactivity Recognition's
+ * {@link InactivityRecognitionProvider#persons()} ({@link PersonWatchWords}).
  */
 final class PersonNodes {
 
-    /** What is known of one person node. {@code health} is null when no bus device reports the node's health. */
-    record Node(String uid, String name, String person, String address, Instant lastSummary, NodeHealth health) {
+    /**
+     * What is known of one person node. {@code health} is null when no bus device reports the node's health;
+     * {@code watch}: what Inactivity Recognition knows of its wearer.
+     */
+    record Node(String uid, String name, String person, String address, Instant lastSummary, NodeHealth health,
+            PersonWatchWords.Source watch) {
     }
 
     private PersonNodes() {
@@ -31,6 +41,9 @@ final class PersonNodes {
     /** @return every person node of the platform, ordered by wearer then node address */
     static List<Map<String, Object>> of(PlatformView platform, Instant now) {
         List<PlatformView.DeviceRef> devices = platform.devices();
+        Optional<Map<String, PersonWatch>> watches = platform.withService(InactivityRecognitionProvider.class,
+                r -> Safe.get(r::persons, List.<PersonWatch>of()).stream()
+                        .collect(Collectors.toMap(PersonWatch::nodeUid, Function.identity(), (a, b) -> a)));
         List<Node> nodes = new ArrayList<>();
         for (PlatformView.DeviceRef d : devices) {
             if (d.device() instanceof PersonNodeProvider p) {
@@ -41,7 +54,8 @@ final class PersonNodes {
                 nodes.add(new Node(d.uid(), Safe.name(d.device(), d.uid()),
                         Safe.get(p::person, Optional.<String>empty()).orElse(""), d.nodeAddress(),
                         Safe.get(p::lastSummary, Optional.<MovementSummary>empty()).map(MovementSummary::end)
-                                .orElse(null), health));
+                                .orElse(null), health, new PersonWatchWords.Source(watches.isPresent(),
+                                watches.map(w -> w.get(d.uid())).orElse(null))));
             }
         }
         nodes.sort((a, b) -> (a.person() + " " + a.address()).compareToIgnoreCase(b.person() + " " + b.address()));
@@ -65,12 +79,12 @@ final class PersonNodes {
         m.put("batteryMillivolts", mv);
         m.put("batteryLow", n.health() != null && n.health().batteryLow());
         m.put("batteryWords", batteryWords(n.health()));
-        // WORN: whether the node is worn comes from Inactivity Recognition's persons() (issue 26 item 4, another
-        // change); until this reads it, "worn" is null and its words say it is not known here yet.
-        m.put("worn", null);
-        m.put("wornWords", "not known here yet");
+        Map<String, Object> watch = PersonWatchWords.json(who, n.watch(), now);
+        m.putAll(watch);
         m.put("summary", (who.isEmpty() ? "Person node " + n.address() : who + "'s person node (" + n.address() + ")")
-                + ": " + lastReportWords(n, last, now) + "; battery " + batteryWords(n.health()) + ".");
+                + ": " + lastReportWords(n, last, now) + "; battery " + batteryWords(n.health()) + "; worn: "
+                + watch.get("wornWords") + "; last movement " + watch.get("lastMovementWords") + "; "
+                + watch.get("lastRoomWords") + "; " + watch.get("watchWords") + ".");
         return m;
     }
 
@@ -106,7 +120,7 @@ final class PersonNodes {
         return h.batteryLow() ? volts + ", LOW: charge or replace it soon" : volts + ", fine";
     }
 
-    private static String ago(Duration d) {
+    static String ago(Duration d) {
         long s = Math.max(0, d.getSeconds());
         if (s < 120) {
             return s + " s ago";

@@ -45,32 +45,40 @@ class PersonAlertsJsonTest {
                 "an alert without a text is explained by its subject");
     }
 
+    private static final PersonWatchWords.Source NO_INACTIVITY = new PersonWatchWords.Source(false, null);
+
     @Test
     void aPersonNodeShowsItsWearerLastReportAndBatteryInWords() {
         NodeHealth sunSpot = new NodeHealth("bus-1", "0014.4F01.0000.0A04", Set.of("person"), true,
                 T.minusSeconds(3), null, Duration.ofSeconds(2), null, false, 30, 30, 0);
         Map<String, Object> j = PersonNodes.json(new PersonNodes.Node("dev-1", "Person node 0014.4F01.0000.0A04",
-                "Anna", "0014.4F01.0000.0A04", T.minusSeconds(5), sunSpot), T);
+                "Anna", "0014.4F01.0000.0A04", T.minusSeconds(5), sunSpot, NO_INACTIVITY), T);
         assertEquals("Anna", j.get("person"));
         assertEquals(T.minusSeconds(3), j.get("lastReport"), "the newest frame of the node, not only its summaries");
         assertEquals("last report 3 s ago", j.get("lastReportWords"));
         assertNull(j.get("batteryMillivolts"));
         assertTrue(((String) j.get("batteryWords")).startsWith("not reported (the node's protocol carries no battery"),
                 (String) j.get("batteryWords"));
-        assertTrue(j.containsKey("worn") && j.get("worn") == null, "worn: not known here yet");
+        assertTrue(j.containsKey("worn") && j.get("worn") == null, "worn: not known without Inactivity Recognition");
+        assertEquals("not known: Inactivity Recognition is not running (it tells whether the node is worn)",
+                j.get("wornWords"));
         assertTrue(((String) j.get("summary")).startsWith("Anna's person node (0014.4F01.0000.0A04): last report 3 s "
                 + "ago; battery not reported"), (String) j.get("summary"));
 
         NodeHealth low = new NodeHealth("bus-2", "1.30", Set.of("person"), false, T.minus(Duration.ofMinutes(50)),
                 T.minus(Duration.ofMinutes(50)), Duration.ofSeconds(2), 3410, true, 0, 30, 0);
-        Map<String, Object> k = PersonNodes.json(new PersonNodes.Node("dev-2", "Pendant", "", "1.30", null, low), T);
+        Map<String, Object> k = PersonNodes.json(new PersonNodes.Node("dev-2", "Pendant", "", "1.30", null, low,
+                new PersonWatchWords.Source(true, null)), T);
         assertEquals("nobody is named as its wearer (set the node's parameter 'person')", k.get("personWords"));
+        assertEquals("not known: the node has no wearer's name, so its movement is nobody's activity",
+                k.get("wornWords"));
         assertEquals("last report 50 min ago, silent now: the node is off, out of range or its battery is empty",
                 k.get("lastReportWords"));
         assertEquals(3410, k.get("batteryMillivolts"));
         assertEquals("3.41 V, LOW: charge or replace it soon", k.get("batteryWords"));
 
-        Map<String, Object> none = PersonNodes.json(new PersonNodes.Node("dev-3", "P", "Ben", "x", null, null), T);
+        Map<String, Object> none = PersonNodes.json(new PersonNodes.Node("dev-3", "P", "Ben", "x", null, null,
+                NO_INACTIVITY), T);
         assertEquals("no report since the platform started", none.get("lastReportWords"));
         assertEquals("not known (no health of this node from its bus radio)", none.get("batteryWords"));
     }
