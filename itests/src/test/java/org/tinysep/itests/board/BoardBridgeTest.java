@@ -51,8 +51,9 @@ public class BoardBridgeTest extends MqttBridgeSupport {
             AlertService alerts = awaitService(AlertService.class, null, TIMEOUT);
             Alert a = alerts.raise(new AlertRequest(AlertKind.INACTIVITY, "board-test", "", "Bathroom", Instant.now(),
                     "TinySEP: no activity in Bathroom since 13:15", "Inactivity Recognition raised an alert."));
-            await(WAIT, () -> board(installer).contains("\"id\":\"" + a.id() + "\",\"kind\":\"INACTIVITY\",\"state\":\"OPEN\""),
-                    "alert " + a.id() + " open on the board");
+            java.util.regex.Pattern open = java.util.regex.Pattern.compile("\"id\":\"" + a.id()
+                    + "\",\"kind\":\"INACTIVITY\",\"kindWords\":\"[^\"]+\",\"state\":\"OPEN\""); // kind also in words
+            await(WAIT, () -> open.matcher(board(installer)).find(), "alert " + a.id() + " open on the board");
 
             HttpResponse<String> done = call("POST", "/board/api/flats/flat1/alerts/" + a.id() + "/acknowledge",
                     "{\"by\":\"Eva (care centre)\"}", installer, true);
