@@ -6,7 +6,7 @@
  * bundle ({@code -conditionalpackage: org.tinysep.device.support}), so an application still depends only on
  * the exported API packages and can be updated on its own.
  */
-@Version("1.8.0")
+@Version("1.9.0")
 package org.tinysep.device.support;
 
 import org.osgi.annotation.versioning.Version;
