@@ -26,6 +26,7 @@ import org.tinysep.api.log.PacketEntry;
 import org.tinysep.api.log.PacketLog;
 import org.tinysep.api.packet.PacketDescriber;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.api.web.WebConsole;
 import org.tinysep.json.JsonWriter;
 
 /**
@@ -159,7 +160,7 @@ public final class ApiServlet extends HttpServlet {
                     return alerts.status();
                 }
                 if (n == 3 && p.get(2).equals("acknowledge") && method.equals("POST")) {
-                    return alerts.acknowledge(p.get(1), String.valueOf(req.getAttribute(SessionApi.ROLE_ATTRIBUTE)));
+                    return alerts.acknowledge(p.get(1), String.valueOf(req.getAttribute(WebConsole.ROLE_ATTRIBUTE)));
                 }
             }
             case "rooms" -> {
