@@ -1,14 +1,16 @@
 'use strict';
 // The packet log page: every packet received or sent (hex, the thesis's decimal notation as a tooltip, the decoded
-// form from the protocol libraries, why a packet was
-// rejected), live, filtered by node and kind; a search of the stored history.
+// form from the bus radios' packet describers, or why it is not decoded; why a packet was rejected), live,
+// filtered by node and kind; a search of the stored history.
 let live = true;
 const MAX_ROWS = 1000;
 
 function row(p) {
   const tr = Tiny.el('tr', {class: p.note ? 'kind-PROBLEM' : null, 'data-seq': p.seq, 'data-node': p.node || ''},
     Tiny.el('td', {class: 'nowrap'}, Tiny.time(p.time)), Tiny.el('td', {}, p.direction), Tiny.el('td', {}, p.origin),
-    Tiny.el('td', {class: 'mono', title: 'decimal: ' + p.decimal}, p.hex), Tiny.el('td', {class: 'decoded'}, p.decoded || ''), Tiny.el('td', {}, p.note));
+    Tiny.el('td', {class: 'mono', title: 'decimal: ' + p.decimal}, p.hex), p.decoded
+      ? Tiny.el('td', {class: 'decoded'}, p.decoded)
+      : Tiny.el('td', {class: 'undecoded'}, p.undecoded || ''), Tiny.el('td', {}, p.note));
   tr.packet = p;
   return tr;
 }

@@ -150,6 +150,8 @@ public class MqttBridgeTest extends MqttBridgeSupport {
             sub.await("homeassistant/binary_sensor/tinysep_flat1_occupancy/config", "occupancy", WAIT);
             sub.await(BASE + "occupancy", "\"state\":\"OCCUPIED\"", WAIT);
             sub.await(BASE + "platform", "\"heartbeatSeconds\":60", WAIT);
+            MqttTestClient.Received drivers = sub.await(BASE + "drivers", " in the drivers list, ", WAIT);
+            assertTrue(drivers.payload(), drivers.payload().contains("\"applications\":[")); // live: retain flag not kept
 
             // an actuator: state, entity with a command topic, a command that reaches the node
             light.keepAlive();

@@ -37,6 +37,7 @@ final class Bridge {
     private AlertFeed feed;
     private DeviceScan scan;
     private FlatState flat;
+    private DriversState drivers;
     private Session session;
     private Link link;
     private long lastSummary = Long.MIN_VALUE;
@@ -84,6 +85,7 @@ final class Bridge {
         alerts = new Alerts(topics, outbox);
         scan = new DeviceScan(context, topics, clock);
         flat = new FlatState(context, topics, clock, settings.heartbeatSeconds());
+        drivers = DriversState.tracking(context, topics);
         feed = new AlertFeed(context, executor, this::alertChanged, this::alertServiceAdded);
         session = new Session(settings, executor, clock, status, figures, outbox,
                 new Commands(topics, scan, feed::service),
@@ -125,6 +127,7 @@ final class Bridge {
     private void poll() {
         scan.poll(outbox::state);
         flat.poll(outbox::state, feed.service(), alerts);
+        outbox.state(drivers.message());
         session.drain();
         session.showFigures();
     }
@@ -173,6 +176,9 @@ final class Bridge {
                 }
                 if (flat != null) {
                     flat.close();
+                }
+                if (drivers != null) {
+                    drivers.close();
                 }
             }).get(10, TimeUnit.SECONDS);
         } catch (Exception e) {

@@ -50,6 +50,11 @@ final class Topics {
         return at("summary");
     }
 
+    /** Additive to the contract (v1): the drivers list, retained. */
+    String drivers() {
+        return at("drivers");
+    }
+
     String occupancy() {
         return at("occupancy");
     }

@@ -16,13 +16,17 @@ import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.PacketEntry;
 import org.tinysep.api.log.PacketLog;
+import org.tinysep.api.packet.PacketDescriber;
 import org.tinysep.api.service.TimeControllerProvider;
+import org.tinysep.api.web.WebConsole;
 import org.tinysep.json.JsonWriter;
 
 /**
@@ -53,6 +57,7 @@ public final class ApiServlet extends HttpServlet {
     private final transient TimelineApi timeline;
     private final transient AlertsApi alerts;
     private final transient SensorsApi sensors;
+    private final transient PacketDescriptions descriptions = new PacketDescriptions();
 
     @Activate
     public ApiServlet(BundleContext context, @Reference WebSecurity security, @Reference(name = "eventLog") EventLog events,
@@ -63,7 +68,7 @@ public final class ApiServlet extends HttpServlet {
         this.session = new SessionApi(security);
         this.devices = new DevicesApi(platform);
         this.rooms = new RoomsApi(platform);
-        this.logs = new LogsApi(platform);
+        this.logs = new LogsApi(platform, descriptions);
         this.caregiver = new CaregiverApi(platform);
         java.nio.file.Path web = org.tinysep.device.support.StateFolder.resolveOrDataArea(null, context, "web");
         this.applications = new ApplicationsApi(context, platform,
@@ -76,7 +81,17 @@ public final class ApiServlet extends HttpServlet {
                 new LiveFeed<EventEntry>("events", events::recent, EventEntry::sequence,
                         e -> JsonWriter.write(LogsApi.event(e, names.get()))),
                 new LiveFeed<PacketEntry>("packets", packets::recent, PacketEntry::sequence,
-                        p -> JsonWriter.write(LogsApi.packet(p))), security.sessions());
+                        p -> JsonWriter.write(LogsApi.packet(p, descriptions))), security.sessions());
+    }
+
+    /** The protocols' packet describers (whiteboard), as their bus radios come and go. */
+    @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC)
+    void addDescriber(PacketDescriber d) {
+        descriptions.add(d);
+    }
+
+    void removeDescriber(PacketDescriber d) {
+        descriptions.remove(d);
     }
 
     @Deactivate
@@ -145,7 +160,7 @@ public final class ApiServlet extends HttpServlet {
                     return alerts.status();
                 }
                 if (n == 3 && p.get(2).equals("acknowledge") && method.equals("POST")) {
-                    return alerts.acknowledge(p.get(1), String.valueOf(req.getAttribute(SessionApi.ROLE_ATTRIBUTE)));
+                    return alerts.acknowledge(p.get(1), String.valueOf(req.getAttribute(WebConsole.ROLE_ATTRIBUTE)));
                 }
             }
             case "rooms" -> {

@@ -31,9 +31,11 @@ public final class LogsApi {
     static final int MAX_LIMIT = 5000;
 
     private final PlatformView platform;
+    private final PacketDescriptions descriptions;
 
-    public LogsApi(PlatformView platform) {
+    LogsApi(PlatformView platform, PacketDescriptions descriptions) {
         this.platform = platform;
+        this.descriptions = descriptions;
     }
 
     public Map<String, Object> events(EventLog log, Map<String, String[]> params) {
@@ -49,7 +51,7 @@ public final class LogsApi {
         LogQuery q = query(params, false);
         LogHistory<PacketEntry> h = log.query(q);
         List<Object> entries = new ArrayList<>();
-        h.entries().forEach(p -> entries.add(packet(p)));
+        h.entries().forEach(p -> entries.add(packet(p, descriptions)));
         return answer(entries, h);
     }
 
@@ -64,16 +66,19 @@ public final class LogsApi {
         return m;
     }
 
-    static Map<String, Object> packet(PacketEntry p) {
+    static Map<String, Object> packet(PacketEntry p, PacketDescriptions descriptions) {
+        byte[] bytes = p.bytes();
+        PacketDescriptions.Description d = descriptions.describe(p.origin(), bytes);
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("seq", p.sequence());
         m.put("time", p.time());
         m.put("direction", p.direction());
         m.put("origin", p.origin());
-        m.put("hex", HexFormat.ofDelimiter(" ").formatHex(p.bytes()));
+        m.put("hex", HexFormat.ofDelimiter(" ").formatHex(bytes));
         m.put("decimal", p.decimal());
         m.put("note", p.note());
-        m.put("decoded", PacketDecoder.decode(p.origin(), p.bytes()));
+        m.put("decoded", d.decoded());
+        m.put("undecoded", d.undecoded());
         m.put("node", node(p.origin()));
         return m;
     }

@@ -12,10 +12,11 @@ import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
+import org.tinysep.api.web.BoardRoutes;
+import org.tinysep.api.web.WebConsole;
 import org.tinysep.web.api.internal.Sessions.Session;
 
 /**
@@ -34,15 +35,10 @@ public final class SecurityFilter implements Filter {
 
     /** Header carrying the CSRF token on state-changing calls. */
     public static final String CSRF_HEADER = "X-CSRF-Token";
-    /** What may be fetched before logging in: the login page and what it needs. */
-    static final Set<String> PUBLIC = Set.of("/login.html", "/login.js", "/console.css", "/favicon.svg");
     static final String CSP = "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' data:; "
             + "connect-src 'self'; form-action 'self'; base-uri 'none'; frame-ancestors 'none'";
 
     private static final java.util.regex.Pattern ACKNOWLEDGE = java.util.regex.Pattern.compile("/api/alerts/[^/]+/acknowledge");
-    /** The central alert board's acknowledgement (bundle org.tinysep.mqtt.board). */
-    private static final java.util.regex.Pattern BOARD_ACKNOWLEDGE =
-            java.util.regex.Pattern.compile("/board/api/flats/[^/]+/alerts/[^/]+/acknowledge");
 
     private final WebSecurity security;
 
@@ -65,7 +61,7 @@ public final class SecurityFilter implements Filter {
         String method = req.getMethod();
         boolean api = path.startsWith("/api/") || path.equals("/api");
         boolean reads = method.equals("GET") || method.equals("HEAD");
-        if (PUBLIC.contains(path) && reads) {
+        if (WebConsole.PUBLIC_PAGES.contains(path) && reads) {
             chain.doFilter(req, resp);
             return;
         }
@@ -83,7 +79,7 @@ public final class SecurityFilter implements Filter {
                 deny(req, resp, 401, "log in first");
             } else {
                 resp.setStatus(302);
-                resp.setHeader("Location", "/login.html");
+                resp.setHeader("Location", WebConsole.LOGIN_PAGE);
             }
             return;
         }
@@ -100,14 +96,16 @@ public final class SecurityFilter implements Filter {
             }
         }
         req.setAttribute(SessionApi.SESSION_ATTRIBUTE, s);
-        req.setAttribute(SessionApi.ROLE_ATTRIBUTE, s.role().id());
+        req.setAttribute(WebConsole.ROLE_ATTRIBUTE, s.role().id());
         chain.doFilter(req, resp);
     }
 
-    /** The one change a caregiver may make: acknowledging an alert (the flat's own, or one on the central board). */
+    /**
+     * The one change a caregiver may make: acknowledging an alert (the flat's own, or one on the central board, whose
+     * route the board's bundle shares through {@link BoardRoutes}).
+     */
     static boolean caregiverMay(String method, String path) {
-        return method.equals("POST")
-                && (ACKNOWLEDGE.matcher(path).matches() || BOARD_ACKNOWLEDGE.matcher(path).matches());
+        return method.equals("POST") && (ACKNOWLEDGE.matcher(path).matches() || BoardRoutes.isAcknowledge(path));
     }
 
     static void headers(HttpServletResponse resp) {

@@ -21,8 +21,6 @@ public final class SessionApi {
     public static final String COOKIE = "TINYSEP_SESSION";
     /** Request attribute the filter sets to the logged-in {@link Session}. */
     public static final String SESSION_ATTRIBUTE = "org.tinysep.web.session";
-    /** Request attribute the filter sets to the logged-in role's id (read by the console bundle). */
-    public static final String ROLE_ATTRIBUTE = "org.tinysep.web.role";
 
     private static final Logger LOG = LoggerFactory.getLogger(SessionApi.class);
 

@@ -8,15 +8,15 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.net.URL;
 import java.util.Map;
-import java.util.Set;
 import java.util.regex.Pattern;
 import org.osgi.service.component.annotations.Component;
+import org.tinysep.api.web.WebConsole;
 
 /**
  * Serves the console's static files (the bundle's {@code /web/} folder) at the root of the HTTP service:
  * {@code /} is the event log page. Only plain names ({@code [a-z0-9-]+.(html|css|js|svg)}) are served, so no
  * path can reach outside the folder. The web API's login filter runs first; a page other than the login page
- * is refused (503) when that filter has not marked the request as logged in, so the pages are never open
+ * is refused (503) when that filter has not marked the request as logged in ({@link WebConsole}), so the pages are never open
  * while the API bundle is stopped.
  */
 @Component(service = Servlet.class, property = {
@@ -27,11 +27,8 @@ public final class PagesServlet extends HttpServlet {
 
     private static final long serialVersionUID = 1L;
     private static final Pattern NAME = Pattern.compile("/[a-z0-9-]+\\.(html|css|js|svg)");
-    private static final Set<String> PUBLIC = Set.of("/login.html", "/login.js", "/console.css", "/favicon.svg");
     private static final Map<String, String> TYPES = Map.of("html", "text/html;charset=utf-8",
             "css", "text/css;charset=utf-8", "js", "text/javascript;charset=utf-8", "svg", "image/svg+xml");
-    /** Set by the web API's login filter on every request it let through with a session. */
-    static final String ROLE_ATTRIBUTE = "org.tinysep.web.role";
 
     @Override
     protected void doGet(HttpServletRequest req, HttpServletResponse resp) throws IOException {
@@ -45,7 +42,7 @@ public final class PagesServlet extends HttpServlet {
             resp.sendError(404, "no such page");
             return;
         }
-        if (!PUBLIC.contains(path) && req.getAttribute(ROLE_ATTRIBUTE) == null) {
+        if (!WebConsole.PUBLIC_PAGES.contains(path) && req.getAttribute(WebConsole.ROLE_ATTRIBUTE) == null) {
             resp.sendError(503, "the web console's login (bundle org.tinysep.web.api) is not running");
             return;
         }

@@ -11,8 +11,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.time.Clock;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
+import java.util.Optional;
 import org.eclipse.paho.mqttv5.common.MqttException;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -26,17 +25,20 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
+import org.tinysep.api.web.BoardRoutes;
+import org.tinysep.api.web.WebConsole;
 import org.tinysep.json.JsonWriter;
 
 /**
  * The central alert board: runs the board ({@link Central}) with its configuration and serves it under
  * {@code /board/} on the web console's HTTP service: the page ({@code /board/}, {@code board.js}, the console's
  * stylesheet), its JSON ({@code GET /board/api/flats}) and acknowledging ({@code POST
- * /board/api/flats/<flat>/alerts/<id>/acknowledge}, body {@code {"by":"…"}} optional). The web console's login
- * filter (bundle org.tinysep.web.api) guards every path of this context: without it, this servlet answers 503.
+ * /board/api/flats/<flat>/alerts/<id>/acknowledge}, body {@code {"by":"…"}} optional; the routes are
+ * {@link BoardRoutes}, shared with the login filter). The web console's login filter (bundle org.tinysep.web.api)
+ * guards every path of this context: without its mark ({@link WebConsole#ROLE_ATTRIBUTE}), this servlet answers 503.
  */
 @Component(service = Servlet.class, configurationPid = "org.tinysep.mqtt.board", property = {
-    "osgi.http.whiteboard.servlet.pattern=/board/*",
+    "osgi.http.whiteboard.servlet.pattern=" + BoardRoutes.SERVLET_PATTERN,
     "osgi.http.whiteboard.servlet.name=tinysep-central-board"
 })
 @Designate(ocd = BoardConfig.class)
@@ -44,9 +46,6 @@ public final class BoardServlet extends HttpServlet {
 
     private static final long serialVersionUID = 1L;
     private static final Logger LOG = LoggerFactory.getLogger(BoardServlet.class);
-    /** Set by the web API's login filter on every request it let through with a session. */
-    static final String ROLE_ATTRIBUTE = "org.tinysep.web.role";
-    private static final Pattern ACK = Pattern.compile("/api/flats/([^/]+)/alerts/([^/]+)/acknowledge");
     private static final Map<String, String> FILES = Map.of("/", "board.html", "/board.js", "board.js");
 
     private transient Central central;
@@ -117,8 +116,8 @@ public final class BoardServlet extends HttpServlet {
         if (!loggedIn(req, resp)) {
             return;
         }
-        Matcher m = ACK.matcher(req.getPathInfo() == null ? "" : req.getPathInfo());
-        if (!m.matches()) {
+        Optional<BoardRoutes.Acknowledge> ack = BoardRoutes.acknowledge(req.getPathInfo());
+        if (ack.isEmpty()) {
             send(resp, 404, error("no such call"));
             return;
         }
@@ -128,7 +127,7 @@ public final class BoardServlet extends HttpServlet {
             if (body.length > 0) {
                 by = Payloads.fields(new String(body, StandardCharsets.UTF_8)).get("by");
             }
-            String words = central.acknowledge(m.group(1), m.group(2), by);
+            String words = central.acknowledge(ack.get().flat(), ack.get().alertId(), by);
             send(resp, 200, new JsonWriter().open('{').field("ok", true).field("explanation", words).close('}')
                     .toString());
         } catch (IllegalArgumentException e) {
@@ -141,7 +140,7 @@ public final class BoardServlet extends HttpServlet {
     }
 
     private static boolean loggedIn(HttpServletRequest req, HttpServletResponse resp) throws IOException {
-        if (req.getAttribute(ROLE_ATTRIBUTE) == null) {
+        if (req.getAttribute(WebConsole.ROLE_ATTRIBUTE) == null) {
             send(resp, 503, error("the web console's login (bundle org.tinysep.web.api) is not running: the board is closed"));
             return false;
         }

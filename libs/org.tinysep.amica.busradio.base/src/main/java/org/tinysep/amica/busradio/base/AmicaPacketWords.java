@@ -1,5 +1,6 @@
-package org.tinysep.web.api.internal;
+package org.tinysep.amica.busradio.base;
 
+import java.util.Optional;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
 import org.tinysep.amica.protocol.AmicaPayload;
@@ -11,21 +12,27 @@ import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.amica.protocol.SpeakerControl;
+import org.tinysep.api.packet.PacketDescriber;
+import org.tinysep.device.support.FrameWords;
 
 /**
- * An AmICA frame in words (only loaded once {@link PacketDecoder} found the protocol library); the decoding and its
- * fallbacks are {@link FrameText}'s.
+ * AmICA frames in words for the packet log's readers. Each AmICA bus radio bundle registers it as a
+ * {@link PacketDescriber} (a DS component subclass of its own: bnd writes components only for the bundle's own
+ * classes).
  */
-final class AmicaText {
+public class AmicaPacketWords implements PacketDescriber {
 
-    private AmicaText() {
+    @Override
+    public final String protocol() {
+        return "AmICA";
     }
 
-    static String of(byte[] bytes) {
-        return FrameText.<AmicaFrame, AmicaPayload, AmicaProtocolException>of(bytes,
+    @Override
+    public final Optional<String> describe(byte[] bytes) {
+        return FrameWords.<AmicaFrame, AmicaPayload, AmicaProtocolException>of(bytes,
                 b -> AmicaCodec.decode(b, 0, b.length),
                 f -> "AmICA " + f.sender() + " → " + f.receiver() + " #" + f.sequence() + ": ",
-                f -> AmicaPayloads.decode(f.payload()), AmicaText::payload);
+                f -> AmicaPayloads.decode(f.payload()), AmicaPacketWords::payload);
     }
 
     private static String payload(AmicaPayload p) {

@@ -1,5 +1,10 @@
-package org.tinysep.web.api.internal;
+package org.tinysep.sunspot.busradio.internal;
 
+import java.util.Optional;
+import java.util.regex.Pattern;
+import org.osgi.service.component.annotations.Component;
+import org.tinysep.api.packet.PacketDescriber;
+import org.tinysep.device.support.FrameWords;
 import org.tinysep.sunspot.protocol.BurstChunk;
 import org.tinysep.sunspot.protocol.ButtonReport;
 import org.tinysep.sunspot.protocol.LightStatus;
@@ -14,18 +19,29 @@ import org.tinysep.sunspot.protocol.SunSpotProtocolException;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 
 /**
- * A Sun SPOT frame in words (only loaded once {@link PacketDecoder} found the protocol library); the decoding and its
- * fallbacks are {@link FrameText}'s.
+ * Sun SPOT frames in words for the packet log's readers (the web console), as a whiteboard service. Asked first for
+ * this bus radio's origins ({@code node 0014.4F01.0000.A001 via …}, the bus device's {@code SunSpot…} names).
  */
-final class SunSpotText {
+@Component(service = PacketDescriber.class)
+public final class SunSpotPacketDescriber implements PacketDescriber {
 
-    private SunSpotText() {
+    private static final Pattern NODE_ORIGIN = Pattern.compile("(?i).*node [0-9a-f]{4}\\..*");
+
+    @Override
+    public String protocol() {
+        return "Sun SPOT";
     }
 
-    static String of(byte[] bytes) {
-        return FrameText.<SunSpotFrame, SunSpotPayload, SunSpotProtocolException>of(bytes,
+    @Override
+    public boolean usualFor(String origin) {
+        return origin.contains("SunSpot") || NODE_ORIGIN.matcher(origin).matches();
+    }
+
+    @Override
+    public Optional<String> describe(byte[] bytes) {
+        return FrameWords.<SunSpotFrame, SunSpotPayload, SunSpotProtocolException>of(bytes,
                 b -> SunSpotCodec.decode(b, 0, b.length), f -> "Sun SPOT " + f.source() + ": ",
-                f -> SunSpotPayloads.decode(f.payload()), SunSpotText::payload);
+                f -> SunSpotPayloads.decode(f.payload()), SunSpotPacketDescriber::payload);
     }
 
     private static String payload(SunSpotPayload p) {
