@@ -45,7 +45,11 @@ public final class DocVectors {
 
     /** @param doc the document's file name under {@code docs/protocols/}, e.g. {@code "amica.md"} */
     public static List<Map<String, String>> read(String doc) throws IOException {
-        Path path = Path.of(System.getProperty("basedir", "."), "../../docs/protocols", doc);
+        Path dir = Path.of(System.getProperty("basedir", ".")).toAbsolutePath();
+        while (dir.getParent() != null && !Files.isDirectory(dir.resolve("docs/protocols"))) {
+            dir = dir.getParent(); // the repository root: the first folder above the module that holds the documents
+        }
+        Path path = dir.resolve("docs/protocols").resolve(doc);
         List<Map<String, String>> out = new ArrayList<>();
         boolean inBlock = false;
         Map<String, String> current = new LinkedHashMap<>();
