@@ -179,6 +179,11 @@ public final class PlatformProcess implements AutoCloseable {
         return b == null ? Double.NaN : b.msFromStart();
     }
 
+    /** @return {@link System#nanoTime()} just before the process was started */
+    public long startNanos() {
+        return startNanos;
+    }
+
     /** @return wall time since the process was started, in ms */
     public double msSinceStart() {
         return (System.nanoTime() - startNanos) / 1e6;
