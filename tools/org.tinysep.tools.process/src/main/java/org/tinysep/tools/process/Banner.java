@@ -7,7 +7,8 @@ import java.util.regex.Pattern;
 
 /**
  * The launcher's start banner, e.g. {@code TinySEP 0.1.0-SNAPSHOT up in 1.2 s (interactive, start level 6): 41/41
- * bundles active [1-core 12, …]} (the launcher's {@code StartReport}), with when it came.
+ * bundles active [1-core 12, …]} (the launcher's {@code StartReport}), with when it came. A prompt printed on the
+ * same line before it (a shell that started first) is not part of it.
  *
  * @param line        the line as printed
  * @param version     the distribution's version
@@ -22,12 +23,12 @@ import java.util.regex.Pattern;
 public record Banner(String line, String version, double upSeconds, String mode, int active, int installed,
         int failed, double msFromStart, Duration cpu) {
 
-    private static final Pattern FORMAT = Pattern.compile("^TinySEP (\\S+) up in ([0-9.]+) s \\((\\w+), start level"
+    private static final Pattern FORMAT = Pattern.compile("TinySEP (\\S+) up in ([0-9.]+) s \\((\\w+), start level"
             + " \\d+\\): (\\d+)/(\\d+) bundles active \\[[^\\]]*\\](?: — (\\d+) FAILED.*)?$");
 
     /** @return true if {@code line} is a start banner */
     public static boolean is(String line) {
-        return FORMAT.matcher(line.strip()).matches();
+        return FORMAT.matcher(line.strip()).find();
     }
 
     /**
@@ -38,10 +39,10 @@ public record Banner(String line, String version, double upSeconds, String mode,
      */
     public static Optional<Banner> parse(String line, double msFromStart, Duration cpu) {
         Matcher m = FORMAT.matcher(line.strip());
-        if (!m.matches()) {
+        if (!m.find()) {
             return Optional.empty();
         }
-        return Optional.of(new Banner(line.strip(), m.group(1), Double.parseDouble(m.group(2)), m.group(3),
+        return Optional.of(new Banner(m.group(), m.group(1), Double.parseDouble(m.group(2)), m.group(3),
                 Integer.parseInt(m.group(4)), Integer.parseInt(m.group(5)),
                 m.group(6) == null ? 0 : Integer.parseInt(m.group(6)), msFromStart, cpu));
     }

@@ -32,6 +32,14 @@ class BannerTest {
     }
 
     @Test
+    void aPromptBeforeTheBannerIsNotPartOfIt() {
+        Banner b = Banner.parse("g! TinySEP 1.0 up in 2.0 s (interactive, start level 6): 41/41 bundles active [1-core"
+                + " 12]", 1, null).orElseThrow();
+        assertEquals("TinySEP 1.0 up in 2.0 s (interactive, start level 6): 41/41 bundles active [1-core 12]",
+                b.line());
+    }
+
+    @Test
     void otherLinesAreNoBanner() {
         assertFalse(Banner.is("Web console: http://127.0.0.1:8080/ (up 0.4 s after the banner) - admin"));
         assertFalse(Banner.is("  FAILED org.tinysep.mqtt (5-apps): bundles active"));
