@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.tinysep.tools.process.Ports;
 
 /**
  * What every benchmark shares: the distribution, a scratch folder, smoke or full, the JVM options compared
@@ -37,8 +38,8 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
         Path home = work.resolve(name + "/home");
         Path var = work.resolve(name + "/var");
         Files.createDirectories(var);
-        int port = Platform.freeUdpPort();
-        int syncPort = Platform.freeUdpPort();
+        int port = Ports.freeUdp();
+        int syncPort = Ports.freeUdp();
         Platform.install(dist, home, port, syncPort);
         return new Installed(home, var, port, syncPort);
     }

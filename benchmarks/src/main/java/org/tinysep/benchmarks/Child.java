@@ -8,6 +8,8 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.tinysep.tools.process.ChildProcesses;
+import org.tinysep.tools.process.PlatformLaunch;
 
 /** A floor ({@link Bare}) in its own JVM: ask it a question per line, read its RSS, end it. */
 final class Child implements AutoCloseable {
@@ -20,13 +22,14 @@ final class Child implements AutoCloseable {
     Child(List<String> jvmOptions, String... args) throws IOException {
         List<String> cmd = new ArrayList<>();
         cmd.add(Machine.java());
-        cmd.addAll(Platform.jvmArgs(jvmOptions));
+        cmd.addAll(PlatformLaunch.jvmArgs(jvmOptions));
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), Bare.class.getName()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT);
-        Platform.environment(jvmOptions, pb);
+        pb.environment().keySet().removeAll(Platform.UNSET); // as the platform's, for a fair comparison
+        pb.environment().putAll(PlatformLaunch.environment(jvmOptions));
         long t0 = System.nanoTime();
-        process = Children.track(pb.start());
+        process = ChildProcesses.track(pb.start());
         out = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8));
         in = process.getOutputStream();
         String first = out.readLine();

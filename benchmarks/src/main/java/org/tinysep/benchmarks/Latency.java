@@ -5,6 +5,7 @@ import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import java.util.Arrays;
 import java.util.List;
+import org.tinysep.tools.process.Ports;
 
 /**
  * Packet → reaction latency of TinySEP ({@link Reaction}: motion frame → light command via Follow Me Light) beside
@@ -57,13 +58,13 @@ final class Latency {
 
     void run(Bench b) throws Exception {
         int samples = b.smoke() ? 200 : 2_000;
-        int port = Platform.freeUdpPort();
+        int port = Ports.freeUdp();
         double[] idle;
         double[] loaded;
         try (Child echo = new Child(b.chosen(), "echo", Integer.toString(port))) {
             echo(port, Math.min(500, samples)); // warm-up
             idle = echo(port, samples);
-            int sink = Platform.freeUdpPort();
+            int sink = Ports.freeUdp();
             try (Child receiver = new Child(b.chosen(), "receiver", Integer.toString(sink));
                     Nodes background = new Nodes(10, sink)) {
                 Thread bg = new Thread(() -> {

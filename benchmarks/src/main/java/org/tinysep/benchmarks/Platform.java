@@ -1,103 +1,90 @@
 package org.tinysep.benchmarks;
 
 import java.io.IOException;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import org.tinysep.testsupport.process.DistributionCopy;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.Banner;
+import org.tinysep.tools.process.DistributionCopy;
+import org.tinysep.tools.process.PlatformProcess;
+import org.tinysep.tools.process.Ports;
 
 /**
  * The real distribution run as a user runs it: {@code java <options> -jar tinysep.jar --var <state>} in a copy of
- * {@code runtime/org.tinysep.launcher/target/tinysep}, with its interactive shell on stdin (commands end with an
- * {@code echo} marker: {@link PlatformProcess}, the same conversation as the launcher's process tests), its log in
- * {@code <home>/platform.log}. Its radios listen on free loopback ports.
+ * {@code runtime/org.tinysep.launcher/target/tinysep}, with its interactive shell on stdin ({@link PlatformProcess},
+ * the helper the launcher's process tests, the integration tests and the evaluation use too), its log in {@code
+ * <home>/platform.log}. Its radios listen on free loopback ports.
  */
 final class Platform implements AutoCloseable {
+
+    /** Not handed down from the shell that runs the benchmarks, to the floors ({@link Child}) nor the platform. */
+    static final List<String> UNSET = List.of("MALLOC_ARENA_MAX", "JAVA_TOOL_OPTIONS");
 
     final Path home;
     final int amicaPort;
     private final PlatformProcess shell;
-    private final long processId;
-    private final long startNanos;
-    private volatile long bannerNanos;
-    private volatile String banner = "";
-    private long stopNanos;
+    private final WebLine web;
 
-    private Platform(Path home, int amicaPort, Process process, long startNanos) {
+    private Platform(Path home, int amicaPort, PlatformProcess shell, WebLine web) {
         this.home = home;
         this.amicaPort = amicaPort;
-        this.startNanos = startNanos;
-        this.processId = process.pid();
-        this.shell = PlatformProcess.attach(process, this::saw);
+        this.shell = shell;
+        this.web = web;
     }
 
     /** Copies the distribution to {@code home} and sets its ports: AmICA, Time Controller as given, the rest free. */
     static Path install(Path dist, Path home, int amicaPort, int syncPort) throws IOException {
-        if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
-            throw new IOException("no distribution at " + dist.toAbsolutePath() + " (mvn -B -o package first)");
-        }
-        DistributionCopy.copy(dist, home);
-        Files.writeString(home.resolve("etc/org.tinysep.amica.busradio.udp.cfg"),
+        DistributionCopy.copy(DistributionCopy.require(dist), home);
+        DistributionCopy.cfg(home, "org.tinysep.amica.busradio.udp",
                 "port=" + amicaPort + "\nbindAddress=127.0.0.1\nmaxNodes=20000\n"); // scale: above its default 1,000
-        Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
-        Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"), "syncPort=" + syncPort + "\n");
-        Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
-                "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + freeTcpPort() + "\n");
+        DistributionCopy.cfg(home, "org.tinysep.sunspot.busradio", "udpPort=0\nudpBindAddress=127.0.0.1\n");
+        DistributionCopy.cfg(home, "org.tinysep.timecontroller", "syncPort=" + syncPort + "\n");
+        DistributionCopy.cfg(home, "org.apache.felix.http",
+                "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + Ports.freeTcp() + "\n");
         return home;
     }
 
     /** Starts {@code java <jvmOptions> -jar tinysep.jar --var <var>} in {@code home}; waits for the shell. */
     static Platform start(Path home, Path var, int amicaPort, List<String> jvmOptions) throws IOException {
-        List<String> cmd = new ArrayList<>();
-        cmd.add(Machine.java());
-        cmd.addAll(jvmArgs(jvmOptions));
+        List<String> options = new ArrayList<>(jvmOptions);
         String extra = System.getenv("BENCH_PLATFORM_JVM"); // e.g. a JFR recording while profiling (README)
         if (extra != null && !extra.isBlank()) {
-            cmd.addAll(List.of(extra.strip().split("\\s+")));
+            options.addAll(List.of(extra.strip().split("\\s+")));
         }
-        cmd.addAll(List.of("-jar", "tinysep.jar", "--var", var.toString()));
-        ProcessBuilder pb = new ProcessBuilder(cmd).directory(home.toFile())
-                .redirectError(ProcessBuilder.Redirect.appendTo(home.resolve("platform.log").toFile()));
-        environment(jvmOptions, pb);
-        long t0 = System.nanoTime();
-        Process p = Children.track(pb.start());
-        Platform platform = new Platform(home, amicaPort, p, t0);
-        platform.command("echo ready", Duration.ofSeconds(180));
-        return platform;
+        WebLine web = new WebLine();
+        PlatformProcess p = PlatformProcess.in(home).java(Machine.java()).jvm(options)
+                .unsetEnv(UNSET.toArray(String[]::new)).args("--var", var.toString()).eachLine(web)
+                .stopTimeout(Duration.ofMinutes(5)).start(Duration.ofSeconds(180));
+        return new Platform(home, amicaPort, p, web);
     }
 
-    private void saw(String line) {
-        if (bannerNanos == 0 && line.contains("bundles active")) {
-            bannerNanos = System.nanoTime();
-            banner = line.strip();
-            bannerCpuTicks = Proc.cpuTicks(processId);
-        } else if (webNanos == 0 && line.startsWith("Web console: ")) {
-            webNanos = System.nanoTime(); // issue 29: the console starts after the banner
+    /** Notes when the line "Web console: …" came (the console starts after the banner, issue 29). */
+    private static final class WebLine implements java.util.function.Consumer<String> {
+        private volatile long nanos;
+
+        @Override
+        public void accept(String line) {
+            if (nanos == 0 && line.startsWith("Web console: ")) {
+                nanos = System.nanoTime();
+            }
         }
     }
-
-    private volatile long bannerCpuTicks = -1;
-    private volatile long webNanos;
 
     /** @return the process's CPU time (user + system) when the banner came, in ms; NaN if unknown */
     double cpuMsToBanner() {
-        return bannerCpuTicks < 0 ? Double.NaN : bannerCpuTicks * 1000.0 / Proc.HZ;
+        Banner b = shell.banner();
+        return b == null ? Double.NaN : b.cpuMs();
     }
 
     /** @return ms from the banner to the line "Web console: <address>" (bound); NaN without one */
     double msBannerToWeb() {
-        return webNanos == 0 || bannerNanos == 0 ? Double.NaN : (webNanos - bannerNanos) / 1e6;
+        return web.nanos == 0 ? Double.NaN : (web.nanos - shell.startNanos()) / 1e6 - shell.msToBanner();
     }
 
     /** @return ms from closing the shell's input to the process's end (0 before {@link #close}) */
     double msToStop() {
-        return stopNanos / 1e6;
+        return shell.msToStop();
     }
 
     long pid() {
@@ -106,15 +93,16 @@ final class Platform implements AutoCloseable {
 
     /** @return wall time from {@code java -jar} to the banner "…: n/n bundles active", in ms */
     double msToBanner() {
-        return bannerNanos == 0 ? Double.NaN : (bannerNanos - startNanos) / 1e6;
+        return shell.msToBanner();
     }
 
     double msSinceStart() {
-        return (System.nanoTime() - startNanos) / 1e6;
+        return shell.msSinceStart();
     }
 
     String banner() {
-        return banner;
+        Banner b = shell.banner();
+        return b == null ? "" : b.line();
     }
 
     /** Runs one shell command; @return its output lines (prompts removed) */
@@ -122,7 +110,7 @@ final class Platform implements AutoCloseable {
         try {
             return shell.command(commandLine, timeout);
         } catch (IllegalStateException e) {
-            throw new IllegalStateException(e.getMessage() + " (log: " + home.resolve("platform.log") + ")", e);
+            throw new IllegalStateException(e.getMessage() + " (log: " + shell.log() + ")", e);
         }
     }
 
@@ -134,47 +122,17 @@ final class Platform implements AutoCloseable {
         return Proc.liveHeapKb(pid());
     }
 
+    /**
+     * Ends the shell's input: the shell stops the framework cleanly, after the platform saved what its backup writer
+     * still holds (bounded by the launcher).
+     *
+     * @throws IllegalStateException when it did not stop within 5 min (it is then killed; the message has its last
+     *                               lines)
+     */
     @Override
     public void close() throws InterruptedException {
         if (shell.alive()) {
-            long stopAsked = System.nanoTime();
-            // end of input: the shell stops the framework cleanly, after the platform saved what its backup writer
-            // still holds (bounded by the launcher)
-            try {
-                shell.stop(Duration.ofMinutes(5));
-            } catch (IllegalStateException late) {
-                throw new IllegalStateException("the platform did not stop within 5 min of its shell's end; killed"
-                        + " (log: " + home.resolve("platform.log") + ")", late);
-            }
-            stopNanos = System.nanoTime() - stopAsked;
-        }
-    }
-
-    /** @return the JVM arguments of an options list (entries starting with '-') */
-    static List<String> jvmArgs(List<String> options) {
-        return options.stream().filter(o -> o.startsWith("-")).toList();
-    }
-
-    /** Puts the environment entries of an options list ({@code NAME=value}, as etc/jvm.options has them) in pb's. */
-    static void environment(List<String> options, ProcessBuilder pb) {
-        pb.environment().remove("MALLOC_ARENA_MAX");
-        pb.environment().remove("JAVA_TOOL_OPTIONS");
-        for (String o : options) {
-            if (!o.startsWith("-") && o.contains("=")) {
-                pb.environment().put(o.substring(0, o.indexOf('=')), o.substring(o.indexOf('=') + 1));
-            }
-        }
-    }
-
-    static int freeUdpPort() throws IOException {
-        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getByName("127.0.0.1"))) {
-            return s.getLocalPort();
-        }
-    }
-
-    static int freeTcpPort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
-            return s.getLocalPort();
+            shell.stop(Duration.ofMinutes(5));
         }
     }
 }

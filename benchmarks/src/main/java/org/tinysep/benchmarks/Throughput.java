@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.tinysep.simulator.measure.KernelDrops;
+import org.tinysep.tools.process.Ports;
 
 /**
  * Maximum zero-loss throughput: N AmICA movement nodes send motion frames round-robin, the rate stepped up until
@@ -27,7 +28,7 @@ final class Throughput {
         int[] rates = b.smoke() ? new int[] {1_000, 2_000}
                 : new int[] {5_000, 10_000, 20_000, 40_000, 60_000, 80_000, 100_000, 120_000, 150_000, 200_000, 250_000};
         List<Step> bare = new ArrayList<>();
-        int barePort = Platform.freeUdpPort();
+        int barePort = Ports.freeUdp();
         try (Child receiver = new Child(b.chosen(), "receiver", Integer.toString(barePort));
                 Nodes sender = new Nodes(nodes, barePort, Nodes.SENDERS)) {
             for (int rate : rates) {

@@ -20,7 +20,8 @@ import java.util.zip.ZipOutputStream;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
+import org.tinysep.tools.process.Ports;
 
 /**
  * Issue 10 items 4 and 6 on the real distribution (a process, driven through its shell as a user does): the state
@@ -139,7 +140,7 @@ public class CraftedArchiveTest {
         FlatHome flat = new FlatHome(tmp.newFolder("home").toPath());
         Files.setPosixFilePermissions(flat.home.resolve("var"), PosixFilePermissions.fromString("rwxr-xr-x"));
         Files.writeString(flat.home.resolve("etc/org.tinysep.mailmanager.cfg"), "host=127.0.0.1\nport="
-                + Platforms.freeUdpPort() + "\nsecurity=NONE\nuser=anna\npassword=" + PASSWORD
+                + Ports.freeUdp() + "\nsecurity=NONE\nuser=anna\npassword=" + PASSWORD
                 + "\nfrom=tinysep@example.org\nrecipients=carer@example.org\n");
         return flat.home;
     }

@@ -25,7 +25,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.tinysep.simulator.cli.Run;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * Issue 6 point 5: the real distribution process is killed with SIGKILL ({@code destroyForcibly}) at seeded random

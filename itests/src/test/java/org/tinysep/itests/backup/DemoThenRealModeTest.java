@@ -20,7 +20,8 @@ import java.util.stream.Stream;
 import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
+import org.tinysep.tools.process.Ports;
 
 /**
  * Issue 10.3 / 17.5, "demo then real mode": the demo of {@code ./run.sh} runs in its own throwaway state and leaves
@@ -41,9 +42,9 @@ public class DemoThenRealModeTest {
     public void theDemoLeavesTheInstallationAsItWasAndTheNextStartIsInRealTime() throws Exception {
         Path home = tmp.newFolder("home").toPath();
         Platforms.install(home);
-        int amica = Platforms.freeUdpPort();
-        int sunSpot = Platforms.freeUdpPort();
-        int sync = Platforms.freeUdpPort();
+        int amica = Ports.freeUdp();
+        int sunSpot = Ports.freeUdp();
+        int sync = Ports.freeUdp();
         Path etc = home.resolve("etc");
         Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + amica + "\nbindAddress=127.0.0.1\n");
         Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"),

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.tinysep.itests.TestSyncKey;
+import org.tinysep.tools.process.Ports;
 
 /**
  * A distribution home set up for the simulated flat A (like {@code scripts/demo-flat.sh prepare}): free UDP ports
@@ -17,9 +18,9 @@ final class FlatHome {
     static final Path FLAT_A = Path.of("..", "simulator", "src", "main", "resources", "flats", "flat-a");
 
     final Path home;
-    final int amicaPort = Platforms.freeUdpPort();
-    final int sunSpotPort = Platforms.freeUdpPort();
-    final int syncPort = Platforms.freeUdpPort();
+    final int amicaPort = Ports.freeUdp();
+    final int sunSpotPort = Ports.freeUdp();
+    final int syncPort = Ports.freeUdp();
 
     FlatHome(Path home) throws IOException {
         this.home = home;

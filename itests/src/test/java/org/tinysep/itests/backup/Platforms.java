@@ -2,13 +2,10 @@ package org.tinysep.itests.backup;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.net.DatagramSocket;
-import java.net.InetAddress;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import org.tinysep.testsupport.process.DistributionCopy;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.DistributionCopy;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * The real distribution ({@code runtime/org.tinysep.launcher/target/tinysep}, system property {@code tinysep.dist})
@@ -25,24 +22,16 @@ final class Platforms {
     /** @return the distribution folder to copy */
     static Path distribution() {
         Path dist = Path.of(System.getProperty("tinysep.dist", "../runtime/org.tinysep.launcher/target/tinysep"));
-        if (!Files.isRegularFile(dist.resolve("tinysep.jar"))) {
-            throw new IllegalStateException("no distribution at " + dist.toAbsolutePath() + " (build the launcher)");
+        try {
+            return DistributionCopy.require(dist);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
         }
-        return dist;
     }
 
     /** Copies the distribution (without var/) to {@code home}. */
     static void install(Path home) throws IOException {
         DistributionCopy.copy(distribution(), home);
-    }
-
-    /** @return a UDP port free right now on 127.0.0.1 */
-    static int freeUdpPort() {
-        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 
     /** Starts the platform in {@code home} (its log there too) and waits until its shell answers. */

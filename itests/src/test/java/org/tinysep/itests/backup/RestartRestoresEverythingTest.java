@@ -13,7 +13,7 @@ import org.junit.Rule;
 import org.junit.Test;
 import org.junit.rules.TemporaryFolder;
 import org.tinysep.simulator.cli.Run;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * docs/acceptance.md scenario 6 (thesis 3.7): the real distribution runs as its own process with the simulated flat A (the

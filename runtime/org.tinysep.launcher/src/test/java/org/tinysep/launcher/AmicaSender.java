@@ -1,7 +1,6 @@
 package org.tinysep.launcher;
 
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
@@ -50,14 +49,6 @@ final class AmicaSender implements AutoCloseable {
         byte[] b = AmicaCodec.encode(new AmicaFrame(group, address, AmicaCodec.PLATFORM_ADDRESS, sequence++ & 0xFF,
                 AmicaPayloads.encode(payload)));
         socket.send(new DatagramPacket(b, b.length, radio));
-    }
-
-    static int freeUdpPort() {
-        try (DatagramSocket s = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
-        }
     }
 
     @Override

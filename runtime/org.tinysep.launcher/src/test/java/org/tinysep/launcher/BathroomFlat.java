@@ -7,7 +7,7 @@ import java.time.Duration;
 import java.time.Instant;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * The flat of the kill-and-restart process tests, written into a fresh copy of the distribution before it starts: a

@@ -10,7 +10,7 @@ import java.time.Duration;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * Issue 25, item 7, "ready while deaf": the real distribution as a process, with the AmICA radio's port held by

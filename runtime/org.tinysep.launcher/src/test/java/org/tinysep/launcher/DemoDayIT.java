@@ -12,6 +12,7 @@ import java.time.ZoneOffset;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.tools.process.Ports;
 
 /**
  * Issue 32 item 3 (the demo clock) with the real {@code ./run.sh}, distribution and simulator: the demo day is
@@ -41,10 +42,10 @@ class DemoDayIT {
         // ports nobody holds now (on a shared machine another TinySEP may hold the shipped ones: then the demo would
         // rightly refuse, DemoFlatScriptTest)
         Path etc = dist.resolve("etc");
-        Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + freeUdp() + "\nbindAddress=127.0.0.1\n");
+        Files.writeString(etc.resolve("org.tinysep.amica.busradio.udp.cfg"), "port=" + Ports.freeUdp() + "\nbindAddress=127.0.0.1\n");
         Files.writeString(etc.resolve("org.tinysep.sunspot.busradio.cfg"),
-                "udpPort=" + freeUdp() + "\nudpBindAddress=127.0.0.1\n");
-        Files.writeString(etc.resolve("org.tinysep.timecontroller.cfg"), "syncPort=" + freeUdp() + "\n");
+                "udpPort=" + Ports.freeUdp() + "\nudpBindAddress=127.0.0.1\n");
+        Files.writeString(etc.resolve("org.tinysep.timecontroller.cfg"), "syncPort=" + Ports.freeUdp() + "\n");
         Files.copy(REPO.resolve("run.sh"), root.resolve("run.sh"));
         Files.createDirectories(root.resolve("scripts"));
         Files.copy(REPO.resolve("scripts/demo-flat.sh"), root.resolve("scripts/demo-flat.sh"));
@@ -116,12 +117,6 @@ class DemoDayIT {
         String key = root.resolve("demo/var/sync.key").toString();
         return ProcessHandle.allProcesses().anyMatch(p -> p.info().commandLine().map(c -> c.contains(key)
                 && c.contains("org.tinysep.simulator")).orElse(false));
-    }
-
-    private static int freeUdp() throws java.io.IOException {
-        try (java.net.DatagramSocket s = new java.net.DatagramSocket(0, java.net.InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        }
     }
 
     private static String ask(ShellProcess tinysep, String command) throws Exception {

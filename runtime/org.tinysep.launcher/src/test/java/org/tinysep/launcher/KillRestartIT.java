@@ -19,7 +19,7 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * Issue 10 item 2 with the real distribution as a process, in real time: a person moves in the bathroom (limit

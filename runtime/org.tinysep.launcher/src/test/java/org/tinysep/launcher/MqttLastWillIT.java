@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.testsupport.mqtt.Mosquitto;
 import org.tinysep.testsupport.mqtt.MqttTestClient;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * Issue 15: the real distribution as a process, its MQTT bridge configured for a real Mosquitto broker. When the

@@ -19,7 +19,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.testsupport.mail.SmtpSink;
-import org.tinysep.testsupport.process.PlatformProcess;
+import org.tinysep.tools.process.PlatformProcess;
 
 /**
  * Issue 12 item 5, "the platform cannot die silently", without systemd: {@code java -jar tinysep.jar --supervise}

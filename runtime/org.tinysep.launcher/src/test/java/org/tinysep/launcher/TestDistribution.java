@@ -21,7 +21,8 @@ import java.util.stream.Stream;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
-import org.tinysep.testsupport.process.DistributionCopy;
+import org.tinysep.tools.process.DistributionCopy;
+import org.tinysep.tools.process.Ports;
 
 /** A copy of the assembled distribution booted in this JVM, with helpers to drive it (shell, polling). */
 final class TestDistribution {
@@ -39,7 +40,7 @@ final class TestDistribution {
         copy(Path.of(System.getProperty("tinysep.dist", "target/tinysep")), home);
         Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=0\nbindAddress=127.0.0.1\n");
         Files.writeString(home.resolve("etc/org.tinysep.sunspot.busradio.cfg"), "udpPort=0\nudpBindAddress=127.0.0.1\n");
-        httpPort = freeTcpPort(); // the web console on a port nobody holds (8080 may be another TinySEP's)
+        httpPort = Ports.freeTcp(); // the web console on a port nobody holds (8080 may be another TinySEP's)
         Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
                 "org.apache.felix.http.host=127.0.0.1\norg.osgi.service.http.port=" + httpPort + "\n");
     }
@@ -64,12 +65,6 @@ final class TestDistribution {
         return bannerNanos;
     }
 
-    static int freeTcpPort() throws IOException {
-        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1"))) {
-            return s.getLocalPort();
-        }
-    }
-
     /** Runs the time controller in real time (synchroniser on port 0), as process tests want it. @return this */
     TestDistribution realTime() throws IOException {
         Files.writeString(home.resolve("etc/org.tinysep.timecontroller.cfg"),
@@ -84,7 +79,7 @@ final class TestDistribution {
      * @return the bus radio's port
      */
     int realTimeAmicaRadio() throws IOException {
-        int port = AmicaSender.freeUdpPort();
+        int port = Ports.freeUdp();
         Files.writeString(home.resolve("etc/" + UDP_PID + ".cfg"), "port=" + port + "\nbindAddress=127.0.0.1\n");
         realTime();
         return port;
