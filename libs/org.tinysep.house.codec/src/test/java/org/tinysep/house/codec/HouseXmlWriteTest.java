@@ -30,7 +30,7 @@ class HouseXmlWriteTest {
 
     @Test
     void writesWhatJaxbWroteForTheCommittedFlats() throws Exception {
-        byte[] fig37 = java.nio.file.Files.readAllBytes(RepoFiles.require("bundles", "org.tinysep.houseinformation",
+        byte[] fig37 = java.nio.file.Files.readAllBytes(RepoFiles.require("bundles", "services", "org.tinysep.houseinformation",
                 "src", "test", "resources", "fig-3-7-house.xml"));
         assertEquals(new String(jaxb("fig37.xml"), StandardCharsets.UTF_8),
                 HouseXml.toString(HouseXml.read(fig37, "fig 3.7")));

@@ -63,7 +63,7 @@ class WebContractsInOnePlaceTest {
 
     private static List<Path> files(Path root, String extension) {
         List<Path> all = new ArrayList<>();
-        for (String top : List.of("bundles", "runtime")) {
+        for (String top : List.of("libs", "bundles", "runtime")) {
             try (Stream<Path> s = Files.walk(root.resolve(top))) {
                 s.filter(p -> p.getFileName().toString().endsWith("." + extension)).forEach(all::add);
             } catch (IOException e) {
