@@ -9,7 +9,7 @@ import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.tinysep.api.health.UnmonitoredRoom;
 import org.tinysep.api.service.InactivityAlert;
-import org.tinysep.inactivity.internal.learn.Words;
+import org.tinysep.inactivity.internal.learn.Amounts;
 
 /** The words of the help call: subject and body of the alert mail. */
 final class AlertMail {
@@ -85,7 +85,7 @@ final class AlertMail {
     }
 
     private static String quiet(InactivityAlert alert) {
-        return Words.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt()));
+        return Amounts.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt()));
     }
 
     private String unwatchedLine() {

@@ -5,7 +5,7 @@ import java.time.Instant;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.Limit;
 import org.tinysep.inactivity.internal.learn.Sighting;
-import org.tinysep.inactivity.internal.learn.Words;
+import org.tinysep.inactivity.internal.learn.Amounts;
 
 /** Sets the limit of the quiet period that an activity begins: fixed (THESIS) or learned (LEARNED). */
 interface LimitPolicy {
@@ -28,7 +28,7 @@ interface LimitPolicy {
     /** The thesis's fixed per-room limits. */
     static LimitPolicy thesis() {
         return (s, fixed, now) -> new Limit(fixed, false,
-                "fixed limit of " + Words.duration(fixed) + " for " + s.roomName() + " (detector THESIS)");
+                "fixed limit of " + Amounts.duration(fixed) + " for " + s.roomName() + " (detector THESIS)");
     }
 
     /** Learned limits; every activity is also learned from; answers reused until the next learning. */

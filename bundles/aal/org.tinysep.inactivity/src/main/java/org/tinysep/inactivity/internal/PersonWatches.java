@@ -20,7 +20,7 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.PersonWatch;
-import org.tinysep.inactivity.internal.learn.Words;
+import org.tinysep.inactivity.internal.learn.Amounts;
 import org.tinysep.inactivity.internal.person.PersonAlertWords;
 import org.tinysep.inactivity.internal.person.Wearers;
 
@@ -92,7 +92,7 @@ final class PersonWatches {
         }
         Activity a = w.basis == null
                 ? new Activity("", "unknown room", who + "'s pendant moved", s.end(), defaultLimit, "default limit "
-                        + Words.duration(defaultLimit) + ": " + who + " has not been seen in a room yet")
+                        + Amounts.duration(defaultLimit) + ": " + who + " has not been seen in a room yet")
                 : new Activity(w.basis.roomUid(), w.basis.roomName(), who + "'s pendant moved", s.end(),
                         w.basis.limit(), w.basis.explanation());
         w.logic.rebase(now);

@@ -102,7 +102,7 @@ final class Bridge {
             link = new Link(settings, topics, executor, session);
             link.signWith(key.key());
         } catch (MqttException | RuntimeException e) {
-            String why = "the MQTT client cannot be created for " + settings.brokerUrl() + ": " + Words.describe(e);
+            String why = "the MQTT client cannot be created for " + settings.brokerUrl() + ": " + Trouble.describe(e);
             LOG.warn("MQTT bridge not started: {}", why);
             status.accept(DeviceStatus.State.ERROR, why);
             return;
@@ -119,7 +119,7 @@ final class Bridge {
             try {
                 r.run();
             } catch (RuntimeException e) {
-                LOG.warn("MQTT bridge: {} failed, it goes on: {}", r, Words.describe(e));
+                LOG.warn("MQTT bridge: {} failed, it goes on: {}", r, Trouble.describe(e));
             }
         };
     }
@@ -182,7 +182,7 @@ final class Bridge {
                 }
             }).get(10, TimeUnit.SECONDS);
         } catch (Exception e) {
-            LOG.warn("MQTT bridge: stopping took too long ({}); stopped anyway", Words.describe(e));
+            LOG.warn("MQTT bridge: stopping took too long ({}); stopped anyway", Trouble.describe(e));
         } finally {
             executor.shutdownNow();
             try {

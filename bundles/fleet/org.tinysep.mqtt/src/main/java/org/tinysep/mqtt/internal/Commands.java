@@ -58,7 +58,7 @@ final class Commands {
         } catch (IllegalArgumentException e) {
             return no(e.getMessage());
         } catch (RuntimeException e) {
-            return no("the command failed: " + Words.describe(e));
+            return no("the command failed: " + Trouble.describe(e));
         }
     }
 

@@ -76,20 +76,20 @@ final class Link {
                 }
             });
         } catch (MqttException | RuntimeException e) {
-            executor.execute(() -> events.failed(gen, Words.connectFailure(e), Words.refused(e)));
+            executor.execute(() -> events.failed(gen, Trouble.connectFailure(e), Trouble.refused(e)));
         }
     }
 
     /** On the bridge's thread: a failure in words; for {@code ssl://} asks the broker for the TLS alert it hides. */
     private void failed(int gen, Throwable e) {
-        if (settings.tls() && Words.mayHideTlsAlert(e)) {
+        if (settings.tls() && Trouble.mayHideTlsAlert(e)) {
             java.util.Optional<String> refusal = TlsProbe.clientCertificateRefusal(settings);
             if (refusal.isPresent()) {
                 events.failed(gen, refusal.get(), true);
                 return;
             }
         }
-        events.failed(gen, Words.connectFailure(e), Words.refused(e));
+        events.failed(gen, Trouble.connectFailure(e), Trouble.refused(e));
     }
 
     private void subscribe(int gen) {
@@ -105,11 +105,11 @@ final class Link {
                 @Override
                 public void onFailure(IMqttToken token, Throwable e) {
                     executor.execute(() -> events.lost(gen, "the broker refused the command subscriptions: "
-                            + Words.describe(e)));
+                            + Trouble.describe(e)));
                 }
             }, new MqttProperties());
         } catch (MqttException | RuntimeException e) {
-            executor.execute(() -> events.lost(gen, "cannot subscribe to commands: " + Words.describe(e)));
+            executor.execute(() -> events.lost(gen, "cannot subscribe to commands: " + Trouble.describe(e)));
         }
     }
 
@@ -205,7 +205,7 @@ final class Link {
         public void disconnected(MqttDisconnectResponse response) {
             int gen = generation;
             String why = response.getReasonString() != null ? response.getReasonString()
-                    : response.getException() != null ? Words.describe(response.getException()) : "the broker closed it";
+                    : response.getException() != null ? Trouble.describe(response.getException()) : "the broker closed it";
             executor.execute(() -> events.lost(gen, why));
         }
 

@@ -38,7 +38,7 @@ final class TlsProbe {
             return Optional.empty();
         } catch (SSLException e) {
             String message = String.valueOf(e.getMessage());
-            return Words.aboutClientCertificate(message) ? Optional.of(Words.tls(message)) : Optional.empty();
+            return Trouble.aboutClientCertificate(message) ? Optional.of(Trouble.tls(message)) : Optional.empty();
         } catch (SocketTimeoutException e) {
             return Optional.empty(); // the broker waits for CONNECT: it took the certificate
         } catch (SocketException e) {

@@ -70,7 +70,7 @@ public final class AlertCommands {
         StringBuilder b = new StringBuilder();
         all.subList(Math.max(0, all.size() - Math.max(1, n)), all.size()).forEach(d -> b.append("#").append(d.id())
                 .append(' ').append(d.outcome()).append(" \"").append(d.subject()).append("\" to ")
-                .append(Words.who(d.to())).append(" (queued ").append(d.queuedAt()).append("): ").append(d.detail())
+                .append(AlertText.who(d.to())).append(" (queued ").append(d.queuedAt()).append("): ").append(d.detail())
                 .append('\n'));
         return b.toString().stripTrailing();
     }

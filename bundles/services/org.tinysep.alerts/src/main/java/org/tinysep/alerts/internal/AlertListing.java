@@ -24,7 +24,7 @@ final class AlertListing {
                         .append(a.id()).append(" \"your name\"\n");
             }
             for (Notification n : a.notifications()) {
-                b.append("    ").append(n.at()).append(' ').append(n.step()).append(" to ").append(Words.who(n.to()))
+                b.append("    ").append(n.at()).append(' ').append(n.step()).append(" to ").append(AlertText.who(n.to()))
                         .append(Notification.MAIL.equals(n.channel()) ? "" : " by " + ChannelSender.word(n.channel()))
                         .append(n.mailId().isEmpty() ? "" : Notification.MAIL.equals(n.channel())
                                 ? " (mail #" + n.mailId() + ")" : " (#" + n.mailId() + ")").append(": ")

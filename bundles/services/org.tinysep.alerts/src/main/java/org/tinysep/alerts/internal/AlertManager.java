@@ -67,7 +67,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
         this.clock = PlatformClock.tracking(context);
         this.book = new AlertBook(new AlertStore(file), log::problem);
         ContactBook contacts = problem == null ? ContactBook.parse(config.contacts()) : ContactBook.EMPTY;
-        this.notifier = new Notifier(s, contacts, this::channel, new Words(s.zone()), () -> mail, log::event,
+        this.notifier = new Notifier(s, contacts, this::channel, new AlertText(s.zone()), () -> mail, log::event,
                 log::problem);
         this.replies = new PhoneReplies(contacts, this, log::event, log::problem);
         this.summary = new DailySummary(context, s, StateFolder.resolve(null, context, "").orElse(file.getParent()),
@@ -159,7 +159,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
                 book.put(c);
                 boolean queued = c.notifications().size() > a.notifications().size();
                 log.event("alert " + a.id() + " cleared: " + why + (!wasOpen ? " (it was acknowledged; no all clear "
-                        + "sent)" : queued ? "; all clear queued to the Mail Manager for " + Words.who(notifier
+                        + "sent)" : queued ? "; all clear queued to the Mail Manager for " + AlertText.who(notifier
                         .toldSoFar(c)) + Notifier.QUEUED_NOTE : ""));
                 cleared.add(c);
             }

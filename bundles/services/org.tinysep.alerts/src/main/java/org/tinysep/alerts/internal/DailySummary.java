@@ -38,7 +38,7 @@ final class DailySummary implements AutoCloseable {
         this.context = context; // devices are read once a day, not held (issue 14: a stop of 10,000 devices)
         this.health = new ServiceTracker<>(context, SensorHealthProvider.class, null);
         this.health.open();
-        this.text = new SummaryText(new Words(settings.zone()), stateFolder);
+        this.text = new SummaryText(new AlertText(settings.zone()), stateFolder);
     }
 
     /** At activation: without a saved day, today's summary is due only if its time is still to come. */

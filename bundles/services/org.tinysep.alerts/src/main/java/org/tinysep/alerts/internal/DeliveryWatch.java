@@ -52,8 +52,8 @@ final class DeliveryWatch {
                 now.add(n.with(d.get().outcome(), d.get().detail()));
                 changed = true;
                 String which = n.step().name().toLowerCase().replace('_', ' ') + " message" + (Notification.MAIL
-                        .equals(n.channel()) && contacts.get(Words.who(n.to())).map(ContactBook.Contact::plain)
-                        .orElse(true) ? "" : " to " + Words.who(n.to()) + " by " + ChannelSender.word(n.channel()));
+                        .equals(n.channel()) && contacts.get(AlertText.who(n.to())).map(ContactBook.Contact::plain)
+                        .orElse(true) ? "" : " to " + AlertText.who(n.to()) + " by " + ChannelSender.word(n.channel()));
                 if (d.get().outcome() == MailDelivery.Outcome.SENT) {
                     events.accept("alert " + a.id() + ": its " + which + " was delivered (" + d.get().detail() + ")");
                 }

@@ -17,11 +17,11 @@ final class LateFallback {
 
     private final ContactBook contacts;
     private final ChannelSender sender;
-    private final Words words;
+    private final AlertText words;
     private final Consumer<String> events;
     private final Consumer<String> problems;
 
-    LateFallback(ContactBook contacts, ChannelSender sender, Words words, Consumer<String> events,
+    LateFallback(ContactBook contacts, ChannelSender sender, AlertText words, Consumer<String> events,
             Consumer<String> problems) {
         this.contacts = contacts;
         this.sender = sender;
@@ -31,7 +31,7 @@ final class LateFallback {
     }
 
     /** @return the subject of {@code a}'s message of {@code step} sent at {@code at} */
-    static String subject(Words words, Alert a, NotificationStep step, Instant at) {
+    static String subject(AlertText words, Alert a, NotificationStep step, Instant at) {
         return switch (step) {
             case FIRST -> words.firstSubject(a);
             case REPEAT -> words.repeatSubject(a, at);

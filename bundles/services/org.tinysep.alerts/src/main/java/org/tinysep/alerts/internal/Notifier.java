@@ -25,7 +25,7 @@ import org.tinysep.api.service.MailManagerProvider;
 final class Notifier {
 
     private final AlertSettings settings;
-    private final Words words;
+    private final AlertText words;
     private final Consumer<String> events;
     private final Consumer<String> problems;
     private final MessageDispatch dispatch;
@@ -35,13 +35,13 @@ final class Notifier {
     static final String QUEUED_NOTE = " (not delivered yet: its delivery or failure is logged when the Mail Manager "
             + "reports it)";
 
-    Notifier(AlertSettings settings, Words words, Supplier<MailManagerProvider> mail, Consumer<String> events,
+    Notifier(AlertSettings settings, AlertText words, Supplier<MailManagerProvider> mail, Consumer<String> events,
             Consumer<String> problems) {
         this(settings, ContactBook.EMPTY, s -> null, words, mail, events, problems);
     }
 
     /** @param channels the running {@link MessageChannel} of a scheme, or null */
-    Notifier(AlertSettings settings, ContactBook contacts, Function<String, MessageChannel> channels, Words words,
+    Notifier(AlertSettings settings, ContactBook contacts, Function<String, MessageChannel> channels, AlertText words,
             Supplier<MailManagerProvider> mail, Consumer<String> events, Consumer<String> problems) {
         ChannelSender sender = new ChannelSender(mail, channels);
         this.dispatch = new MessageDispatch(contacts, sender, mail);
@@ -57,7 +57,7 @@ final class Notifier {
         return settings;
     }
 
-    Words words() {
+    AlertText words() {
         return words;
     }
 
@@ -85,17 +85,17 @@ final class Notifier {
             case FIRST -> "alert " + a.id() + ": first message";
             case REPEAT -> "alert " + a.id() + " not acknowledged: repeat";
             case ESCALATION -> "alert " + a.id() + " not acknowledged: passed on to the next contact, "
-                    + Words.who(step.to()) + " (contact " + step.reached() + " of " + settings.contacts().size()
+                    + AlertText.who(step.to()) + " (contact " + step.reached() + " of " + settings.contacts().size()
                     + ")";
             case ALL_CLEAR -> "alert " + a.id() + ": all clear";
         };
         if (d.mailed() != null) {
             // the Mail Manager only queued it: say so; what became of it is logged when the Mail Manager knows
             events.accept(switch (step.step()) {
-                case FIRST -> prefix + " queued to the Mail Manager for " + Words.who(d.mailed());
-                case REPEAT -> prefix + " queued to the Mail Manager for " + Words.who(d.mailed());
+                case FIRST -> prefix + " queued to the Mail Manager for " + AlertText.who(d.mailed());
+                case REPEAT -> prefix + " queued to the Mail Manager for " + AlertText.who(d.mailed());
                 case ESCALATION -> prefix + ", message queued to the Mail Manager";
-                case ALL_CLEAR -> prefix + " queued to the Mail Manager for " + Words.who(d.mailed());
+                case ALL_CLEAR -> prefix + " queued to the Mail Manager for " + AlertText.who(d.mailed());
             } + QUEUED_NOTE);
         }
         tell(prefix, d);

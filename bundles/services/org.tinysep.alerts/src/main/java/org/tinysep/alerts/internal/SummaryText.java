@@ -19,10 +19,10 @@ import org.tinysep.api.log.EventEntry;
 /** The words of the daily summary: open alerts, devices offline or failing, disk use of the state folder. */
 final class SummaryText {
 
-    private final Words words;
+    private final AlertText words;
     private final Path stateFolder;
 
-    SummaryText(Words words, Path stateFolder) {
+    SummaryText(AlertText words, Path stateFolder) {
         this.words = words;
         this.stateFolder = stateFolder;
     }

@@ -75,7 +75,7 @@ class ContactChannelsTest {
         List<String> events = new ArrayList<>();
         AlertSettings s = new AlertSettings(List.of("Eva", "plain@example.org"), 10, 15, LocalTime.of(8, 0),
                 ZoneOffset.UTC);
-        Notifier n = new Notifier(s, ContactBook.parse(LIST), channels::get, new Words(ZoneOffset.UTC), () -> null,
+        Notifier n = new Notifier(s, ContactBook.parse(LIST), channels::get, new AlertText(ZoneOffset.UTC), () -> null,
                 events::add, events::add);
         Alert a = Copies.raised("3", new AlertRequest(AlertKind.INACTIVITY, "inactivity", "r1", "Bathroom", T,
                 "TinySEP: no activity in Bathroom since 02:15", "text"));
@@ -99,7 +99,7 @@ class ContactChannelsTest {
         List<String> events = new ArrayList<>();
         AlertSettings s = new AlertSettings(List.of("Eva"), 10, 15, null, ZoneOffset.UTC);
         Notifier n = new Notifier(s, ContactBook.parse("Eva <sms:+4915112345678 mail:eva@example.org>"),
-                k -> null, new Words(ZoneOffset.UTC), () -> null, events::add, events::add);
+                k -> null, new AlertText(ZoneOffset.UTC), () -> null, events::add, events::add);
         Alert a = Copies.raised("4", new AlertRequest(AlertKind.HELP, "help", "", "", T, "TinySEP: help", ""));
         a = n.send(a, new Escalation.Step(NotificationStep.FIRST, List.of("Eva"), 1), T);
         assertEquals(2, a.notifications().size());
@@ -117,7 +117,7 @@ class ContactChannelsTest {
         List<String> events = new ArrayList<>();
         AlertSettings s = new AlertSettings(List.of("Eva"), 10, 15, null, ZoneOffset.UTC);
         Notifier n = new Notifier(s, ContactBook.parse("Eva <sms:+4915112345678 push:eva-topic>"), channels::get,
-                new Words(ZoneOffset.UTC), () -> null, events::add, events::add);
+                new AlertText(ZoneOffset.UTC), () -> null, events::add, events::add);
         Alert a = Copies.raised("5", new AlertRequest(AlertKind.FALL, "fall", "", "", T, "TinySEP: fall", ""));
         a = n.send(a, new Escalation.Step(NotificationStep.FIRST, List.of("Eva"), 1), T);
         assertEquals(1, a.notifications().size());

@@ -76,7 +76,7 @@ class NotifierTest {
 
     private final Mail mail = new Mail();
     private final List<String> events = new ArrayList<>();
-    private final Notifier notifier = new Notifier(S, new Words(ZoneOffset.UTC), () -> mail, events::add,
+    private final Notifier notifier = new Notifier(S, new AlertText(ZoneOffset.UTC), () -> mail, events::add,
             events::add);
 
     @Test

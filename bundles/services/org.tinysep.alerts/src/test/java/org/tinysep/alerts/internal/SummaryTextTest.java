@@ -25,7 +25,7 @@ class SummaryTextTest {
 
     @Test
     void lowBatteriesAreNamedWithTheirRoomAndVoltage() {
-        SummaryText text = new SummaryText(new Words(ZoneOffset.UTC), state);
+        SummaryText text = new SummaryText(new AlertText(ZoneOffset.UTC), state);
         NodeHealth low = new NodeHealth("bus-1", "1.21", Set.of("movement"), true, NOW, null, Duration.ofSeconds(2),
                 2150, true, 10, 10, 0);
         String body = text.body(NOW, NOW, false, List.of(), List.of(),
@@ -38,7 +38,7 @@ class SummaryTextTest {
 
     @Test
     void withoutSensorHealthTheSummarySaysItCannotKnow() {
-        String body = new SummaryText(new Words(ZoneOffset.UTC), state).body(NOW, NOW, false, List.of(), List.of(),
+        String body = new SummaryText(new AlertText(ZoneOffset.UTC), state).body(NOW, NOW, false, List.of(), List.of(),
                 null, List.of());
         assertTrue(body.contains("Low batteries: not known (Sensor Health, which reads the nodes' battery levels, is "
                 + "not running)"), body);
@@ -46,11 +46,11 @@ class SummaryTextTest {
 
     @Test
     void monitoringReducedSinceTheLastSummaryIsListedInPlainWords() {
-        SummaryText text = new SummaryText(new Words(ZoneOffset.UTC), state);
+        SummaryText text = new SummaryText(new AlertText(ZoneOffset.UTC), state);
         EventEntry e = new EventEntry(7, NOW, EventKind.PROBLEM, "drivers-list", "Monitoring reduced: Inactivity "
                 + "Recognition (org.tinysep.inactivity) was stopped: nobody is told if the person stops moving");
         String body = text.body(NOW, NOW, false, List.of(), List.of(), List.of(), List.of(e));
-        assertTrue(body.contains("\nMonitoring reduced since the last summary: 1\n  " + new Words(ZoneOffset.UTC).fullTime(NOW) + ": "
+        assertTrue(body.contains("\nMonitoring reduced since the last summary: 1\n  " + new AlertText(ZoneOffset.UTC).fullTime(NOW) + ": "
                 + "Inactivity Recognition (org.tinysep.inactivity) was stopped"), body);
         assertTrue(text.body(NOW, NOW, false, List.of(), List.of(), List.of(), List.of())
                 .contains("\nMonitoring reduced since the last summary: nothing\n"));

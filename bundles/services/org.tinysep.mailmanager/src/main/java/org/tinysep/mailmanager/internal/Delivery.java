@@ -83,7 +83,7 @@ final class Delivery {
         List<String> failures = new ArrayList<>(); // reported once the spool says the same
         if (!a.permanent().isEmpty()) {
             now = now.failing(List.copyOf(a.permanent().keySet()));
-            failures.add(Words.failed(now, a.permanent(), "refused for good by the server, not retried", ""));
+            failures.add(MailText.failed(now, a.permanent(), "refused for good by the server, not retried", ""));
         }
         if (a.temporary().isEmpty()) {
             return finish(now, failures);
@@ -93,7 +93,7 @@ final class Delivery {
         Duration age = Duration.between(first, wallNow);
         if (age.getSeconds() >= settings.giveUpAfterSeconds()) {
             now = now.failing(List.copyOf(a.temporary().keySet()));
-            failures.add(Words.failed(now, a.temporary(), "given up after " + Words.duration(age) + " of retrying",
+            failures.add(MailText.failed(now, a.temporary(), "given up after " + MailText.duration(age) + " of retrying",
                     "last reply: "));
             return finish(now, failures);
         }
@@ -108,9 +108,9 @@ final class Delivery {
         Backoff failed = backoff.failed();
         long delay = Math.max(1, Math.min(failed.delaySeconds(), left)); // the last try comes at the give-up age
         Instant at = clock.get().plusSeconds(delay);
-        events.retrying(m, Words.retrying(m, a.temporary(), at, delay));
-        return new Next(retry, delay, Words.mail(m) + " not delivered yet to " + Words.replies(a.temporary())
-                + "; attempt " + failed.failures() + " failed, next try at " + Words.time(at) + " (in " + delay
+        events.retrying(m, MailText.retrying(m, a.temporary(), at, delay));
+        return new Next(retry, delay, MailText.mail(m) + " not delivered yet to " + MailText.replies(a.temporary())
+                + "; attempt " + failed.failures() + " failed, next try at " + MailText.time(at) + " (in " + delay
                 + " s)", a.serverWide(), failed);
     }
 

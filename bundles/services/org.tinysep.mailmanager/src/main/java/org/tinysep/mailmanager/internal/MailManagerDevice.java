@@ -131,7 +131,7 @@ final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
     public void queued(MailMessage m, List<String> recipients) {
         deliveries.update(m, recipients, MailDelivery.Outcome.QUEUED, "queued for " + String.join(", ", recipients),
                 now());
-        event(Words.mail(m) + " queued for " + String.join(", ", recipients));
+        event(MailText.mail(m) + " queued for " + String.join(", ", recipients));
     }
 
     @Override
@@ -139,7 +139,7 @@ final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
         sent.incrementAndGet();
         deliveries.update(m, recipients, MailDelivery.Outcome.SENT, "delivered to " + String.join(", ", recipients),
                 now());
-        event(Words.mail(m) + " delivered to " + String.join(", ", recipients));
+        event(MailText.mail(m) + " delivered to " + String.join(", ", recipients));
     }
 
     @Override
@@ -167,7 +167,7 @@ final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
                 + (configProblem == null ? MailHealth.NO_HOST : "bad configuration: " + configProblem) + ")", now());
         MAIL.warn("Mail Manager {}: mail not sent, written here instead. Subject: {}\n{}",
                 configProblem == null ? "has no SMTP host" : "is misconfigured", m.subject(), m.body());
-        event(Words.mail(m) + " NOT mailed, only written to the log ("
+        event(MailText.mail(m) + " NOT mailed, only written to the log ("
                 + (configProblem == null ? MailHealth.NO_HOST : "bad configuration: " + configProblem) + ")");
     }
 

@@ -23,9 +23,9 @@ public record Learned(String roomName, boolean asleep, String scope, Duration us
      *         limit 1 h 10 min = usual x 1.5 + 10 min, at least 20 min"
      */
     public String explain(LearningSettings s) {
-        return "usually at most " + Words.duration(usual) + " " + scope + (asleep ? " asleep" : "") + " in "
-                + roomName + ", from " + Words.count(days, "day") + " (" + Words.count(periods, "quiet period") + "); limit "
-                + Words.duration(limit) + " = usual x " + Words.factor(s.margin()) + " + " + Words.duration(s.pad())
-                + ", at least " + Words.duration(s.floor());
+        return "usually at most " + Amounts.duration(usual) + " " + scope + (asleep ? " asleep" : "") + " in "
+                + roomName + ", from " + Amounts.count(days, "day") + " (" + Amounts.count(periods, "quiet period") + "); limit "
+                + Amounts.duration(limit) + " = usual x " + Amounts.factor(s.margin()) + " + " + Amounts.duration(s.pad())
+                + ", at least " + Amounts.duration(s.floor());
     }
 }

@@ -51,18 +51,18 @@ public final class LearnedLimits {
     static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
         int longer = learned.limit().compareTo(fixed);
         if (longer > 0 && l.allDay()) {
-            return new Limit(fixed, learned.asleep(), "fixed limit of " + Words.duration(fixed) + " for "
+            return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                     + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
-                    + Words.duration(learned.limit()) + ", but only from other hours of the day (at these hours "
-                    + "there are quiet periods on fewer than " + Words.count(set.minDays(), "day")
+                    + Amounts.duration(learned.limit()) + ", but only from other hours of the day (at these hours "
+                    + "there are quiet periods on fewer than " + Amounts.count(set.minDays(), "day")
                     + "), and a longer limit must be learned from the hours it is used at (" + l.explain(set) + ")");
         }
         if (longer >= 0 || l.periods() >= set.minPeriodsToShorten()) {
             return learned;
         }
-        return new Limit(fixed, learned.asleep(), "fixed limit of " + Words.duration(fixed) + " for "
+        return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                 + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would shorten it to "
-                + Words.duration(learned.limit()) + ", but only " + Words.count(l.periods(), "quiet period")
+                + Amounts.duration(learned.limit()) + ", but only " + Amounts.count(l.periods(), "quiet period")
                 + " support that and a shorter limit needs at least " + set.minPeriodsToShorten()
                 + " (" + l.explain(set) + ")");
     }
@@ -72,18 +72,18 @@ public final class LearnedLimits {
         double z = Math.sqrt((double) l.days() / set.minDays());
         long secs = Math.round(z * l.limit().getSeconds() + (1 - z) * fixed.getSeconds());
         Duration d = Duration.ofSeconds(Math.max(secs, set.floor().getSeconds()));
-        return new Limit(d, asleep, "limit " + Words.duration(d) + " = " + Math.round(100 * z) + " % of what "
-                + Words.count(l.days(), "day") + " of history taught (" + l.explain(set) + ") and "
-                + Math.round(100 * (1 - z)) + " % of the fixed limit of " + Words.duration(fixed) + " for "
-                + s.roomName() + (asleep ? " asleep" : "") + ": fewer than " + Words.count(set.minDays(), "day")
+        return new Limit(d, asleep, "limit " + Amounts.duration(d) + " = " + Math.round(100 * z) + " % of what "
+                + Amounts.count(l.days(), "day") + " of history taught (" + l.explain(set) + ") and "
+                + Math.round(100 * (1 - z)) + " % of the fixed limit of " + Amounts.duration(fixed) + " for "
+                + s.roomName() + (asleep ? " asleep" : "") + ": fewer than " + Amounts.count(set.minDays(), "day")
                 + " of history yet, so the fixed limit still counts (weight of the history = square root of "
                 + l.days() + "/" + set.minDays() + ")");
     }
 
     private Limit coldStart(Sighting s, Duration fixed, boolean asleep, LearningSettings set) {
         Duration d = fixed;
-        return new Limit(d, asleep, "fixed limit of " + Words.duration(d) + " for " + s.roomName()
-                + (asleep ? " asleep" : "") + ": fewer than " + Words.count(set.minDays(), "day") + " of history for this room"
+        return new Limit(d, asleep, "fixed limit of " + Amounts.duration(d) + " for " + s.roomName()
+                + (asleep ? " asleep" : "") + ": fewer than " + Amounts.count(set.minDays(), "day") + " of history for this room"
                 + (asleep ? " asleep" : "") + " yet, so nothing is learned");
     }
 

@@ -5,7 +5,7 @@ import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 import java.time.Instant;
 import org.tinysep.api.service.InactivityAlert;
-import org.tinysep.inactivity.internal.learn.Words;
+import org.tinysep.inactivity.internal.learn.Amounts;
 
 /** The words of a wearer's own inactivity alert: subject and body, and its line in the event log. */
 public final class PersonAlertWords {
@@ -39,7 +39,7 @@ public final class PersonAlertWords {
     private String still(Wearers.View w, InactivityAlert alert) {
         return (w.everMoved() ? "has been still since " : "has not moved since it was first heard at ")
                 + clock.format(w.lastMovement()) + " ("
-                + Words.duration(Duration.between(w.lastMovement(), alert.raisedAt())) + ")";
+                + Amounts.duration(Duration.between(w.lastMovement(), alert.raisedAt())) + ")";
     }
 
     private static String meanwhile(Wearers.View w) {
@@ -59,7 +59,7 @@ public final class PersonAlertWords {
                 + "Last seen in: " + room + "\n"
                 + "Pendant: " + still(w, alert) + "\n"
                 + "Last activity: " + alert.lastActivity() + " at " + full.format(alert.lastActivityAt()) + "\n"
-                + "Quiet for: " + Words.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt())) + "\n"
+                + "Quiet for: " + Amounts.duration(Duration.between(alert.lastActivityAt(), alert.raisedAt())) + "\n"
                 + (alert.explanation().isEmpty() ? "" : "Why this is unusual: " + alert.explanation() + "\n")
                 + (m.isEmpty() ? "" : "M" + m.substring(3) + ".\n")
                 + "Alert raised at: " + full.format(alert.raisedAt()) + "\n\n"

@@ -134,7 +134,7 @@ final class BoardClient implements MqttCallback, AutoCloseable {
     /** @return the time now in words ("14:02"), in the board's zone */
     private String now() {
         Instant now = Instant.now(clock);
-        return Words.time(now, now, clock.getZone());
+        return BoardTime.time(now, now, clock.getZone());
     }
 
     @Override

@@ -57,7 +57,7 @@ final class BoardView {
         j.key("alerts").open('[');
         for (Entry e : s.alerts()) {
             AlertMessage a = e.alert();
-            j.open('{').field("id", a.id()).field("kind", a.kind()).field("kindWords", Words.kind(a.kind()))
+            j.open('{').field("id", a.id()).field("kind", a.kind()).field("kindWords", BoardTime.kind(a.kind()))
                     .field("state", a.state()).field("title", a.title())
                     .field("room", a.room()).field("raisedAt", a.raisedAt() == null ? null : a.raisedAt().toString())
                     .field("seq", a.seq()).field("explanation", alertWords(s.id(), e, rules, now)).close('}');
@@ -88,21 +88,21 @@ final class BoardView {
     /** @return e.g. "Fall? in Bedroom, raised at 14:02: … — acknowledgement sent by Eva at 14:05, waiting for the flat" */
     static String alertWords(String flat, Entry e, Rules rules, Instant now) {
         AlertMessage a = e.alert();
-        StringBuilder b = new StringBuilder("Flat ").append(flat).append(": ").append(a.title().isEmpty() ? Words.kind(a.kind()) : a.title());
+        StringBuilder b = new StringBuilder("Flat ").append(flat).append(": ").append(a.title().isEmpty() ? BoardTime.kind(a.kind()) : a.title());
         if (!a.room().isEmpty()) {
             b.append(" in ").append(a.room());
         }
-        b.append(", raised at ").append(Words.time(a.raisedAt(), now, rules.zone()));
+        b.append(", raised at ").append(BoardTime.time(a.raisedAt(), now, rules.zone()));
         if (!a.text().isEmpty()) {
             b.append(": ").append(a.text());
         }
         switch (a.state()) {
             case "OPEN" -> b.append(e.ackSentAt() == null ? " — not acknowledged yet"
-                    : " — acknowledgement sent by " + e.ackSentBy() + " at " + Words.time(e.ackSentAt(), now, rules.zone())
+                    : " — acknowledgement sent by " + e.ackSentBy() + " at " + BoardTime.time(e.ackSentAt(), now, rules.zone())
                     + ", waiting for the flat to confirm it");
             case "ACKNOWLEDGED" -> b.append(" — acknowledged by ").append(a.acknowledgedBy().isEmpty() ? "someone" : a.acknowledgedBy())
-                    .append(" at ").append(Words.time(a.acknowledgedAt(), now, rules.zone()))
-                    .append(e.confirmedAt() == null ? "" : "; the flat confirmed it at " + Words.time(e.confirmedAt(), now, rules.zone()));
+                    .append(" at ").append(BoardTime.time(a.acknowledgedAt(), now, rules.zone()))
+                    .append(e.confirmedAt() == null ? "" : "; the flat confirmed it at " + BoardTime.time(e.confirmedAt(), now, rules.zone()));
             default -> b.append(" — cleared at the flat (its cause ended or it was dealt with)");
         }
         return b.toString();

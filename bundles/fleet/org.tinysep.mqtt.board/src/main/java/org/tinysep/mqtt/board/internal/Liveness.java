@@ -26,7 +26,7 @@ final class Liveness {
     static Verdict judge(Snapshot f, Rules r, Instant now) {
         String name = "Flat " + f.id();
         if ("offline".equals(f.status())) {
-            return new Verdict(Status.OFFLINE, name + ": platform offline since " + Words.time(f.statusAt(), now, r.zone())
+            return new Verdict(Status.OFFLINE, name + ": platform offline since " + BoardTime.time(f.statusAt(), now, r.zone())
                     + " — it stopped, or its link to the broker died and the broker published its Last Will"
                     + lastWords(f, r, now));
         }
@@ -35,25 +35,25 @@ final class Liveness {
             Duration quiet = Duration.between(f.heartbeatHeard(), now);
             if (quiet.compareTo(period.multipliedBy(r.missedHeartbeats())) > 0) {
                 return new Verdict(Status.SILENT, name + ": platform silent since "
-                        + Words.time(f.heartbeatHeard(), now, r.zone()) + " — no heartbeat for " + Words.duration(quiet)
-                        + " (it sends one every " + Words.duration(period) + ")" + lastWords(f, r, now));
+                        + BoardTime.time(f.heartbeatHeard(), now, r.zone()) + " — no heartbeat for " + BoardTime.duration(quiet)
+                        + " (it sends one every " + BoardTime.duration(period) + ")" + lastWords(f, r, now));
             }
         }
         Instant summaryRef = f.summaryHeard() != null ? f.summaryHeard()
                 : f.platform() != null && f.platform().startedAt() != null ? f.platform().startedAt() : f.firstHeard();
         Duration sinceSummary = Duration.between(summaryRef, now);
         if (f.status() != null && sinceSummary.compareTo(Duration.ofHours(r.summaryHours())) > 0) {
-            String which = f.summaryHeard() == null ? "no daily summary since " + Words.time(summaryRef, now, r.zone())
-                    : "no daily summary for " + Words.duration(sinceSummary) + " (the last one at "
-                    + Words.time(summaryRef, now, r.zone()) + ")";
+            String which = f.summaryHeard() == null ? "no daily summary since " + BoardTime.time(summaryRef, now, r.zone())
+                    : "no daily summary for " + BoardTime.duration(sinceSummary) + " (the last one at "
+                    + BoardTime.time(summaryRef, now, r.zone()) + ")";
             return new Verdict(Status.SILENT, name + ": platform silent — " + which + ", more than "
                     + r.summaryHours() + " h" + lastWords(f, r, now));
         }
         if ("online".equals(f.status())) {
             String beat = f.platform() == null ? "no heartbeat yet"
-                    : "last heartbeat at " + Words.time(f.heartbeatHeard(), now, r.zone()) + " (one every "
-                    + Words.duration(Duration.ofSeconds(f.platform().heartbeatSeconds())) + ")";
-            return new Verdict(Status.ONLINE, name + ": online since " + Words.time(f.statusAt(), now, r.zone()) + ", " + beat);
+                    : "last heartbeat at " + BoardTime.time(f.heartbeatHeard(), now, r.zone()) + " (one every "
+                    + BoardTime.duration(Duration.ofSeconds(f.platform().heartbeatSeconds())) + ")";
+            return new Verdict(Status.ONLINE, name + ": online since " + BoardTime.time(f.statusAt(), now, r.zone()) + ", " + beat);
         }
         return new Verdict(Status.UNKNOWN, name + ": no status yet — the board has not seen its platform say online or"
                 + " offline" + lastWords(f, r, now));
@@ -63,6 +63,6 @@ final class Liveness {
         if (f.lastWordsAt() == null) {
             return "; it has said nothing else";
         }
-        return "; its last words: " + f.lastWords() + " at " + Words.time(f.lastWordsAt(), now, r.zone());
+        return "; its last words: " + f.lastWords() + " at " + BoardTime.time(f.lastWordsAt(), now, r.zone());
     }
 }

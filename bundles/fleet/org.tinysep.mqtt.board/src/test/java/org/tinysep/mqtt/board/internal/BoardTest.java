@@ -115,8 +115,8 @@ class BoardTest {
         assertEquals("Flat 17: fall (the person may have fallen) in Bedroom, raised at 14:00: a fall of Anna was "
                 + "detected at 14:00; last seen in the Bathroom at 13:59 by its motion sensor — not acknowledged yet",
                 BoardView.alertWords("17", only("17"), RULES, now));
-        assertEquals("help button (the person asked for help)", Words.kind("HELP"));
-        assertEquals("something new", Words.kind("SOMETHING_NEW"));
+        assertEquals("help button (the person asked for help)", BoardTime.kind("HELP"));
+        assertEquals("something new", BoardTime.kind("SOMETHING_NEW"));
     }
 
     @Test

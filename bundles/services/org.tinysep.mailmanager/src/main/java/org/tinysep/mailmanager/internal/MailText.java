@@ -10,13 +10,13 @@ import java.util.List;
 import java.util.Map;
 
 /** The plain words of the Mail Manager's event-log entries and status details. */
-final class Words {
+final class MailText {
 
     /** Same zone as the event log's time stamps (UTC), so "retrying at" can be compared with them. */
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("HH:mm:ss 'UTC'")
             .withZone(ZoneOffset.UTC);
 
-    private Words() {
+    private MailText() {
     }
 
     /** @return e.g. {@code 13:42:05 UTC} */

@@ -8,12 +8,12 @@ import java.util.List;
 import org.tinysep.api.alert.Alert;
 
 /** The plain words of alert messages and event-log entries. */
-final class Words {
+final class AlertText {
 
     private final DateTimeFormatter clock;
     private final DateTimeFormatter full;
 
-    Words(ZoneId zone) {
+    AlertText(ZoneId zone) {
         this.clock = DateTimeFormatter.ofPattern("HH:mm").withZone(zone);
         this.full = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss z").withZone(zone);
     }

@@ -4,9 +4,9 @@ import java.time.Duration;
 import java.util.Locale;
 
 /** Durations and numbers in plain words. */
-public final class Words {
+public final class Amounts {
 
-    private Words() {
+    private Amounts() {
     }
 
     /** @return e.g. "40 min", "2 h", "1 h 10 min", "45 s" */

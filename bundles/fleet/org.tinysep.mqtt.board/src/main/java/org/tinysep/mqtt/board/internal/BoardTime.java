@@ -6,12 +6,12 @@ import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 
 /** Times and durations in the words the board shows. */
-final class Words {
+final class BoardTime {
 
     private static final DateTimeFormatter CLOCK = DateTimeFormatter.ofPattern("HH:mm");
     private static final DateTimeFormatter DAY = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm");
 
-    private Words() {
+    private BoardTime() {
     }
 
     /** @return "14:02" when on the same day as {@code now}, else "2026-11-24 14:02" */

@@ -7,14 +7,14 @@ import javax.net.ssl.SSLException;
 import org.eclipse.paho.mqttv5.common.MqttException;
 
 /** Connection trouble in plain words, for the bridge device's status and one log line (never a stack trace). */
-final class Words {
+final class Trouble {
 
     /** TLS alerts a broker sends about the client's certificate (received fatal alert: …). */
     private static final java.util.List<String> CLIENT_CERTIFICATE_ALERTS = java.util.List.of("unknown_ca",
             "bad_certificate", "certificate_unknown", "unsupported_certificate", "certificate_expired",
             "certificate_revoked", "access_denied");
 
-    private Words() {
+    private Trouble() {
     }
 
     /** @return whether the broker refused us (login, authorisation, client id): retrying will not help */
