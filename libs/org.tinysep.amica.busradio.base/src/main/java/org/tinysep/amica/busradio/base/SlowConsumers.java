@@ -98,16 +98,14 @@ public final class SlowConsumers implements AutoCloseable {
     }
 
     /**
-     * Waits until every listener not known to be slow has been given what was queued for it before this call (not
-     * what comes meanwhile), at most {@code max}.
+     * Waits until every listener not known to be slow has taken what was queued for it, at most {@code max}.
      *
      * @return whether all of them had
      */
     public boolean awaitIdle(Duration max) {
         long end = System.nanoTime() + max.toNanos();
         for (Lane l : lanes) {
-            long target = l.enqueued.get();
-            while (l.delivered.get() < target && !l.closed && !l.slow()) {
+            while (!l.idle() && !l.slow()) {
                 if (System.nanoTime() - end >= 0) {
                     return false;
                 }
@@ -131,11 +129,8 @@ public final class SlowConsumers implements AutoCloseable {
         private final ArrayBlockingQueue<Item> queue = new ArrayBlockingQueue<>(capacity);
         private final AtomicBoolean scheduled = new AtomicBoolean();
         private final AtomicLong droppedHere = new AtomicLong();
-        private volatile long lastDrop;
         private volatile long busySince; // 0 while not delivering
         private volatile boolean closed;
-        private final AtomicLong enqueued = new AtomicLong();
-        private final AtomicLong delivered = new AtomicLong();
         private long unreported; // guarded by this
         private long lastReport = System.nanoTime() - REPORT_NANOS;
         private Instant since;
@@ -147,11 +142,8 @@ public final class SlowConsumers implements AutoCloseable {
 
         @Override
         public void payloadReceived(BusRadioAmicaProvider source, byte[] payload, Instant at) {
-            if (queue.offer(new Item(source, payload, at))) {
-                enqueued.incrementAndGet();
-            } else {
+            if (!queue.offer(new Item(source, payload, at))) {
                 droppedHere.incrementAndGet();
-                lastDrop = System.nanoTime();
                 dropped.incrementAndGet();
                 drop(at);
             }
@@ -179,17 +171,19 @@ public final class SlowConsumers implements AutoCloseable {
                     } catch (RuntimeException | LinkageError e) {
                         LOG.warn("Listener {} of {} failed: {}", listener.getClass().getName(), owner, e.toString());
                     }
-                    delivered.incrementAndGet();
                 }
                 scheduled.set(false);
             } while (!queue.isEmpty() && scheduled.compareAndSet(false, true));
         }
 
-        /** @return whether it dropped payloads in the last 10 s or has been on one payload for over a second */
+        boolean idle() {
+            return queue.isEmpty() && busySince == 0;
+        }
+
+        /** @return whether it dropped payloads or has been on one payload for over a second */
         boolean slow() {
             long b = busySince;
-            long now = System.nanoTime();
-            return (droppedHere.get() > 0 && now - lastDrop < 10_000_000_000L) || (b != 0 && now - b > 1_000_000_000L);
+            return droppedHere.get() > 0 || (b != 0 && System.nanoTime() - b > 1_000_000_000L);
         }
 
         private synchronized void drop(Instant at) {

@@ -83,9 +83,7 @@ class SlowConsumersTest {
             byte[] motion = AmicaPayloads.encode(new MotionDetection(true));
             int sent = 0;
             while (sent < 2 * FRAMES_PER_NODE && System.nanoTime() < deadline) {
-                if (sent - read.get() >= 100 || sent / 2 - fastCalls.get() >= QUEUE / 2) {
-                    // at most 100 in flight (no kernel drops) and the healthy listener's queue never full: as fast
-                    // as the receive loop and the healthy listener take them; the sleeper sets no pace
+                if (sent - read.get() >= 100) { // at most 100 in flight: no kernel drops, as fast as the loop takes
                     Thread.onSpinWait();
                     continue;
                 }
