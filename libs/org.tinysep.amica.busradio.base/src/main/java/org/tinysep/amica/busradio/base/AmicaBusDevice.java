@@ -75,7 +75,6 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     private final NodeWatch watch;
     private final BatteryWatch battery = new BatteryWatch();
     private final NodeTypeGuard guard = new NodeTypeGuard();
-    private volatile SlowConsumers delivery;
 
     /**
      * @param type  the device type, e.g. {@code BusRadioAmicaUdp}; the UID derives from the driver name and the
@@ -108,14 +107,6 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     /** Sets the health settings (silence, low battery); the node table passes its bus radio's. */
     public void policy(NodePolicy policy) {
         this.policy = policy;
-    }
-
-    /**
-     * Listeners connected from now on get their payloads through their own queue of {@code delivery}, so a slow one
-     * cannot stall the receive thread (issue 29); null (the default) calls them on the receive thread.
-     */
-    public void delivery(SlowConsumers delivery) {
-        this.delivery = delivery;
     }
 
     /** Sets the real time a node must also be silent for (see {@code NodeWatch.realSilenceGuard}). */
@@ -204,7 +195,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             NodeTypeGuard.Claim claim = new NodeTypeGuard.Claim(types, ka, link.describe(from));
             if (guard.mismatch(claim)) {
                 String problem = NodeTypeGuard.problem("AmICA node " + address, nodeTypes, claim,
-                        NodeTypeGuard.dependents(listeners.connected().stream().map(SlowConsumers::unwrap).toList()), uid(),
+                        NodeTypeGuard.dependents(listeners.connected()), uid(),
                         guard.reportsExhausted());
                 LOG.warn("{}", problem);
                 context.reporter().event(EventKind.PROBLEM, uid(), problem);
@@ -315,20 +306,17 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
      */
     @Override
     public Connection connect(BusRadioAmicaListener listener) {
-        SlowConsumers d = delivery;
-        BusRadioAmicaListener target = d == null ? listener : d.guard(listener, "AmICA node " + address);
         synchronized (handover) {
-            Connection connection = listeners.add(target);
-            for (Handover.Held h : handover.claim()) { // through its queue too: replays before live payloads
+            Connection connection = listeners.add(listener);
+            for (Handover.Held h : handover.claim()) {
                 try {
-                    target.payloadReceived(this, h.payload().clone(), h.at());
+                    listener.payloadReceived(this, h.payload().clone(), h.at());
                 } catch (RuntimeException e) {
                     LOG.warn("Listener {} of {} failed on a replayed payload: {}", listener.getClass().getName(), uid(),
                             e.toString());
                 }
             }
-            return d == null ? new HandoverConnection(connection, handover)
-                    : new HandoverConnection(connection, handover, () -> d.stop(target));
+            return new HandoverConnection(connection, handover);
         }
     }
 

@@ -59,7 +59,6 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private final AtomicLong overCap = new AtomicLong();
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
     private volatile java.time.Duration realSilenceGuard = java.time.Duration.ZERO;
-    private volatile SlowConsumers delivery;
 
     /**
      * @param deviceType the type of the bus devices, e.g. {@code BusRadioAmicaUdp}
@@ -89,15 +88,6 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         nodes.values().forEach(d -> d.realSilenceGuard(guard));
     }
 
-    /**
-     * Bus devices created from now on hand payloads to each listener through its own queue of {@code delivery}
-     * (a slow consumer never stalls the receive thread); set before the first node is created or restored.
-     */
-    public void delivery(SlowConsumers delivery) {
-        this.delivery = delivery;
-        nodes.values().forEach(d -> d.delivery(delivery));
-    }
-
     /** Sets the health and capacity settings, for the nodes known and those to come. */
     public void policy(NodePolicy policy) {
         this.policy = policy;
@@ -125,7 +115,6 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         AmicaBusDevice<R> device = new AmicaBusDevice<>(context, deviceType, address, keepAlive, from, this);
         device.policy(p);
         device.realSilenceGuard(realSilenceGuard);
-        device.delivery(delivery);
         nodes.put(address, device);
         return register.apply(device);
     }
@@ -166,7 +155,6 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
             AmicaBusDevice<R> d = AmicaBusDevice.restored(context, deviceType, b, this);
             d.policy(policy);
             d.realSilenceGuard(realSilenceGuard);
-            d.delivery(delivery);
             return d;
         }, d -> nodes.putIfAbsent(d.address(), d) == null, register);
     }

@@ -41,21 +41,6 @@ final class Handover {
         lastLeft = nanos.getAsLong();
     }
 
-    /**
-     * A listener disconnected with payloads still queued for it (a slow-consumer queue, {@link SlowConsumers}):
-     * they were never delivered, so they are held first, before what arrives from now on.
-     */
-    void listenerLeft(List<Held> undelivered) {
-        listenerLeft();
-        for (int i = undelivered.size() - 1; i >= 0; i--) {
-            if (held.size() < CAPACITY) {
-                held.addFirst(undelivered.get(i));
-            } else {
-                lost++;
-            }
-        }
-    }
-
     /** A payload arrived (it goes live to the listeners still connected). */
     void record(byte[] payload, Instant at) {
         if (!holding()) {

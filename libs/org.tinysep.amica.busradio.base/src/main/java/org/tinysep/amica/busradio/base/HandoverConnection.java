@@ -1,8 +1,6 @@
 package org.tinysep.amica.busradio.base;
 
-import java.util.List;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.function.Supplier;
 import org.tinysep.api.device.Connection;
 
 /** A bus device listener's connection; closing it tells the {@link Handover} that a replacement may follow. */
@@ -11,18 +9,11 @@ final class HandoverConnection implements Connection {
     private final Connection connection;
     private final Handover handover;
     private final AtomicBoolean closed = new AtomicBoolean();
-    private final Supplier<List<Handover.Held>> undelivered;
 
     /** @param handover also the lock the bus device holds around it */
     HandoverConnection(Connection connection, Handover handover) {
-        this(connection, handover, List::of);
-    }
-
-    /** @param undelivered stops the listener's queue and gives what it still held (held for the replacement) */
-    HandoverConnection(Connection connection, Handover handover, Supplier<List<Handover.Held>> undelivered) {
         this.connection = connection;
         this.handover = handover;
-        this.undelivered = undelivered;
     }
 
     @Override
@@ -33,7 +24,7 @@ final class HandoverConnection implements Connection {
             // list's handle takes no lock.
             synchronized (handover) {
                 connection.close();
-                handover.listenerLeft(undelivered.get());
+                handover.listenerLeft();
             }
         }
     }

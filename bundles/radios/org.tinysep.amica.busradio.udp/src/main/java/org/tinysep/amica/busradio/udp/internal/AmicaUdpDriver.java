@@ -15,7 +15,6 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.amica.busradio.base.AmicaNodes;
-import org.tinysep.amica.busradio.base.SlowConsumers;
 import org.tinysep.amica.busradio.base.FrameHandler;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.device.Parameter;
@@ -55,10 +54,6 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private DatagramLink transport;
     private String listening;
     private PlatformTicker ticker;
-    /** Each bus device listener's own queue (issue 29: a slow consumer must never stall the radio). */
-    private SlowConsumers delivery;
-    /** How long a tick waits for what it handed over to be delivered. */
-    private static final java.time.Duration TICK_DELIVERY = java.time.Duration.ofMillis(500);
     private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
     private Instant beforeTick;
@@ -98,8 +93,6 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
                 "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
         nodes.policy(policy);
-        delivery = new SlowConsumers(context()); // a slow listener never stalls the receive thread (issue 29)
-        nodes.delivery(delivery);
         handler = new FrameHandler<>(context(), nodes, rejects);
         settingProblems.forEach(p -> context().event(EventKind.PROBLEM, p));
         if (gate.enforced()) {
@@ -121,14 +114,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private void tick(Instant now) {
         Instant stamp = beforeTick == null ? now : beforeTick;
         beforeTick = now;
-        int[] drained = {0};
-        transport.drain((data, length, from) -> {
-            drained[0]++;
-            datagram(data, length, from, stamp);
-        });
-        if (drained[0] > 0) { // lock-step: what was handed over is delivered before the tick goes on (a slow one not)
-            delivery.awaitIdle(TICK_DELIVERY);
-        }
+        transport.drain((data, length, from) -> datagram(data, length, from, stamp));
         nodes.checkHealth(now);
         handler.flushRejects();
     }
@@ -159,7 +145,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     @Deactivate
     void deactivate() {
-        stop(ticker, transport, delivery); // then removes the bus devices one by one (each leaves the node table), the driver
+        stop(ticker, transport); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override
