@@ -39,6 +39,7 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
 
     static final String MOVEMENT_BSN = "org.tinysep.amica.movement";
     private static final int NODES = 8;
+    private static final String LIGHT = "1.60"; // the simple light Follow-me Light needs
     private static final int FRAMES_PER_SECOND = 5000;
     private static final int SWAPS = 3;
     private static final Duration GRAPH_BACK = Duration.ofSeconds(60);
@@ -68,10 +69,15 @@ public class HotUpdateUnderLoadTest extends TinySepTestSupport {
             throws Exception {
         MovementFlood flood = new MovementFlood(port, NODES, 40, FRAMES_PER_SECOND, 200_000, 30_000);
         long kernelBefore = kernelDrops(port);
-        flood.keepAlives(60);
+        flood.keepAlives(Integer.parseInt(LIGHT.substring(2)));
         await(TIMEOUT, () -> movementUids().size() == NODES, NODES + " AmicaMovement devices");
         await(TIMEOUT, () -> CONSUMERS.stream().allMatch(c -> consumes(Topology.of(context), c)),
                 "each of " + CONSUMERS + " connected to all " + NODES + " movement devices");
+        // the light's edges too: a graph taken before the light connected to its bus device and Follow-me Light to
+        // the light is not the whole graph (a run once found them "extra" after the swap)
+        await(TIMEOUT, () -> Topology.of(context).containsAll(List.of(
+                "AmicaSimpleLight@" + LIGHT + " <- BusRadioAmicaProvider of BusRadioAmicaUdp@" + LIGHT,
+                "FollowMeLight <- SimpleLightProvider of AmicaSimpleLight@" + LIGHT)), "the light " + LIGHT + " connected");
         Set<String> graphBefore = Topology.of(context);
         Set<String> uidsBefore = movementUids();
         if (run == 1) {
