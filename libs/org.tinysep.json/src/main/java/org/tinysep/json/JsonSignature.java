@@ -1,22 +1,19 @@
 package org.tinysep.json;
 
 import java.nio.charset.StandardCharsets;
-import java.security.GeneralSecurityException;
 import java.security.MessageDigest;
-import java.util.HexFormat;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import javax.crypto.Mac;
-import javax.crypto.spec.SecretKeySpec;
+import org.tinysep.link.sync.SyncSecret;
 
 /**
- * The signature of a JSON message on a topic (docs/mqtt.md, "Signed messages"), as the time synchroniser signs its
- * requests: {@code sig} = lower-case hex HMAC-SHA256(key, topic + "\n" + the JSON object without {@code sig}),
- * written as the object's last field. The exact bytes are signed: no canonical form, a receiver strips the trailing
- * {@code ,"sig":"…"} and checks the rest. The topic is signed too, so a message cannot be moved to another topic
+ * The signature of a JSON message on a topic (docs/mqtt.md, "Signed messages"), with the HMAC the time synchroniser
+ * signs its requests with ({@link SyncSecret#hmacHex}): {@code sig} = lower-case hex HMAC-SHA256(key, topic + "\n" +
+ * the JSON object without {@code sig}, as UTF-8), written as the object's last field. The exact bytes are signed: no
+ * canonical form, a receiver strips the trailing {@code ,"sig":"…"} and checks the rest. The topic is signed too, so a message cannot be moved to another topic
  * (an alert's message is no command, flat A's no message of flat B). Written once for the MQTT bridge, which signs
  * its messages and checks commands, and the care centre's board, which checks the flats' messages and signs its
- * acknowledgements (issue 25, item 2); each reads its own key files.
+ * acknowledgements; each reads its own key files.
  */
 public final class JsonSignature {
 
@@ -56,12 +53,6 @@ public final class JsonSignature {
 
     /** @return the lower-case hex HMAC-SHA256 of {@code topic + "\n" + json} */
     public static String mac(byte[] key, String topic, String json) {
-        try {
-            Mac mac = Mac.getInstance("HmacSHA256");
-            mac.init(new SecretKeySpec(key, "HmacSHA256"));
-            return HexFormat.of().formatHex(mac.doFinal((topic + "\n" + json).getBytes(StandardCharsets.UTF_8)));
-        } catch (GeneralSecurityException e) {
-            throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
-        }
+        return SyncSecret.hmacHex(key, (topic + "\n" + json).getBytes(StandardCharsets.UTF_8));
     }
 }

@@ -41,10 +41,20 @@ public final class SyncSecret {
 
     /** @return the lower-case hex HMAC-SHA256 of {@code "<session> <signed>"} with {@code key} */
     public static String hmac(byte[] key, String session, String signed) {
+        return hmacHex(key, (session + " " + signed).getBytes(StandardCharsets.US_ASCII));
+    }
+
+    /**
+     * The one HMAC of TinySEP's signed messages: the synchroniser's requests ({@link #hmac}) and the signed JSON
+     * messages of the MQTT bridge and board ({@code org.tinysep.json.JsonSignature}).
+     *
+     * @return the lower-case hex HMAC-SHA256 of {@code message} with {@code key}
+     */
+    public static String hmacHex(byte[] key, byte[] message) {
         try {
             Mac mac = Mac.getInstance("HmacSHA256");
             mac.init(new SecretKeySpec(key, "HmacSHA256"));
-            return HexFormat.of().formatHex(mac.doFinal((session + " " + signed).getBytes(StandardCharsets.US_ASCII)));
+            return HexFormat.of().formatHex(mac.doFinal(message));
         } catch (GeneralSecurityException e) {
             throw new IllegalStateException("HmacSHA256 is part of every Java platform", e);
         }
