@@ -16,6 +16,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.tinysep.testsupport.repo.RepoFiles;
 
 /**
  * Issue 32 item 2 with the real script and real UDP sockets on 127.0.0.1: {@code scripts/demo-flat.sh} sends the
@@ -24,7 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class DemoFlatScriptTest {
 
-    static final Path SCRIPT = Path.of("").toAbsolutePath().resolve("../../scripts/demo-flat.sh").normalize();
+    static final Path SCRIPT = RepoFiles.resolve("scripts", "demo-flat.sh");
 
     @TempDir
     Path tmp;

@@ -19,6 +19,7 @@ import java.util.function.Supplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.tinysep.link.frame.FrameStream;
+import org.tinysep.testsupport.repo.RepoFiles;
 
 /**
  * The runner of the doc-vector tests of both protocol families: reads the fenced {@code vector} blocks of a protocol
@@ -45,11 +46,7 @@ public final class DocVectors {
 
     /** @param doc the document's file name under {@code docs/protocols/}, e.g. {@code "amica.md"} */
     public static List<Map<String, String>> read(String doc) throws IOException {
-        Path dir = Path.of(System.getProperty("basedir", ".")).toAbsolutePath();
-        while (dir.getParent() != null && !Files.isDirectory(dir.resolve("docs/protocols"))) {
-            dir = dir.getParent(); // the repository root: the first folder above the module that holds the documents
-        }
-        Path path = dir.resolve("docs/protocols").resolve(doc);
+        Path path = RepoFiles.require("docs", "protocols", doc);
         List<Map<String, String>> out = new ArrayList<>();
         boolean inBlock = false;
         Map<String, String> current = new LinkedHashMap<>();

@@ -18,6 +18,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.platform.launcher.listeners.TestExecutionSummary;
+import org.tinysep.testsupport.repo.RepoFiles;
 
 /**
  * Keeps {@code docs/tutorial-new-sensor.md} honest by following it in a scratch folder (see {@link Workspace}):
@@ -38,12 +39,8 @@ class TutorialNewSensorTest {
 
     @BeforeAll
     static void followTheTutorial() throws Exception {
-        Path repo = Path.of(System.getProperty("basedir", System.getProperty("user.dir"))).toAbsolutePath();
-        while (repo.getParent() != null && !Files.isRegularFile(repo.resolve(TUTORIAL))) {
-            repo = repo.getParent(); // the repository root: the first folder above this module holding the tutorial
-        }
-        assertTrue(Files.isRegularFile(repo.resolve(TUTORIAL)), "no " + TUTORIAL + " under " + repo);
-        tutorial = Workspace.follow(repo, scratch.resolve("repo"), TUTORIAL);
+        RepoFiles.require(TUTORIAL);
+        tutorial = Workspace.follow(RepoFiles.root(), scratch.resolve("repo"), TUTORIAL);
     }
 
     @Test
