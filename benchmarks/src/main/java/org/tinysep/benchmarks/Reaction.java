@@ -23,6 +23,9 @@ import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.amica.protocol.MotionDetection;
+import org.tinysep.house.codec.HouseRoom;
+import org.tinysep.house.codec.HouseRooms;
+import org.tinysep.house.codec.HouseXml;
 
 /**
  * Packet → reaction through Follow Me Light: K rooms, each with a movement node (20.r) and a simple light node
@@ -53,17 +56,16 @@ final class Reaction implements AutoCloseable {
 
     /** Writes the house (K rooms), the placements and Follow Me Light's grace into a copy before its start. */
     static void prepare(Bench.Installed inst, int rooms) throws Exception {
-        StringBuilder house = new StringBuilder("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<HOUSE_ROOMS>\n");
+        List<HouseRoom> house = new ArrayList<>();
         List<String> placements = new ArrayList<>();
         for (int r = 1; r <= rooms; r++) {
-            house.append(String.format("  <ROOM><UID>b1000000-0000-4000-8000-%012d</UID><NAME>R%02d</NAME>"
-                    + "<TYPE>Room</TYPE></ROOM>%n", r, r));
-            placements.add("20." + r + "=R" + String.format("%02d", r));
-            placements.add("21." + r + "=R" + String.format("%02d", r));
+            String name = String.format("R%02d", r);
+            house.add(new HouseRoom(String.format("b1000000-0000-4000-8000-%012d", r), name, "Room", List.of()));
+            placements.add("20." + r + "=" + name);
+            placements.add("21." + r + "=" + name);
         }
-        house.append("</HOUSE_ROOMS>\n");
         Path file = inst.var().resolve("house.xml");
-        Files.writeString(file, house);
+        Files.write(file, HouseXml.toBytes(new HouseRooms(house)));
         Path etc = inst.home().resolve("etc");
         Files.writeString(etc.resolve("org.tinysep.houseinformation.cfg"), "file=" + file + "\n");
         Files.writeString(etc.resolve("org.tinysep.houseinformation.placement.cfg"),
