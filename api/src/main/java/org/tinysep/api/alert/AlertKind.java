@@ -3,13 +3,28 @@ package org.tinysep.api.alert;
 /** What an alert is about; the kinds differ in urgency. */
 public enum AlertKind {
     /** Inactivity Recognition: the person may have collapsed. Repeated and escalated until acknowledged. */
-    INACTIVITY,
-    /** A sensor stopped reporting (issue 12, item 2): lower priority, a notice. */
-    SENSOR_OFFLINE,
+    INACTIVITY("inactivity (the person may need help)"),
+    /** A sensor stopped reporting: lower priority, a notice. */
+    SENSOR_OFFLINE("sensor offline"),
     /** The platform itself (restarts, full disk, ...). */
-    PLATFORM,
-    /** The person pressed and held the help switch of the node they wear (issue 26): urgent, like INACTIVITY. */
-    HELP,
-    /** Fall detection saw a fall on the node the person wears (issue 26): urgent, like INACTIVITY. */
-    FALL
+    PLATFORM("platform"),
+    /** The person pressed and held the help switch of the node they wear: urgent, like INACTIVITY. */
+    HELP("help button (the person asked for help)"),
+    /** Fall detection saw a fall on the node the person wears: urgent, like INACTIVITY. */
+    FALL("fall (the person may have fallen)");
+
+    private final String words;
+
+    AlertKind(String words) {
+        this.words = words;
+    }
+
+    /**
+     * @return what an alert of this kind is about, in the plain words every view of it uses (the caregiver page, the
+     *         MQTT bridge, the care centre's board), e.g. {@code "fall (the person may have fallen)"}
+     * @since 1.3
+     */
+    public String words() {
+        return words;
+    }
 }

@@ -29,16 +29,6 @@ final class Alerts {
         this.spool = outbox.spool();
     }
 
-    static String kindWords(AlertKind kind) {
-        return switch (kind) {
-            case INACTIVITY -> "inactivity (the person may need help)";
-            case SENSOR_OFFLINE -> "sensor offline";
-            case PLATFORM -> "platform";
-            case HELP -> "help button (the person asked for help)";
-            case FALL -> "fall (the person may have fallen)";
-        };
-    }
-
     /** @return whether a message was queued */
     boolean changed(Alert a) throws IOException {
         Message last = spool.latest(a.id());
@@ -89,8 +79,8 @@ final class Alerts {
     Message kindState(AlertKind kind, List<Alert> open) {
         long n = open.stream().filter(a -> a.kind() == kind).count();
         return Message.state(topics.alertKind(kind.name()), writePlain(object("kind", kind.name(),
-                "state", n > 0 ? "ON" : "OFF", "open", n, "explanation", n == 0 ? "no open " + kindWords(kind)
-                        + " alert" : n + " open " + kindWords(kind) + " alert(s), not yet acknowledged")));
+                "state", n > 0 ? "ON" : "OFF", "open", n, "explanation", n == 0 ? "no open " + kind.words()
+                        + " alert" : n + " open " + kind.words() + " alert(s), not yet acknowledged")));
     }
 
     private static String stateOf(Message m) {

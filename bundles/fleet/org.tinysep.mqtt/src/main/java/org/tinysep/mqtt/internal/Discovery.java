@@ -93,7 +93,7 @@ final class Discovery {
 
     Message alertKind(AlertKind kind) {
         String object = "alert_" + kind.name().toLowerCase();
-        Map<String, Object> c = object("name", "Alert " + Alerts.kindWords(kind),
+        Map<String, Object> c = object("name", "Alert " + kind.words(),
                 "unique_id", topics.uniqueId(object), "object_id", topics.uniqueId(object),
                 "state_topic", topics.alertKind(kind.name()), "value_template", "{{ value_json.state }}",
                 "json_attributes_topic", topics.alertKind(kind.name()),

@@ -1,7 +1,6 @@
 package org.tinysep.web.api.internal;
 
 import org.tinysep.api.alert.Alert;
-import org.tinysep.api.alert.AlertKind;
 
 /**
  * What an alert is about, in the words the caregiver page shows (the same words the MQTT bridge publishes): the
@@ -11,17 +10,6 @@ import org.tinysep.api.alert.AlertKind;
 final class AlertWords {
 
     private AlertWords() {
-    }
-
-    /** @return e.g. "fall (the person may have fallen)" */
-    static String kind(AlertKind kind) {
-        return switch (kind) {
-            case INACTIVITY -> "inactivity (the person may need help)";
-            case SENSOR_OFFLINE -> "sensor offline";
-            case PLATFORM -> "platform";
-            case HELP -> "help button (the person asked for help)";
-            case FALL -> "fall (the person may have fallen)";
-        };
     }
 
     /** @return the alert's text, or its subject when it has no text */

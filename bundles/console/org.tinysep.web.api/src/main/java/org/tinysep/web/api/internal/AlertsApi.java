@@ -61,12 +61,15 @@ final class AlertsApi {
         }).orElseThrow(() -> new ApiException(503, NO_SERVICE));
     }
 
-    /** One alert: {@code kindWords} and {@code explanation} say what it is about in plain words (AlertWords). */
+    /**
+     * One alert: {@code kindWords} ({@code AlertKind.words()}) and {@code explanation} ({@link AlertWords}) say what it
+     * is about in plain words.
+     */
     static Map<String, Object> json(Alert a) {
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("id", a.id());
         m.put("kind", a.kind().name());
-        m.put("kindWords", AlertWords.kind(a.kind()));
+        m.put("kindWords", a.kind().words());
         m.put("room", a.roomName());
         m.put("raisedAt", a.raisedAt().toString());
         m.put("subject", a.subject());

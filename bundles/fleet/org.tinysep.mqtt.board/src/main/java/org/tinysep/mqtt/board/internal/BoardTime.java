@@ -4,6 +4,8 @@ import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+import org.tinysep.api.alert.AlertKind;
 
 /** Times and durations in the words the board shows. */
 final class BoardTime {
@@ -40,17 +42,17 @@ final class BoardTime {
 
     /**
      * @return what an alert of this kind (the flat's {@code AlertKind} name) is about, in the words the flat's MQTT
-     *         bridge uses; an unknown kind (a newer flat) as it came, lower case
+     *         bridge uses ({@link AlertKind#words()}); an unknown kind (a newer flat) as it came, lower case
      */
     static String kind(String kind) {
-        return switch (kind == null ? "" : kind) {
-            case "INACTIVITY" -> "inactivity (the person may need help)";
-            case "SENSOR_OFFLINE" -> "sensor offline";
-            case "PLATFORM" -> "platform";
-            case "HELP" -> "help button (the person asked for help)";
-            case "FALL" -> "fall (the person may have fallen)";
-            case "" -> "alert";
-            default -> kind.toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
-        };
+        if (kind == null || kind.isEmpty()) {
+            return "alert";
+        }
+        for (AlertKind k : AlertKind.values()) {
+            if (k.name().equals(kind)) {
+                return k.words();
+            }
+        }
+        return kind.toLowerCase(Locale.ROOT).replace('_', ' ');
     }
 }
