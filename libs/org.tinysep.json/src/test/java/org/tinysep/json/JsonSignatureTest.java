@@ -1,11 +1,17 @@
 package org.tinysep.json;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 class JsonSignatureTest {
 
@@ -34,5 +40,22 @@ class JsonSignatureTest {
         assertTrue(unknownSender.signed());
         assertFalse(unknownSender.valid());
         assertFalse(JsonSignature.check(KEY, TOPIC, "{\"state\":\"OPEN\"}").signed());
+    }
+
+    @Test
+    void aKeyIsTheFirstLineOfItsFileAndAShortOrMissingOneIsRefusedInPlainWords(@TempDir Path dir)
+            throws IOException {
+        Path file = dir.resolve("flat-7.key");
+        Files.writeString(file, "  0123456789abcdef0123 \r\nsecond line\n");
+        assertArrayEquals(KEY, JsonSignature.readKey(file, "MQTT key"));
+
+        Files.writeString(file, "0123456789abcde\n" + "0123456789abcdef0123");
+        IOException shortKey = assertThrows(IOException.class, () -> JsonSignature.readKey(file, "MQTT key"));
+        assertEquals("the MQTT key file " + file + " holds 15 characters, at least 16 are needed "
+                + "(e.g. openssl rand -hex 32)", shortKey.getMessage());
+
+        Path missing = dir.resolve("flat-8.key");
+        IOException none = assertThrows(IOException.class, () -> JsonSignature.readKey(missing, "key"));
+        assertEquals("the key file " + missing + " does not exist", none.getMessage());
     }
 }

@@ -14,7 +14,7 @@ import org.tinysep.json.JsonSignature;
 
 /**
  * Who may act through MQTT (docs/mqtt.md, "Commands: who may act"). MQTT carries no sender, so a command proves its
- * origin by its signature: HMAC-SHA256 with the flat's key ({@link Signatures}), with {@code at} (ISO-8601, within
+ * origin by its signature: HMAC-SHA256 with the flat's key ({@link FlatKey}), with {@code at} (ISO-8601, within
  * {@code commands.maxAgeSeconds} of this computer's clock) and a {@code nonce} seen only once in that time (no
  * replay). {@code commands.ack} and {@code commands.actuators} say per kind: off, signed or unsigned. A refused
  * command is counted; the first one of this bridge is a PROBLEM in the event log, later ones only counted. Used on

@@ -2,6 +2,7 @@ package org.tinysep.mqtt.internal;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import org.tinysep.json.JsonSignature;
 
 /**
  * The flat's key ({@code keyFile}), read once when the bridge starts: it signs the flat's JSON messages (so the care
@@ -15,7 +16,7 @@ record FlatKey(byte[] key, String missing, String warning) {
 
     static FlatKey read(Path file) {
         try {
-            byte[] k = Signatures.key(file);
+            byte[] k = JsonSignature.readKey(file, "MQTT key");
             String open = Secrets.openToOthers(file);
             return new FlatKey(k, null, open == null ? null : open.replace("password file", "MQTT key file"));
         } catch (IOException e) {

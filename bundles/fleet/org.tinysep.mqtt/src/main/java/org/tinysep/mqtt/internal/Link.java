@@ -132,7 +132,7 @@ final class Link {
         return o;
     }
 
-    /** From now on every JSON payload is published signed with the flat's {@code key} ({@link Signatures}). */
+    /** From now on every JSON payload is published signed with the flat's {@code key} ({@link org.tinysep.json.JsonSignature}). */
     void signWith(byte[] flatKey) {
         this.key = flatKey == null ? null : flatKey.clone();
     }

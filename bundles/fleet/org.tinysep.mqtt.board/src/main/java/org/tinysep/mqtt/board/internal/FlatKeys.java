@@ -12,6 +12,7 @@ import java.util.TreeSet;
 import java.util.function.Consumer;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
+import org.tinysep.json.JsonSignature;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -50,7 +51,7 @@ final class FlatKeys {
                         continue;
                     }
                     try {
-                        keys.put(flat, Signatures.key(f));
+                        keys.put(flat, JsonSignature.readKey(f, "key"));
                         if (BoardLogin.openToOthers(f)) {
                             say("warning: the key file " + f + " of flat " + flat + " can be read by other users of "
                                     + "this computer; chmod 600 " + f, problem);
