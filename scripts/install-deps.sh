@@ -2,7 +2,7 @@
 # Installs what the build and tests need beyond the JDK and Maven. Idempotent; safe to run on every build.
 #   java, maven  - build
 #   iproute2     - ss: the demo checks which process holds its UDP ports (scripts/demo-flat.sh ports-ours)
-#   socat        - pseudo-terminal pairs for the serial bus radio tests (docs: stack-notes pitfall 11)
+#   socat        - pseudo-terminal pairs for the serial bus radio tests (docs/build-notes.md: jSerialComm on a pty)
 #   chromium, chromium-driver - headless browser for the web console's browser test (docs/web-api.md)
 #   gammu-smsd   - SMS daemon driving a GSM modem; its dummy modem for the SMS channel tests (docs/alerts-by-phone.md)
 #   gradle       - the second build (Debian's Gradle 4.4.1: build.gradle, README "Gradle build")

@@ -96,7 +96,7 @@ public final class Bare {
     }
 
     /**
-     * The scale floor (issue 29): a bare Felix registers {@code devices} × 2 plain services (a device's Device service
+     * The scale floor: a bare Felix registers {@code devices} × 2 plain services (a device's Device service
      * and one provider service, with the device's four identity properties), then unregisters them; no listener.
      * Answers "createMs stopMs".
      */

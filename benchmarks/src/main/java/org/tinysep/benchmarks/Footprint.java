@@ -19,7 +19,7 @@ final class Footprint {
     /** the headless gateway profile (--headless: no web console) with the chosen options */
     double headlessIdleRssKb = Double.NaN;
     double headlessStartMs = Double.NaN;
-    /** ms from the banner to the web console bound (it starts after the banner, issue 29) */
+    /** ms from the banner to the web console bound (it starts after the banner) */
     double webAfterBannerMs = Double.NaN;
     private double floorsFelixStart = Double.NaN;
     private double felixCpuMs = Double.NaN;

@@ -4,9 +4,10 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Issue 29's goals, each MET or MISSED, from the headline figures the steps recorded in the {@link Report}
- * ({@link Report#figure}), with the ratio to the floor measured in the same run. A goal whose figure no step
- * produced says "not measured". Figure keys (one value per run of the step; a step repeated n times gives n):
+ * The performance goals (benchmarks/README.md), each MET or MISSED, from the headline figures the steps recorded
+ * in the {@link Report} ({@link Report#figure}), with the ratio to the floor measured in the same run. A goal whose
+ * figure no step produced says "not measured". Figure keys (one value per run of the step; a step repeated n times
+ * gives n):
  * <ul>
  * <li>{@code throughput.platform}, {@code throughput.bare}: highest loss-free frames/s, TinySEP and bare receiver</li>
  * <li>{@code latency.p50}, {@code latency.p99}, {@code latency.echoP50}, {@code latency.echoP99}: µs at 1,000

@@ -59,7 +59,7 @@ final class Platform implements AutoCloseable {
         return new Platform(home, amicaPort, p, web);
     }
 
-    /** Notes when the line "Web console: …" came (the console starts after the banner, issue 29). */
+    /** Notes when the line "Web console: …" came (the console starts after the banner). */
     private static final class WebLine implements java.util.function.Consumer<String> {
         private volatile long nanos;
 

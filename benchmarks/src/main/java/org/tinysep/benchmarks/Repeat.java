@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Runs a step several times (issue 29: the throughput figure swung 2× between runs) and reports how stable its
+ * Runs a step several times (the throughput figure swung 2× between runs) and reports how stable its
  * headline figures are: every run's value, min, median and max. Only the last run writes its detailed section
  * and plots; the others write to a scratch report.
  */

@@ -30,7 +30,7 @@ final class Scale {
     }
 
     /**
-     * Named figures of this section for the goals table (issue 29 item 4), e.g. {@code scale.create.40000.ms},
+     * Named figures of this section for the goals table, e.g. {@code scale.create.40000.ms},
      * {@code scale.stop.40000.ms}, {@code scale.restored.40000.ms}, {@code scale.floor.create.40000.ms},
      * {@code scale.slope.create} (µs per device at the largest count ÷ at the smallest: 1.0 = linear).
      */
@@ -63,7 +63,7 @@ final class Scale {
     }
 
     void run(Bench b, double idleRssKb) throws Exception {
-        // nodes; each makes 2 devices (bus + movement): 5,000, 10,000, 20,000 and 40,000 devices (issue 29: the slope)
+        // nodes; each makes 2 devices (bus + movement): 5,000, 10,000, 20,000 and 40,000 devices (the slope)
         int[] counts = b.smoke() ? new int[] {20} : new int[] {2_500, 5_000, 10_000, 20_000};
         String only = System.getenv("BENCH_SCALE_NODES"); // e.g. 5000 while working on one size
         if (only != null && !only.isBlank()) {

@@ -59,7 +59,7 @@ final class Collapses {
         return out;
     }
 
-    /** A collapse model (issue 28 item 3). */
+    /** A collapse model. */
     enum Model {
         /** a moment drawn uniformly over the awake at-home time */
         UNIFORM,

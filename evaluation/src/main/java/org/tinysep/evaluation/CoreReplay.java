@@ -34,7 +34,7 @@ final class CoreReplay {
     /** {@code -Dseated=false}: a seat mat turning ON is not told apart (session 20's detector), for comparison. */
     static final boolean SEATED = !"false".equals(System.getProperty("seated"));
 
-    /** {@code -DupFromBed=false}: a bed mat turning OFF does not end sleep (before issue 28), for comparison. */
+    /** {@code -DupFromBed=false}: a bed mat turning OFF does not end sleep, to compare the detector without it. */
     static final boolean UP_FROM_BED = !"false".equals(System.getProperty("upFromBed"));
 
     /** An activity as the detector sees it. */
@@ -160,7 +160,7 @@ final class CoreReplay {
     }
 
     /**
-     * Blind time (issue 28): whether monitoring is blind at {@code t} — the flat counts as empty then, so Inactivity
+     * Blind time: whether monitoring is blind at {@code t} — the flat counts as empty then, so Inactivity
      * Recognition is not watching and a collapse at {@code t} cannot be found.
      *
      * @param acts what the detector saw, in time order (later activities are ignored)

@@ -82,7 +82,7 @@ public final class CoreSweep {
         String table = CoreTable.facts(started, commit, args, k, n) + "\n" + CoreTable.markdown(all);
         System.out.println();
         System.out.println(table);
-        if (readme) { // issue 28: one command writes the tables of both READMEs
+        if (readme) { // one command writes the tables of both READMEs
             Readme.put(repo.resolve("evaluation/README.md"), "core", table);
             Readme.put(repo.resolve("README.md"), "core", table);
             System.out.println("written between the results:core markers of README.md and evaluation/README.md");

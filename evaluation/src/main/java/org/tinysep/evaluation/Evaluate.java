@@ -12,7 +12,7 @@ import java.util.Map;
 
 /**
  * {@code ./evaluate.sh [A|B|folder] [--collapses N] [--seed S] ...}: evaluates the inactivity alert of the real
- * platform on a recorded home (issue 11 item 4; evaluation/README.md) and prints the table, detectors side by side.
+ * platform on a recorded home (evaluation/README.md) and prints the table, detectors side by side.
  */
 public final class Evaluate {
 
@@ -21,7 +21,7 @@ public final class Evaluate {
 
     public static void main(String[] args) {
         try {
-            if (args.length > 0 && args[0].equals("falls")) { // issue 26: fall detection on SisFall
+            if (args.length > 0 && args[0].equals("falls")) { // fall detection on SisFall
                 System.exit(org.tinysep.evaluation.falls.FallsCommand.main(
                         java.util.Arrays.copyOfRange(args, 1, args.length),
                         Path.of(System.getProperty("tinysep.repo", ".")), System.out));

@@ -19,7 +19,7 @@ import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.testsupport.mail.SmtpSink;
 
 /**
- * Fall detection through the real distribution (issue 26, item 5): one platform process ({@link Platform}) plays a
+ * Fall detection through the real distribution: one platform process ({@link Platform}) plays a
  * batch of recordings, one after another in lock-step virtual time, as one person node's Sun SPOT frames over UDP
  * ({@link PersonNodePlayer}) into the Sun SPOT bus radio, Sun SPOT Person, Fall Detection and the alert service.
  * The alerts are read back from the platform's event log ("FALL alert handed to the alert service"), each at the

@@ -6,7 +6,7 @@ import org.osgi.annotation.versioning.ProviderType;
 import org.tinysep.api.device.Connection;
 
 /**
- * Owns the platform's alerts (issue 12, item 3): keeps them across restarts, notifies the contact list, repeats
+ * Owns the platform's alerts: keeps them across restarts, notifies the contact list, repeats
  * and escalates an alert nobody acknowledges, and sends an "all clear" when its cause ends. Every step is an
  * event-log entry in plain words. The shell ({@code tinysep:alerts}, {@code tinysep:ack}), the web console and an
  * MQTT bridge all go through this interface.

@@ -16,7 +16,7 @@ public final class NodeType {
     public static final String PET_COLLAR = "pet-collar";
     public static final String TEMPERATURE = "temperature";
     public static final String LIGHT_SENSOR = "light-sensor";
-    /** Presence node (issue 11): a pressure mat in or under a bed ({@code PresenceKind.BED}). Since 1.1. */
+    /** Presence node: a pressure mat in or under a bed ({@code PresenceKind.BED}). Since 1.1. */
     public static final String PRESENCE_BED = "presence-bed";
     /** Presence node: a pressure mat on a seat or sofa ({@code PresenceKind.SEAT}). Since 1.1. */
     public static final String PRESENCE_SEAT = "presence-seat";
@@ -30,7 +30,7 @@ public final class NodeType {
      */
     public static final String PRESENCE_PREFIX = "presence-";
     /**
-     * Person node (issue 26): a node worn by one person at the waist or as a pendant, reporting its switches, its
+     * Person node: a node worn by one person at the waist or as a pendant, reporting its switches, its
      * movement and the raw acceleration around peaks ({@code org.tinysep.api.sensor.person}). Since 1.2.
      */
     public static final String PERSON = "person";

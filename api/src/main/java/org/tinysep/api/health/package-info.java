@@ -1,5 +1,5 @@
 /**
- * Sensor health (issue 12): what each node's bus device knows about its node (last heard, the report interval its
+ * Sensor health: what each node's bus device knows about its node (last heard, the report interval its
  * node type promises, silence, battery, link quality) and which rooms are currently unmonitored because all their
  * sensing nodes are silent. Bus devices register {@link NodeHealthSource}; the Sensor Health service
  * ({@code org.tinysep.sensorhealth}) combines them with House Information into {@link SensorHealthProvider}.

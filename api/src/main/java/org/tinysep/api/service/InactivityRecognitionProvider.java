@@ -15,7 +15,7 @@ public interface InactivityRecognitionProvider extends Provider<InactivityRecogn
     Optional<InactivityAlert> alert();
 
     /**
-     * @return each wearer of a person node watched on their own (issue 26, item 4), in the order their nodes were
+     * @return each wearer of a person node watched on their own, in the order their nodes were
      *         first heard; empty without person nodes (and from providers that do not watch persons). Since 1.2.
      */
     default List<PersonWatch> persons() {

@@ -5,7 +5,7 @@ import java.util.Objects;
 import java.util.Optional;
 
 /**
- * How Inactivity Recognition watches one wearer of a person node (issue 26, item 4): the node's movement is that
+ * How Inactivity Recognition watches one wearer of a person node: the node's movement is that
  * person's activity; room-sensor activity counts for them only when no other wearer's node was moving at the time
  * (or, while their node is not worn, always). Since 1.2.
  *

@@ -7,7 +7,7 @@ import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 
 /**
- * The banner's line on where alerts go (issue 10 item 5): read from the Mail Manager's Driver service properties
+ * The banner's line on where alerts go: read from the Mail Manager's Driver service properties
  * {@code tinysep.mail.delivery} ({@code none}, {@code invalid}, {@code smtp}) and {@code tinysep.mail.summary}
  * (one plain sentence), so that a gateway whose alerts reach nobody says so where the user looks first.
  */

@@ -25,7 +25,7 @@ public final class FrameworkConfig {
     /**
      * Felix HTTP's key for headers on Jetty's own error pages (a malformed request line or header answers 400 before
      * any servlet filter runs): the same security headers as the web API's filter sets on every answer
-     * ({@code org.tinysep.web.api.internal.SecurityFilter}; issue 25, item 8). Entries separated by {@code ##}.
+     * ({@code org.tinysep.web.api.internal.SecurityFilter}). Entries separated by {@code ##}.
      */
     static final String ERROR_PAGE_HEADERS = "org.apache.felix.http.jetty.errorPageCustomHeaders";
     static final String ERROR_PAGE_HEADER_VALUES = "Content-Security-Policy=default-src 'none'; script-src 'self'; "
@@ -65,7 +65,7 @@ public final class FrameworkConfig {
         // SLF4J is the launcher's (lib/slf4j-api + lib/slf4j-simple): the system bundle exports its packages, so
         // every bundle logs through the one logger the launcher configured. slf4j-api finds slf4j-simple with
         // java.util.ServiceLoader on the class path, as outside OSGi: no Service Loader Mediator (SPI Fly) and no
-        // bytecode weaving at start (issue 29; before, SPI Fly + ASM wove every class of Jetty, JAXB and SLF4J)
+        // bytecode weaving at start (SPI Fly + ASM would weave every class of Jetty, JAXB and SLF4J at each start)
         p.put(Constants.FRAMEWORK_SYSTEMPACKAGES_EXTRA, Slf4jExports.header());
         // no implicit boot delegation: a bundle sees only what it imports (the launcher's class path holds SLF4J,
         // Felix and the launcher itself)
@@ -77,7 +77,7 @@ public final class FrameworkConfig {
         p.put("felix.fileinstall.noInitialDelay", "true");
         p.put("felix.fileinstall.log.level", "2");
         // its working folder in the state folder, one fixed folder per watcher: no empty /tmp/fileinstall-* folders
-        // left behind by every start (issue 25, item 8); deploy/'s watcher: etc/org.apache.felix.fileinstall-deploy.cfg
+        // left behind by every start; deploy/'s watcher: etc/org.apache.felix.fileinstall-deploy.cfg
         p.put("felix.fileinstall.tmpdir", var.resolve("tmp/fileinstall-etc").toString());
         p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
         // the web console's HTTP service: this machine only, from its first moment (etc/org.apache.felix.http.cfg

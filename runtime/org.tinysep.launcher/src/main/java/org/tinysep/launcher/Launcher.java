@@ -42,7 +42,7 @@ public final class Launcher {
     /**
      * Name of the web console's group (folder {@code 4-web}: Felix HTTP on Jetty, the console's bundles): installed
      * with the others but started only after the banner ({@link #startWeb()}), so the HTTP service is not on the
-     * start path (issue 29); not installed at all on a headless gateway ({@link Options#headless()}).
+     * start path; not installed at all on a headless gateway ({@link Options#headless()}).
      */
     public static final String WEB_GROUP = "web";
 

@@ -22,7 +22,7 @@ public final class Main {
     /**
      * How long the shutdown hook waits for the framework to stop (a SIGTERM, e.g. from systemd). Above the backup
      * store's limit for never-saved backups (stopSaveSeconds, 25 s, counted from its own stop, after the drivers'):
-     * a burst of new devices just before the stop is saved, not cut off (issue 14: a 10,000-device stop took 38-60 s
+     * a burst of new devices just before the stop is saved, not cut off (a 10,000-device stop takes 38-60 s
      * at load; a normal one stays well below). The systemd unit's TimeoutStopSec is above this.
      */
     static final Duration STOP_TIMEOUT = Duration.ofSeconds(60);
@@ -112,7 +112,7 @@ public final class Main {
                     Heartbeat.interval(SdNotify.watchdogInterval(System.getenv())));
             beating[0].start();
             systemd.ifPresent(s -> s.ready(report.lines().get(0)));
-            // the web console after the banner: its HTTP service (Jetty) is not on the start path (issue 29)
+            // the web console after the banner: its HTTP service (Jetty) is not on the start path
             webConsole(launcher, options, banner).forEach(System.out::println);
             System.out.flush();
             launcher.startShell();

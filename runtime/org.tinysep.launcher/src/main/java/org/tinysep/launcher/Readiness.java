@@ -17,7 +17,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Ready means ready (issue 12): the banner, systemd's {@code READY=1} and the first heartbeat wait until the
+ * Ready means ready: the banner, systemd's {@code READY=1} and the first heartbeat wait until the
  * platform is what the banner claims, the bus radios listening with their configuration from {@code etc/}:
  * <ol>
  * <li>every {@code etc/*.cfg} is in ConfigAdmin (FileInstall read it: property {@code felix.fileinstall.filename}),

@@ -7,7 +7,7 @@ import java.util.jar.Manifest;
 import org.slf4j.LoggerFactory;
 
 /**
- * The SLF4J packages the system bundle exports to the bundles (issue 29): the launcher's own slf4j-api, with the
+ * The SLF4J packages the system bundle exports to the bundles: the launcher's own slf4j-api, with the
  * versions and {@code uses} its jar's {@code Export-Package} header gives, so a bundle importing
  * {@code org.slf4j;version="[2.0,3)"} wires to the one SLF4J the launcher configured ({@link LoggingDefaults}).
  */

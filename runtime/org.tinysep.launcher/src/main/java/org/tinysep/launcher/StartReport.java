@@ -48,7 +48,7 @@ public record StartReport(String version, Duration took, int startLevel, boolean
 
     /**
      * @return the one-line banner, one line per failed bundle, then one {@code WARNING: …} line per "monitoring
-     *         reduced" signal recorded during the start (issue 25, item 7)
+     *         reduced" signal recorded during the start
      */
     public List<String> lines() {
         List<String> groups = new ArrayList<>();

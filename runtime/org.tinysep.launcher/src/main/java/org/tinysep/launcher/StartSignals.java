@@ -15,7 +15,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The caregiver signals recorded while TinySEP starts (issue 25, item 7): the event log's {@code PROBLEM} entries
+ * The caregiver signals recorded while TinySEP starts: the event log's {@code PROBLEM} entries
  * starting {@code Monitoring reduced: } or {@code Node type mismatch: } (a radio or console that cannot listen, a
  * watching application disabled) become one {@code WARNING: } line each under the banner, so "N/N bundles active"
  * is never all a deaf gateway says. The log's entries from before this start (its history) are left out: the

@@ -7,7 +7,7 @@ import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 
 /**
- * The banner's line on the web console (issue 32 item 2): its address is said only once the HTTP server has bound,
+ * The banner's line on the web console: its address is said only once the HTTP server has bound,
  * read from the endpoint the HTTP Service Runtime announces ({@code osgi.http.endpoint}), so a port another program
  * holds is never announced as TinySEP's console.
  */

@@ -19,7 +19,7 @@ import javax.crypto.SecretKeyFactory;
 import javax.crypto.spec.PBEKeySpec;
 
 /**
- * {@code --web-password installer|caregiver} (issue 32 item 4): sets a web console password without the shell, e.g.
+ * {@code --web-password installer|caregiver}: sets a web console password without the shell, e.g.
  * for daemon mode. It writes the same file and hash form as the shell's {@code tinysep:web-password}
  * ({@code <var>/web/passwords.properties}, {@code pbkdf2-sha256:<iterations>:<salt>:<hash>}, see the web API
  * bundle's PasswordHash; the platform reads the file at each login), atomically, hashes only.

@@ -9,7 +9,7 @@ import java.util.List;
  * The Linux kernel's count of datagrams it dropped at a UDP socket because its receive buffer was full (last column
  * of {@code /proc/net/udp} and {@code /proc/net/udp6}). Both tables are read: the JVM opens its sockets dual-stack
  * ({@code [::ffff:127.0.0.1]}), so the radios' sockets are listed in {@code udp6}, and a reader of {@code udp} alone
- * always saw 0 (issue 14). Used by the replay test and the benchmarks.
+ * always saw 0. Used by the replay test and the benchmarks.
  */
 public final class KernelDrops {
 

@@ -17,8 +17,8 @@ import org.tinysep.simulator.person.SisfallRecording;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 
 /**
- * A Sun SPOT person node worn by a person of the scenario (node type {@code person}, option {@code agent=<name>},
- * issue 26): every second its 50 accelerometer samples go through the node's own rule ({@link PersonNodeRule}: a
+ * A Sun SPOT person node worn by a person of the scenario (node type {@code person}, option {@code agent=<name>}):
+ * every second its 50 accelerometer samples go through the node's own rule ({@link PersonNodeRule}: a
  * summary every 2 s, a burst around a peak of 2 g) and its frames go out over the Sun SPOT radio. What it feels
  * follows the wearer: moving about (upright, swaying as in walking, no peak near 2 g), lying still asleep, nothing
  * while away (out of the radio's range). When the wearer collapses it plays a fall recording — {@value #FALL}, a

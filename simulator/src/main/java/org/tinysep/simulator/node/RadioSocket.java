@@ -6,7 +6,7 @@ import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 
 /**
- * A simulated node's UDP socket towards one bus radio, for both node families (issue 16): bound where the
+ * A simulated node's UDP socket towards one bus radio, for both node families: bound where the
  * {@link Target} says, it sends encoded frames to the radio; a send that fails is logged, never thrown (a real node
  * does not stop when nobody listens).
  */

@@ -5,7 +5,7 @@ import org.tinysep.amica.protocol.AmicaNodeType;
 
 /**
  * What the built-in defaults read from a recorded sensor's name and room when the mapping file says nothing about
- * the sensor (issue 11: a recorded home replayed without a mapping file must still have an outer door and beds).
+ * the sensor (a recorded home replayed without a mapping file must still have an outer door and beds).
  * Only two decisions, both where the kind alone cannot tell and a wrong guess is costly:
  * <ul>
  * <li>a door whose name says it leads outside ({@code Frontdoor}, {@code Main door}, {@code Entrance},

@@ -152,7 +152,7 @@ public final class SensorMapping {
         Map<Kind, Default> d = new EnumMap<>(Kind.class);
         d.put(Kind.MOTION, new Default(AmicaNodeType.MOVEMENT, ""));
         d.put(Kind.DOOR, new Default(AmicaNodeType.DOOR, "INNER"));
-        // issue 11: a pressure mat holds a person but whether it is a bed is unknown: seat (someone is here, no
+        // a pressure mat holds a person but whether it is a bed is unknown: seat (someone is here, no
         // sleep state claimed); a file that knows better says presence-bed
         d.put(Kind.PRESSURE, new Default(AmicaNodeType.PRESENCE_SEAT, ""));
         d.put(Kind.FLUSH, new Default(AmicaNodeType.PRESENCE_FLUSH, ""));

@@ -1,5 +1,5 @@
 /**
- * Presence and use sensors (issue 11): pressure mats on a bed or a seat, a toilet flush, an appliance in use.
+ * Presence and use sensors: pressure mats on a bed or a seat, a toilet flush, an appliance in use.
  * Unlike a window, such a sensor is about the person: turning ON is activity in its room, and a bed or seat mat
  * that is ON says that someone is here right now.
  */

@@ -95,7 +95,7 @@ public abstract class AbstractDevice implements Device {
     }
 
     /**
-     * @return whether this device watches the person (issue 25, item 1; Inactivity Recognition, Flat Occupancy):
+     * @return whether this device watches the person (Inactivity Recognition, Flat Occupancy):
      *         it is then never removed because its sources went (a deliberate deviation from thesis 3.3: it keeps
      *         running, with no source left too), it reports each vital source lost as a {@code Monitoring reduced: }
      *         PROBLEM naming the sensor and its room, and lists them in its {@code roomsNotSeen} parameter until

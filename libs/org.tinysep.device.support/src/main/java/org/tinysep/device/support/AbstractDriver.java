@@ -100,7 +100,7 @@ public abstract class AbstractDriver implements Driver {
     /**
      * The usual deactivation of a driver with parts of its own (a socket, a serial radio, a ticker): closes the
      * given parts in order (null ones, never opened, are skipped), then {@link #stop()}. Written once for the bus
-     * radios (issue 16); a part that throws on close stops the deactivation there, as before.
+     * radios; a part that throws on close stops the deactivation there.
      *
      * @param parts what the driver opened, e.g. its ticker first, then its transport
      */
@@ -143,7 +143,7 @@ public abstract class AbstractDriver implements Driver {
 
     /**
      * Tells every device that a provider device went away; a device left without a vital connection is removed
-     * (thesis 3.3), unless it watches the person ({@link AbstractDevice#watchesThePerson()}, issue 25: it stays and
+     * (thesis 3.3), unless it watches the person ({@link AbstractDevice#watchesThePerson()}: it stays and
      * says which room it can no longer see). While the driver's own bundle is stopping, its closing trackers report every provider as
      * removed: that is the driver going, not the providers, so nothing is done here and {@link #stop()} removes
      * the devices one by one instead (no false "lost its vital connections" entries).
@@ -154,7 +154,7 @@ public abstract class AbstractDriver implements Driver {
             return;
         }
         // only the devices connected to it (an index), not every device's connections: n providers going from n
-        // devices was n² (issue 29)
+        // devices would cost n²
         for (String deviceUid : context().consumers().consumersOf(providerUid)) {
             AbstractDevice d;
             synchronized (devices) {

@@ -23,7 +23,7 @@ import java.util.Set;
  * <p>
  * Why a group: forcing the temp files one after the other, after all were written, lets the file system commit their
  * data in one journal commit (the first force), so a burst of 10,000 device backups costs about one disk flush, not
- * 10,000 (each took 10-670 ms on a busy shared disk, issue 14); and 2 folder syncs instead of 10,000.
+ * 10,000 (each took 10-670 ms on a busy shared disk); and 2 folder syncs instead of 10,000.
  * Not thread-safe: one writer thread uses one batch.
  */
 public final class AtomicBatch {

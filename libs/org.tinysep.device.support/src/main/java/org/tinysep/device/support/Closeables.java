@@ -1,7 +1,7 @@
 package org.tinysep.device.support;
 
 /**
- * Closing the optional parts of a driver or a link in order, written once (issue 16): a driver's deactivation
+ * Closing the optional parts of a driver or a link in order, written once: a driver's deactivation
  * ({@link AbstractDriver#stop(AutoCloseable...)}), the Sun SPOT bus radio's links.
  */
 public final class Closeables {

@@ -8,7 +8,7 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * Which of a driver's devices are connected to which provider device (issue 29, item 4): when a provider goes, its
+ * Which of a driver's devices are connected to which provider device: when a provider goes, its
  * driver asks only those devices, instead of reading every device's connections (n devices and n providers going
  * made a stop cost n²). Kept by {@link DeviceRegistration} as connections are made and dropped.
  */

@@ -18,7 +18,7 @@ public final class Consumptions {
     }
 
     private final Map<String, Held> held = new LinkedHashMap<>();
-    /** The keys held per provider device UID: a provider that goes costs its own connections only (issue 29). */
+    /** The keys held per provider device UID: a provider that goes costs its own connections only. */
     private final Map<String, List<String>> byProvider = new HashMap<>();
     private int vital;
 

@@ -14,7 +14,7 @@ import org.tinysep.api.log.EventKind;
 /**
  * A device's side of the system backup (thesis 3.7): builds its {@link ComponentBackup} (name, room, the writable
  * parameters it keeps, node address and types, last seen time, free state), saves it, and throttles saves of
- * runtime state to one per {@link #STATE_INTERVAL_NANOS}. Issue 29: runtime state is saved only when it changes
+ * runtime state to one per {@link #STATE_INTERVAL_NANOS}. Runtime state is saved only when it changes
  * what a restart needs; the last seen time alone (every frame of a movement sensor moves it) is saved at most once
  * per {@link #LAST_SEEN_INTERVAL_NANOS} (an orderly stop saves the exact one), so a busy sensor no longer costs a
  * JAXB write and an fsync every 10 s.

@@ -64,7 +64,7 @@ final class DeviceParameters {
                 throw new IllegalArgumentException("name must not be blank");
             }
             int bad = halfCharacter(value);
-            if (bad >= 0) { // issue 25, item 8: a lone surrogate broke the backup writer and was saved corrupted
+            if (bad >= 0) { // a lone surrogate would break the backup writer and be saved corrupted
                 throw new IllegalArgumentException("name has a broken character at position " + (bad + 1)
                         + " (half of a UTF-16 surrogate pair, U+" + Integer.toHexString(value.charAt(bad))
                         .toUpperCase() + "): type the name again");

@@ -4,7 +4,7 @@ import java.time.Duration;
 import java.time.Instant;
 
 /**
- * Damps a flapping node (issue 25, item 6): one whose silences (gaps of at least its normal silence limit between
+ * Damps a flapping node: one whose silences (gaps of at least its normal silence limit between
  * two frames, declared or not) come {@value #FLAP_LIMIT} or more times within {@link #WINDOW}, e.g. a change-only
  * sensor whose report interval the platform assumes wrongly, or a node at the edge of radio range. While it flaps its
  * silence limit is twice the longest of those silences (at least twice the normal limit), up to {@link #MAX_LIMIT}

@@ -12,7 +12,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.Room;
 
 /**
- * The sources a device that watches the person (issue 25, item 1: Inactivity Recognition, Flat Occupancy) lost:
+ * The sources a device that watches the person (Inactivity Recognition, Flat Occupancy) lost:
  * such a device is not removed when its sensors go (a deliberate deviation from thesis 3.3), it says instead which
  * sensor in which room it can no longer see, as a {@code Monitoring reduced: } PROBLEM entry and its
  * {@value #PARAMETER} parameter, until the sensor is back.
@@ -21,7 +21,7 @@ final class LostSources {
 
     /** The read-only parameter of a watching device that names the rooms it can no longer see. */
     static final String PARAMETER = "roomsNotSeen";
-    /** The shared prefix of caregiver-visible "monitoring reduced" signals (docs/security.md, issue 25). */
+    /** The shared prefix of caregiver-visible "monitoring reduced" signals (docs/security.md). */
     static final String REDUCED = "Monitoring reduced: ";
 
     /** A sensor gone: its UID and name, its room's name (null when it was placed in no room), since when. */

@@ -8,7 +8,7 @@ import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.health.NodeHealthSource;
 
 /**
- * A device follows its bus node (issue 32, item 3): while the bus device it is connected to (a provider that is a
+ * A device follows its bus node: while the bus device it is connected to (a provider that is a
  * {@link Device} and a {@link NodeHealthSource}: the bus radio's device for its node address) is OFFLINE, the
  * device reports OFFLINE too, with the reason in plain words. Computed when the status is read, so the device
  * writes no STATUS entry of its own: the bus device's entry already tells when the node went silent.

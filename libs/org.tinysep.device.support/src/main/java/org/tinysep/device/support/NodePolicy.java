@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A bus radio's health and capacity settings (issue 12.1, issue 14), from its configuration.
+ * A bus radio's health and capacity settings, from its configuration.
  *
  * @param silentAfterIntervals report intervals without a valid frame after which a node is OFFLINE (at least 1)
  * @param lowBatteryMillivolts a keep-alive battery voltage below this is reported as low (0 = never)

@@ -4,7 +4,7 @@ import java.time.Duration;
 import java.time.Instant;
 
 /**
- * One node's liveness in platform time (sensor health, issue 12): when it was last heard, whether it has gone
+ * One node's liveness in platform time (sensor health): when it was last heard, whether it has gone
  * silent (no valid frame for a configured number of its report intervals), how many frames it sent in the last
  * {@link #WINDOW} against how many its node types promise (link quality, thesis Table 5.4), and frames missing by
  * sequence number. Thread-safe; cheap on the packet path (no allocation per frame).

@@ -6,7 +6,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Function;
 
 /**
- * The decoder path every link of a bus radio feeds, written once for both node families (issue 16): counts what is
+ * The decoder path every link of a bus radio feeds, written once for both node families: counts what is
  * handed in, copies a datagram (the transport may reuse its buffer), decodes it with the family's {@link Codec} and
  * hands on the frame ({@link #handle}); rejected input is counted under its reason by the family's {@link Counter}
  * and goes to the packet log through one {@link RejectSampler}, like refused sources and the summary of what was not

@@ -64,7 +64,7 @@ public final class ProviderTracker<P> implements AutoCloseable {
         this.tracker = new ServiceTracker<>(context, filter, null) {
             @Override
             public P addingService(ServiceReference<P> ref) {
-                P p = ServiceUse.take(context, ref); // no use left in the registry per provider (issue 29)
+                P p = ServiceUse.take(context, ref); // no use left in the registry per provider
                 if (p == null) {
                     return null;
                 }

@@ -6,7 +6,7 @@ import java.util.function.LongSupplier;
 import org.tinysep.api.log.Direction;
 
 /**
- * Keeps a flood of rejected input from wiping the packet-log history (issue 12.6: a million invalid datagrams
+ * Keeps a flood of rejected input from wiping the packet-log history (a million invalid datagrams
  * would have rotated out weeks of real packets). Rejected frames go to the packet log in full while a budget lasts
  * ({@link #BURST} at once, refilled by {@link #PER_MINUTE} per minute of real time); beyond it they are only
  * counted, and at most once a minute one summary entry says how many were not kept and from where. The reject

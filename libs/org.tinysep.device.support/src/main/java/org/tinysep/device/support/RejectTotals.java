@@ -8,7 +8,7 @@ import org.tinysep.api.device.Parameter;
  * The {@code rejected} total of a driver's parameters: the sum of every {@code rejected.<reason>} counter it shows,
  * wherever each comes from (the reject counter's reasons, the source gate's {@code source_not_allowed} and
  * {@code rejected.rate_limited}, the node table's {@code node_cap}), so the total always equals what the counters
- * below it add up to (issue 25, item 8: the total left out {@code node_cap}).
+ * below it add up to (the total left out {@code node_cap}).
  */
 public final class RejectTotals {
 

@@ -7,9 +7,10 @@ import org.tinysep.api.device.NodeType;
 
 /**
  * The report periods the thesis's node types promise (3.9.1 AmICA, 3.9.2 Sun SPOT): a movement or pet collar node
- * reports every 2 s, a reed switch (door, window) and a presence node (issue 11: a mat, flush or appliance sending
+ * reports every 2 s, a reed switch (door, window) and a presence node (a mat, flush or appliance sending
  * Reed-Switch Status) every second, lights, heaters, speakers and the Sun SPOT
- * temperature and light sensors every 10 s, a person node (issue 26) sends its movement summary every 2 s. Used to tell a silent node (sensor health) and to rate its link.
+ * temperature and light sensors every 10 s, a person node sends its movement summary every 2 s. Used to tell a
+ * silent node (sensor health) and to rate its link.
  */
 public final class ReportRates {
 

@@ -7,7 +7,7 @@ import org.osgi.framework.ServiceObjects;
 import org.osgi.framework.ServiceReference;
 
 /**
- * Service objects of devices taken without leaving a use behind in the framework's registry (issue 29, item 4).
+ * Service objects of devices taken without leaving a use behind in the framework's registry.
  * <p>
  * Felix keeps the services each bundle uses in one array per bundle: every new use searches and copies it, every
  * unregistration scans every bundle's array, and a use given back with {@code BundleContext.ungetService} stays in

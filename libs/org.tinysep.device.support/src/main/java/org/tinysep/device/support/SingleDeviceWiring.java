@@ -13,7 +13,7 @@ import org.osgi.framework.BundleContext;
  * The wiring of a service with one device for the whole flat (Inactivity Recognition, Follow Me Light): the device
  * is created when the first provider of a {@link #source source} type appears and is given every later one (the
  * device connects to it, vital: it removes itself with its last source and is created anew with the next, unless
- * it watches the person, {@link AbstractDevice#watchesThePerson()}, issue 25: then it stays);
+ * it watches the person, {@link AbstractDevice#watchesThePerson()}: then it stays);
  * providers of an {@link #optional optional} type are given to the device whenever present, then and later. A
  * provider that goes is forgotten by the device before the driver drops the connections to it.
  *

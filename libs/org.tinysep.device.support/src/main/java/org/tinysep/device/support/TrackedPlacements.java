@@ -16,7 +16,7 @@ import org.tinysep.api.device.DeviceProperties;
 
 /**
  * A {@link Placements} over the service registry: every service carrying {@code tinysep.device.uid}, indexed by that
- * UID when it is registered, so a lookup reads only the one device's few services (issue 14: a scan of every device's
+ * UID when it is registered, so a lookup reads only the one device's few services (a scan of every device's
  * services per lookup was most of the packet → reaction latency, since Follow Me Light asks for the room of every
  * light per motion). Service references show property modifications live, so the room read here is the one the
  * device has right now.

@@ -6,7 +6,7 @@ import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 
 /**
- * The one named thread a link runs on, written once (issue 16): the receive loop of a {@link DatagramLink}, the Sun
+ * The one named thread a link runs on, written once: the receive loop of a {@link DatagramLink}, the Sun
  * SPOT SDK link's open-and-receive task and its retries. {@link #close()} shuts it down and waits up to
  * {@link #CLOSE_WAIT} for the running task (a receive loop ends once its socket is closed), then interrupts it.
  */

@@ -26,7 +26,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
 
 /**
- * Nothing switches a watching application off in silence (issue 25, item 3): whatever stops, removes or replaces
+ * Nothing switches a watching application off in silence: whatever stops, removes or replaces
  * one ({@link WatchingApp}) — the drivers list, the web console, the shell's {@code stop}/{@code update}, an
  * upload — is a {@code PROBLEM} entry starting {@code Monitoring reduced: }, which the alert service's notices
  * mail to the caregivers. While the platform shuts down nothing is reported. A stop is reported after

@@ -4,7 +4,7 @@ import java.util.Optional;
 import java.util.stream.Stream;
 
 /**
- * The applications that watch the person (issue 25, item 3): stopping, removing or replacing one of them lowers how
+ * The applications that watch the person: stopping, removing or replacing one of them lowers how
  * well the person is watched, so it is a "Monitoring reduced: " signal for the caregivers.
  */
 enum WatchingApp {

@@ -11,7 +11,7 @@ import java.util.concurrent.atomic.LongAdder;
  * The thread-safe store behind {@link Inventory}: drivers, devices and provider services keyed by service id.
  * Lock-free (concurrent maps of immutable records), so service events on any thread never wait here. Provider
  * services are also indexed by device UID, so a device's interfaces ({@link #interfacesOf}, asked once per new
- * device) cost the same with 10 or 10,000 devices (issue 14: a scan of every provider per new device made creation
+ * device) cost the same with 10 or 10,000 devices (a scan of every provider per new device made creation
  * quadratic).
  */
 final class DeviceDirectory implements Inventory {

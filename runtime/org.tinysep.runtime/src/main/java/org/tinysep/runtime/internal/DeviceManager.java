@@ -35,8 +35,8 @@ public final class DeviceManager implements Inventory {
      * Told synchronously when the framework begins to stop, before any bundle stops: the trackers let go of every
      * device service then. Felix keeps each bundle's service uses in an array it scans on every unregistration, so
      * while this bundle (start level 4) held a service object per device, stopping 10,000 devices at level 5 was
-     * quadratic: ~26 s of a 10,000-device stop in Felix's {@code getUsingBundles}/{@code flushUsageCount} (JFR,
-     * issue 14). The directory is empty from then on; nothing is announced (the platform is stopping).
+     * quadratic: ~26 s of a 10,000-device stop in Felix's {@code getUsingBundles}/{@code flushUsageCount} (JFR).
+     * The directory is empty from then on; nothing is announced (the platform is stopping).
      */
     private final SynchronousBundleListener frameworkStopping = e -> {
         if (e.getType() == BundleEvent.STOPPING && e.getBundle().getBundleId() == 0) {

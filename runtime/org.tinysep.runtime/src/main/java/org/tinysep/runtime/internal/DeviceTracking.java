@@ -34,7 +34,7 @@ final class DeviceTracking implements ServiceTrackerCustomizer<Device, DeviceRec
 
     @Override
     public DeviceRecord addingService(ServiceReference<Device> ref) {
-        // kept without a use left in the registry: Felix's per-bundle use array made n devices cost n² (issue 29)
+        // kept without a use left in the registry: Felix's per-bundle use array made n devices cost n²
         Device device = ServiceUse.take(context, ref);
         if (device == null) {
             LOG.warn("Device service {} could not be obtained; ignored", ref.getProperty(Constants.SERVICE_ID));

@@ -12,7 +12,7 @@ import java.util.function.Function;
 import java.util.function.Predicate;
 
 /**
- * A log's fair share per origin (issue 25, item 6): the newest {@code perOrigin} entries of every origin, kept
+ * A log's fair share per origin: the newest {@code perOrigin} entries of every origin, kept
  * beside the rotating files, so that a flood from some origins cannot rotate the last entries of the others out
  * of the history. Bounded: at most {@code maxOrigins} node origins ({@code node <address>}, which only the bus
  * radios write, for nodes within their {@code maxNodes}) and {@code maxOrigins} other origins (rejected senders'

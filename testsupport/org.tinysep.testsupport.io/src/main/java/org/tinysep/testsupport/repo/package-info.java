@@ -1,6 +1,6 @@
 /**
  * <b>Test utilities, not for production code.</b> The repository's own files for tests: one helper resolves every
- * data path a test reads and refuses any that lies outside the clone (issue 32: a clone tests green on its own).
+ * data path a test reads and refuses any that lies outside the clone (a clone tests green on its own).
  */
 @Export
 @Version("1.0.0")

@@ -26,7 +26,7 @@ import org.tinysep.api.sensor.person.PersonNodeProvider;
 import org.tinysep.device.support.DriverContext;
 
 /**
- * Fall Detection (issue 26): listens to every person node and raises a FALL alert through the alert service when
+ * Fall Detection: listens to every person node and raises a FALL alert through the alert service when
  * one reports a fall ({@link FallDetector}). Each node has its own detector; the radio's thread calls in, and the
  * work per report is a few hundred multiplications, so no executor is needed.
  */

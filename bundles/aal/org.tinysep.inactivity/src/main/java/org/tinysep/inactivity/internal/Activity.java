@@ -9,7 +9,7 @@ import java.util.function.Supplier;
  * One observed activity, already placed in its room. Its description ("movement by Bathroom sensor") names the
  * device, which costs a look-up in the service registry: it is built when something first reads it (the event
  * log line of a state change, an alert, the backup every 10 s), not on the radio's receive thread for every
- * activity (issue 29 item 1: 21 % of that thread). Equal activities have equal fields (the description's text).
+ * activity (21 % of that thread). Equal activities have equal fields (the description's text).
  */
 final class Activity {
 

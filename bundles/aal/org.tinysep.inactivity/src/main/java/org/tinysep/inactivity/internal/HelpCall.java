@@ -23,8 +23,8 @@ import org.tinysep.api.service.MailManagerProvider;
  * {@code org.tinysep.alerts}: it keeps the alert open until acknowledged, repeats and escalates it, and sends the
  * all clear), else to the first Mail Manager present (which queues and delivers it, and logs the delivery). An
  * alert handed over before a restart, raised again after it, is not handed over twice, unless the alert service
- * has no open or acknowledged alert for it any more (issue 25: it was closed while the person was still quiet, e.g.
- * by an old side effect of a sensor going away): then it is raised again rather than silently lost.
+ * has no open or acknowledged alert for it any more (it was closed while the person was still quiet): then it is
+ * raised again rather than silently lost.
  */
 final class HelpCall {
 

@@ -34,8 +34,7 @@ final class HistoryFromLog {
 
     /**
      * A waiting activity entry: when, which device, whether it was a bed ("bed on") or seat mat turning ON, and
-     * whether a bed mat turned OFF ("bed off": the person got up, which ends sleep also in the bedroom at night,
-     * issue 28 item 2).
+     * whether a bed mat turned OFF ("bed off": the person got up, which ends sleep also in the bedroom at night).
      */
     record Raw(Instant at, String device, boolean inBed, boolean seated, boolean upFromBed) {
         /** An entry that is no bed mat turning OFF. */
@@ -56,9 +55,9 @@ final class HistoryFromLog {
      * Reads the entries from {@code days} before {@code now} on, <b>with no upper bound</b>: at activation the
      * platform's clock may still be behind the log (an EXTERNAL Time Controller holds the wall clock until its first
      * tick, which jumps to the virtual time the log was written in; a clock that went back). Bounding the query by
-     * that {@code now} read nothing in such a case (issue 11: every replayed history was lost, so the learned
-     * detector never left its cold start). The learner drops what is older than its history window at the time it
-     * learns ({@link HistoryLearner#profile}).
+     * that {@code now} would read nothing in such a case (a replayed history would be lost, and the
+     * learned detector would never leave its cold start). The learner drops what is older than its history window
+     * at the time it learns ({@link HistoryLearner#profile}).
      *
      * @return a sentence for the event log: what was read
      */
@@ -67,9 +66,9 @@ final class HistoryFromLog {
     }
 
     /**
-     * As {@link #load(EventLog, Instant, int)}, but first from the detector's own memory (issue 25, item 6: the
-     * event log rotates, and a flood of other entries rotated all it learned from away): what the memory holds is
-     * learned from, and the event log is read only after the time it was saved, to fill what it lacks.
+     * As {@link #load(EventLog, Instant, int)}, but first from the detector's own memory (the
+     * event log rotates, and a flood of other entries could rotate all it learned from away): what the memory
+     * holds is learned from, and the event log is read only after the time it was saved, to fill what it lacks.
      *
      * @param log    the event log, or null when there is none
      * @param memory the detector's own memory, or null

@@ -43,7 +43,7 @@ import org.tinysep.device.support.WholeFlatDevice;
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;
  * Flat Occupancy, Mail Manager and House Information are optional. It watches the person: it is not removed when
- * its sources go (issue 25), it says which rooms it can no longer see.
+ * its sources go, it says which rooms it can no longer see.
  */
 final class InactivityDevice extends WholeFlatDevice
         implements InactivityRecognitionProvider {
@@ -64,7 +64,7 @@ final class InactivityDevice extends WholeFlatDevice
     /** The activity sources connected so far (devices whose logged entries count as history). */
     private final Set<String> sources = ConcurrentHashMap.newKeySet();
     private volatile long lastResolve = System.nanoTime() - HEARTBEAT_NANOS;
-    /** Each wearer of a person node, watched on their own (issue 26, item 4; README "Activity per person"). */
+    /** Each wearer of a person node, watched on their own (README, "Activity per person"). */
     private volatile PersonWatches persons;
     /** The flat's alert not handed on because wearers have their own watches (said once per alert). */
     private volatile Instant flatAlertLeftToPersons;
@@ -333,7 +333,7 @@ final class InactivityDevice extends WholeFlatDevice
         return e.name().toLowerCase(Locale.ROOT).replace('_', ' ');
     }
 
-    /** Issue 25, item 1: it stays when its sensors go and says which rooms it can no longer see. */
+    /** It stays when its sensors go and says which rooms it can no longer see. */
     @Override
     protected boolean watchesThePerson() {
         return true;

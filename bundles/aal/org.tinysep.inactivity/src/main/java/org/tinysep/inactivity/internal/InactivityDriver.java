@@ -40,7 +40,7 @@ import org.tinysep.device.support.UnmonitoredRooms;
 /**
  * Inactivity Recognition driver: creates its single device when the first activity source (Movement, Door or
  * Window) appears and connects it to every later one; Flat Occupancy, Mail Manager and House Information are
- * connected whenever present. The device watches the person: left without sources it stays (issue 25, a deliberate
+ * connected whenever present. The device watches the person: left without sources it stays (a deliberate
  * deviation from thesis 3.3, docs/architecture.md) and says which rooms it can no longer see.
  */
 @Component(service = {}, immediate = true, configurationPid = InactivityDriver.PID)
@@ -131,7 +131,7 @@ public final class InactivityDriver extends AbstractDriver {
         return LimitPolicy.learned(new LearnedLimits(learner));
     }
 
-    /** The learner's own memory is saved this often (and when the driver stops): issue 25, item 6. */
+    /** The learner's own memory is saved this often (and when the driver stops). */
     static final long SAVE_MINUTES = 10;
 
     private void saveMemory() {

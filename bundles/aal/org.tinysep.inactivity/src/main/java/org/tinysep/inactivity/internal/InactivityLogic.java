@@ -19,7 +19,7 @@ import org.tinysep.api.service.Occupancy;
  * nothing until the next activity.</li>
  * <li>UNOCCUPIED: NOT_WATCHING, and a raised alert is dropped (someone left through the door). UNKNOWN (Flat
  * Occupancy went away) while WATCHING: NOT_WATCHING; while in ALERT nothing changes: no one was seen leaving, so
- * the alert stays (issue 25, item 1).</li>
+ * the alert stays.</li>
  * <li>The clock went back (switch from virtual to real time, an NTP step, a restored time from the future):
  * {@link #rebase(Instant)} with the platform's {@code now} counts the quiet time from it, so fresh activity is
  * never taken for a late one.</li>
@@ -80,7 +80,7 @@ final class InactivityLogic {
         }
         if (occupancy == Occupancy.UNKNOWN && state == InactivityState.ALERT) {
             // Flat Occupancy went away (its bundle stopped, an update): nobody was seen leaving, the person may
-            // still lie there. The alert stays; only activity, a real UNOCCUPIED or a caregiver ends it (issue 25)
+            // still lie there. The alert stays; only activity, a real UNOCCUPIED or a caregiver ends it
             return Optional.empty();
         }
         alert = null;

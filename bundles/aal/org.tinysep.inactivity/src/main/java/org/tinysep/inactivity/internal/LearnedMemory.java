@@ -14,7 +14,7 @@ import org.tinysep.inactivity.internal.learn.QuietGaps;
 import org.tinysep.inactivity.internal.learn.Sighting;
 
 /**
- * The learned detector's own memory (issue 25, item 6): what it has learned from, in a file of its own beside the
+ * The learned detector's own memory: what it has learned from, in a file of its own beside the
  * rotating event log, written atomically, so a flood of event-log entries (a flapping node) cannot make it forget.
  * UTF-8 lines of tab-separated fields (text escaped: {@code \\ \t \n \r}):
  * <pre>

@@ -36,7 +36,7 @@ interface LimitPolicy {
         return learned(new CachedLimits(limits));
     }
 
-    /** Learned limits through {@code cached} (issue 29: one computation per room, hour and state per learning). */
+    /** Learned limits through {@code cached} (one computation per room, hour and state per learning). */
     static LimitPolicy learned(CachedLimits cached) {
         LearnedLimits limits = cached.learned();
         return new LimitPolicy() {

@@ -25,7 +25,7 @@ import org.tinysep.inactivity.internal.person.PersonAlertWords;
 import org.tinysep.inactivity.internal.person.Wearers;
 
 /**
- * Each wearer of a person node watched on their own (issue 26, item 4): one {@link InactivityLogic} per node, fed
+ * Each wearer of a person node watched on their own: one {@link InactivityLogic} per node, fed
  * with the node's movement and the room activity {@link Wearers} attributes to its wearer. The limit is that of the
  * room where the person was last seen. An alert goes to the alert service (source {@code inactivity:<node uid>}),
  * else to a Mail Manager, and is cleared there when the person is active again. Every method returns the event-log

@@ -7,7 +7,7 @@ import java.util.Optional;
 import org.tinysep.api.backup.ComponentBackup;
 
 /**
- * Takes Inactivity Recognition's state back after a restart (issue 10): the last activity and since when the flat
+ * Takes Inactivity Recognition's state back after a restart: the last activity and since when the flat
  * was watched go to the logic, so the quiet time that began before the restart keeps counting; the alert already
  * handed over and the outage (last save → now) go to the help call, so a late alert says so. Times from the
  * future are re-based on {@code now}.

@@ -7,8 +7,8 @@ import org.tinysep.device.support.Placements;
 
 /**
  * The "room" of a device without one, "unknown room (device Hall sensor)", looked up at most once per device per
- * {@link #REFRESH_NANOS} (a rename shows within that time). Per activity it was a service-registry look-up of the
- * device's name and a new string, which the learned limits' cache then hashed anew (issue 29 item 1); now the same
+ * {@link #REFRESH_NANOS} (a rename shows within that time). A look-up per activity would cost a service-registry
+ * look-up of the device's name and a new string, which the learned limits' cache would hash anew; instead the same
  * string is handed out until the next look-up. Thread-safe.
  */
 final class UnplacedNames {

@@ -15,7 +15,7 @@ import org.tinysep.device.support.AbstractDriver;
 import org.tinysep.device.support.StateFolder;
 
 /**
- * The MQTT bridge (issue 15): like the Mail Manager a driver with its one device, created at once. Installed by
+ * The MQTT bridge: like the Mail Manager a driver with its one device, created at once. Installed by
  * default and idle until {@code brokerUrl} is configured; a configuration change replaces the running bridge.
  */
 @Component(service = {}, immediate = true, configurationPid = MqttBridgeDriver.PID)

@@ -9,7 +9,7 @@ import org.tinysep.link.frame.TypeCode;
 
 /**
  * The AmICA node types and their bits in a keep-alive's product id. A node may have several types, so the product id
- * is a bit mask. Bits 0 to 7 are the thesis's types; bits 8 to 11 are a TinySEP extension (issue 11): presence
+ * is a bit mask. Bits 0 to 7 are the thesis's types; bits 8 to 11 are a TinySEP extension: presence
  * nodes (a bed or seat mat, a toilet flush, an appliance in use) that report ON/OFF with the Reed-Switch Status
  * payload (A = 1 ON). Bits 12 to 15 are reserved and ignored. {@link #typeName()} is the matching node type name of
  * the TinySEP API ({@code org.tinysep.api.device.NodeType}): the constant's name in lower case with '-' for '_', as

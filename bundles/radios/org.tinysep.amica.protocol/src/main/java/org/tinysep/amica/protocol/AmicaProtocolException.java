@@ -5,7 +5,7 @@ import org.tinysep.link.frame.ProtocolException;
 
 /**
  * Bad input against the AmICA node protocol; {@code reason()} is the broken {@link RejectReason}, never null. The
- * message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s (issue 16).
+ * message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s.
  */
 public final class AmicaProtocolException extends ProtocolException implements ProtocolException.Typed<RejectReason> {
 

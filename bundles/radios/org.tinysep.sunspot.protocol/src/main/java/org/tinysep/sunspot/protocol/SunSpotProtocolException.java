@@ -5,7 +5,7 @@ import org.tinysep.link.frame.ProtocolException;
 
 /**
  * Bad input against the Sun SPOT node protocol; {@code reason()} is the broken {@link RejectReason}, never null.
- * The message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s (issue 16).
+ * The message, the missing stack trace and the typed accessor are the shared {@code ProtocolException}'s.
  */
 public final class SunSpotProtocolException extends ProtocolException implements ProtocolException.Typed<RejectReason> {
 

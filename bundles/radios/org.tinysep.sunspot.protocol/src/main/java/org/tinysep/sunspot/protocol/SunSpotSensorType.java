@@ -18,7 +18,7 @@ public enum SunSpotSensorType {
     LIGHT(4, "light-sensor"),
     /** Pet collar (pet movement), code 5. */
     PET_COLLAR(5, "pet-collar"),
-    /** Person node (issue 26): a Sun SPOT worn by a person; buttons, movement summaries, bursts. Code 6. Since 2.2. */
+    /** Person node: a Sun SPOT worn by a person; buttons, movement summaries, bursts. Code 6. Since 2.2. */
     PERSON(6, "person");
 
     /** The sensor type byte and the type name; the lookups are the shared {@link TypeCode}'s. */

@@ -13,7 +13,7 @@ import org.tinysep.api.log.LogQuery;
 /**
  * The alert service's event-log entries (origin {@value #ORIGIN}). The console (SLF4J at INFO) gets one line per
  * alert, when it is raised ({@link #raised}); acknowledgements, all clears and the rest go to the event log only
- * (SLF4J at DEBUG), so the console stays quiet (issue 32 item 5). Problems are warnings on both.
+ * (SLF4J at DEBUG), so the console stays quiet. Problems are warnings on both.
  */
 final class AlertLog {
 

@@ -47,7 +47,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
     private DailySummary summary;
     private PlatformTicker ticker;
     private volatile MailManagerProvider mail;
-    /** The SMS and push channels (issue 27), by DS field injection. */
+    /** The SMS and push channels, by DS field injection. */
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
             policyOption = ReferencePolicyOption.GREEDY)
     private volatile List<MessageChannel> channels;
@@ -168,7 +168,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
         return cleared;
     }
 
-    /** A reply from a phone (issue 27): see {@link PhoneReplies}. */
+    /** A reply from a phone: see {@link PhoneReplies}. */
     @Override
     public Optional<String> reply(String scheme, String from, String text) {
         return replies.reply(scheme, from, text);

@@ -11,7 +11,7 @@ import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.tinysep.api.channel.MessageChannel;
 import org.tinysep.api.device.DeviceStatus;
 
-/** The shell command {@code tinysep:channels}: the ways alerts reach phones (issue 27) and whether each can send. */
+/** The shell command {@code tinysep:channels}: the ways alerts reach phones and whether each can send. */
 @Component(service = ChannelCommands.class, property = {
     "osgi.command.scope=tinysep",
     "osgi.command.function=channels"

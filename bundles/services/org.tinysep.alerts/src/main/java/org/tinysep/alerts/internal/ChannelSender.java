@@ -15,7 +15,7 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerProvider;
 
 /**
- * Reaches one named contact (issue 27) along its addresses in order: mail through the Mail Manager, SMS and push
+ * Reaches one named contact along its addresses in order: mail through the Mail Manager, SMS and push
  * through their {@link MessageChannel}s. A channel that fails at once (modem not answering, server refusing, no
  * such channel running) is recorded as FAILED with its reason and the next one is tried; the first that takes the
  * message ends the attempt. Every attempt is one {@link Notification} with its channel.

@@ -10,7 +10,7 @@ import java.util.regex.Pattern;
 import org.tinysep.api.alert.Notification;
 
 /**
- * The contact list with each contact's ways to reach them (issue 27), parsed from the {@code contacts} key:
+ * The contact list with each contact's ways to reach them, parsed from the {@code contacts} key:
  * comma-separated, each either a plain e-mail address (as before) or {@code Name <scheme:address ...>} with the
  * channels in the order they are tried, e.g. {@code Eva <sms:+4915112345678 push:eva-topic mail:eva@example.org>}.
  * A plain address is its own key; a named contact's key is its name.

@@ -16,7 +16,7 @@ import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.device.DeviceStatus;
 
 /**
- * The daily "TinySEP is running" mail to the Mail Manager's recipients at {@code summaryTime} (issue 12, item 5),
+ * The daily "TinySEP is running" mail to the Mail Manager's recipients at {@code summaryTime},
  * so that a missing summary is itself the signal. Sent once per day (the day is saved with the alerts); if the
  * platform was not running at that time, it goes out late at the next start the same day and says so. A fresh
  * installation started after today's time sends its first summary tomorrow.
@@ -35,7 +35,7 @@ final class DailySummary implements AutoCloseable {
             java.util.function.BiFunction<Instant, Instant, List<org.tinysep.api.log.EventEntry>> signals) {
         this.signals = signals;
         this.settings = settings;
-        this.context = context; // devices are read once a day, not held (issue 14: a stop of 10,000 devices)
+        this.context = context; // devices are read once a day, not held (holding them slows a stop with 10,000 devices)
         this.health = new ServiceTracker<>(context, SensorHealthProvider.class, null);
         this.health.open();
         this.text = new SummaryText(new AlertText(settings.zone()), stateFolder);
@@ -88,7 +88,7 @@ final class DailySummary implements AutoCloseable {
         List<Device> out = new ArrayList<>();
         try {
             for (ServiceReference<Device> ref : context.getServiceReferences(Device.class, null)) {
-                Device d = ServiceUse.take(context, ref); // no use left per device in the registry (issue 29)
+                Device d = ServiceUse.take(context, ref); // no use left per device in the registry
                 if (d != null) {
                     try {
                         DeviceStatus.State s = d.status().state();

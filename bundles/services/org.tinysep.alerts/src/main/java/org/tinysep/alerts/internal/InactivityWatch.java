@@ -19,7 +19,7 @@ import org.tinysep.api.service.InactivityState;
  * Ends inactivity alerts when their cause ends: Inactivity Recognition leaving {@code ALERT} means the person is
  * active again (→ {@code WATCHING}) or the flat became unoccupied (→ {@code NOT_WATCHING}: Flat Occupancy decided
  * from door and movement reports that someone left). The alert service then sends the all clear. A device going
- * away never leaves {@code ALERT} (issue 25, item 1): Inactivity Recognition stays in it when Flat Occupancy or a
+ * away never leaves {@code ALERT}: Inactivity Recognition stays in it when Flat Occupancy or a
  * sensor goes, and an Inactivity Recognition that goes (its bundle stops) clears nothing here. Raising is
  * Inactivity Recognition's help call (it hands each alert over once, also across restarts, with the words of its
  * mail).

@@ -11,7 +11,7 @@ import org.tinysep.api.channel.ChannelMessage;
 
 /**
  * A channel message that failed after it was handed over (an SMS gammu-smsd moved to {@code error/}): the contact's
- * channels after that one are tried at once, unless the contact was tried again since (issue 27).
+ * channels after that one are tried at once, unless the contact was tried again since.
  */
 final class LateFallback {
 

@@ -12,8 +12,8 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerProvider;
 
 /**
- * Hands one message to everyone it is for: the plain addresses get one mail through the Mail Manager (as before
- * issue 27), each named contact is reached along its own channels ({@link ChannelSender}).
+ * Hands one message to everyone it is for: the plain addresses get one mail through the Mail Manager, each named
+ * contact is reached along its own channels ({@link ChannelSender}).
  */
 final class MessageDispatch {
 

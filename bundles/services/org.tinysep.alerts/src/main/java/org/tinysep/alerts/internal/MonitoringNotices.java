@@ -31,7 +31,7 @@ import org.tinysep.device.support.StateFolder;
 
 /**
  * Turns the event log's "monitoring reduced" and "node type mismatch" {@code PROBLEM} entries into a notice mail
- * to the caregivers (the Mail Manager's recipients), once per cause (issue 25, items 3 and 7). A notice is not an
+ * to the caregivers (the Mail Manager's recipients), once per cause. A notice is not an
  * alert: it is neither repeated nor escalated. The log is read every {@value #PERIOD_SECONDS} s; the last entry
  * handled is saved ({@code notices.properties} next to the alerts), so a restart neither repeats nor loses one.
  * Without a Mail Manager the signals wait and go out when one appears. A signal about one sensor that went away waits

@@ -10,8 +10,9 @@ import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 
 /**
- * Picks the caregiver-visible signals out of the event log (the shared contract of issue 25: a {@code PROBLEM}
- * entry whose message starts with {@value #REDUCED} or {@value #MISMATCH}) and decides which of them are mailed:
+ * Picks the caregiver-visible signals out of the event log (the shared contract of docs/security.md, "Nothing
+ * reduces monitoring in silence": a {@code PROBLEM} entry whose message starts with {@value #REDUCED} or
+ * {@value #MISMATCH}) and decides which of them are mailed:
  * each entry once (by sequence number), and the same message not again within {@code quiet} (a burst of one cause
  * is one notice). Not thread-safe: one poller uses it.
  */

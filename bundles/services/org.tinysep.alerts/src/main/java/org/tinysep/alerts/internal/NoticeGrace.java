@@ -12,7 +12,7 @@ import java.util.regex.Pattern;
 import org.tinysep.api.log.EventEntry;
 
 /**
- * The grace of sensor notices (issue 32): a "Monitoring reduced" signal about one sensor that went away (device
+ * The grace of sensor notices: a "Monitoring reduced" signal about one sensor that went away (device
  * support's words: {@code … its sensor "Bathroom movement" …}) is held for {@code grace}; when the same watcher says
  * {@code monitoring restored: the sensor "Bathroom movement" …} within it, the notice is dropped, so a platform
  * start or a driver update, where sensors go and come within seconds, mails nothing. Other signals pass at once.

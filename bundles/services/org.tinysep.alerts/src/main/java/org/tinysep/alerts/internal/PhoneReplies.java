@@ -9,7 +9,7 @@ import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertService;
 
 /**
- * Replies from phones (issue 27): {@code OK 3} (also {@code ok3}, {@code OK #3}, {@code ACK 3}) from a contact's
+ * Replies from phones: {@code OK 3} (also {@code ok3}, {@code OK #3}, {@code ACK 3}) from a contact's
  * registered number acknowledges alert 3 in that contact's name; a bare {@code OK} acknowledges the only open alert
  * when exactly one is open. A reply from a number not in the contact list is refused: logged, nothing is done and
  * nothing is sent back. Every other reply gets an answer in words saying what happened or what to write.

@@ -38,7 +38,7 @@ import org.tinysep.device.support.WholeFlatDevice;
 
 /**
  * The one Flat Occupancy device (thesis 4.4.3.1). Connects to every Movement and Door provider; each connection
- * counts as vital. Unlike thesis Fig 3.4 it is not removed when it has none left: it watches the person (issue 25),
+ * counts as vital. Unlike thesis Fig 3.4 it is not removed when it has none left: it watches the person,
  * keeps running and says which rooms it can no longer see; it goes only with its driver.
  */
 final class FlatOccupancyDevice extends WholeFlatDevice
@@ -238,7 +238,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
                 + "): counted from now"));
     }
 
-    /** Issue 25, item 1: it stays when its sensors go and says which rooms it can no longer see. */
+    /** It stays when its sensors go and says which rooms it can no longer see. */
     @Override
     protected boolean watchesThePerson() {
         return true;

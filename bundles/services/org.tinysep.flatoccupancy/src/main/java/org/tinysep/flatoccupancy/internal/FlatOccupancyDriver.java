@@ -22,8 +22,8 @@ import org.tinysep.device.support.UnmonitoredRooms;
 
 /**
  * Flat Occupancy driver: creates its single device when the first Movement or Door interface appears (thesis Fig
- * 3.3) and connects it to every later one. The device watches the person: left without any it stays (issue 25,
- * a deliberate deviation from thesis 3.3, docs/architecture.md) and says which rooms it can no longer see.
+ * 3.3) and connects it to every later one. The device watches the person: left without any it stays (a
+ * deliberate deviation from thesis 3.3, docs/architecture.md) and says which rooms it can no longer see.
  */
 @Component(service = {}, immediate = true, configurationPid = FlatOccupancyDriver.PID)
 @Designate(ocd = FlatOccupancyConfig.class)

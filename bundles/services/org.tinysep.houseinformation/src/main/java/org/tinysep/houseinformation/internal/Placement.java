@@ -26,7 +26,7 @@ record Placement(Result result, String detail) {
         } catch (IllegalArgumentException e) {
             return new Placement(Result.UNKNOWN_ROOM, e.getMessage());
         }
-        // given back at once, leaving no use in the registry per device (issue 29)
+        // given back at once, leaving no use in the registry per device
         return ServiceUse.with(context, ref, device -> placeOn(device, room),
                 new Placement(Result.SKIPPED, "the device is gone"));
     }

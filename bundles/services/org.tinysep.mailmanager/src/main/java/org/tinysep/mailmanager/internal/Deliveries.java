@@ -10,7 +10,7 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailDelivery.Outcome;
 
 /**
- * What became of the last {@value #KEPT} messages (issue 12, item 4: delivery you can see), for
+ * What became of the last {@value #KEPT} messages (delivery you can see), for
  * {@code MailManagerProvider.delivery/deliveries}, the alert service and the {@code tinysep:mails} command. In
  * memory only: the spool and the event log are the durable record.
  */

@@ -32,7 +32,7 @@ final class MailManagerDevice extends WholeFlatDevice implements OutboxEvents {
     private static final Logger LOG = LoggerFactory.getLogger(MailManagerDevice.class);
     /**
      * The text of each mail that could not be sent, written to the console instead (logger {@value #MAIL_LOGGER},
-     * WARN): the demo flat turns it down to ERROR so its console gets one line per alert (issue 32 item 5); the
+     * WARN): the demo flat turns it down to ERROR so its console gets one line per alert; the
      * delivery itself is always in the event log.
      */
     static final String MAIL_LOGGER = "tinysep.mail";

@@ -21,7 +21,7 @@ import org.tinysep.sensorhealth.internal.Placements.OnNode;
 import org.tinysep.sensorhealth.internal.Placements.Placement;
 
 /**
- * Every node's health with where it is, kept as an index updated on change (issue 14: rebuilding and sorting the
+ * Every node's health with where it is, kept as an index updated on change (rebuilding and sorting the
  * whole list every second took a quarter of the CPU while 10,000 devices were created). Service events only queue
  * a change; each platform second {@link #tick} applies them, reads each node's health (one cheap call per node:
  * {@code NodeHealthSource} has no change notification) and does further work only for the nodes whose online or

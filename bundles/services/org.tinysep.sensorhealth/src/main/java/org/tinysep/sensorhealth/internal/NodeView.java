@@ -26,7 +26,7 @@ final class NodeView implements AutoCloseable {
         this.sources = new ServiceTracker<>(context, NodeHealthSource.class, new ServiceTrackerCustomizer<>() {
             @Override
             public NodeHealthSource addingService(ServiceReference<NodeHealthSource> ref) {
-                NodeHealthSource s = ServiceUse.take(context, ref); // no use left per node (issue 29)
+                NodeHealthSource s = ServiceUse.take(context, ref); // no use left per node
                 if (s != null) {
                     index.sourceAdded(uid(ref), String.valueOf(ref.getProperty(DeviceProperties.NODE_ADDRESS)),
                             (String) ref.getProperty(DeviceProperties.ROOM), s);

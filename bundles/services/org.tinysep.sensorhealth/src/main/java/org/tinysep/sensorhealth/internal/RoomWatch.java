@@ -84,7 +84,7 @@ final class RoomWatch {
             in.sort(Comparator.comparing(s -> s.node().nodeAddress()));
             List<UnmonitoredRoom> u = Unmonitored.of(in);
             if (u.isEmpty() && unmonitored.containsKey(room) && in.stream().noneMatch(Unmonitored::sensing)) {
-                // issue 25: its sensor device went (removed, re-typed), none was heard: it stays unmonitored
+                // its sensor device went (removed, re-typed), none was heard: it stays unmonitored
                 if (sensorless.add(room)) {
                     gone.add(unmonitored.get(room));
                 }

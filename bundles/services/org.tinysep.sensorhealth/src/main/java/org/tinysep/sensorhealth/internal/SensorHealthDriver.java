@@ -18,7 +18,7 @@ import org.tinysep.device.support.PlatformTicker;
 import org.tinysep.device.support.RoomDirectory;
 
 /**
- * Sensor Health (issue 12): creates its single device at once. It watches every bus device's node health, tells
+ * Sensor Health: creates its single device at once. It watches every bus device's node health, tells
  * caregivers by a notice (a lower-priority mail than an inactivity alert) when a sensor stays silent or its battery
  * runs low, and offers {@code SensorHealthProvider}: which rooms are unmonitored.
  */

@@ -8,7 +8,7 @@ import org.tinysep.device.support.Uids;
 import org.tinysep.device.support.WholeFlatDevice;
 
 /**
- * The GSM modem behind gammu-smsd as a device in the platform's device list (issue 27): ONLINE while SMS can go
+ * The GSM modem behind gammu-smsd as a device in the platform's device list: ONLINE while SMS can go
  * out, ERROR in plain words while they cannot ("the GSM modem cannot send SMS: gammu-smsd is not running ..."),
  * with the words of {@link ModemHealth}. It provides no interface: the SMS channel is the
  * {@code MessageChannel} service; this device is what a caregiver sees in {@code tinysep:devices} and the console.

@@ -32,7 +32,7 @@ final class SyncAuth {
     /**
      * Sessions that carried an accepted, signed request (a synchroniser with the key), kept at most. Only another
      * signed session can push one out: a flood of HELLOs from other ports never evicts the live synchroniser's
-     * session (issue 25, item 8).
+     * session.
      */
     static final int MAX_TRUSTED = 16;
 

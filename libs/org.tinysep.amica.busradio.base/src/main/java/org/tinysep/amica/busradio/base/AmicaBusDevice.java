@@ -183,7 +183,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     /**
      * A keep-alive: the same types, or other types while no device depends on the node, are taken as they are;
-     * other types while devices depend on it are held, counted and reported (issue 25, item 1; {@link NodeTypeGuard}).
+     * other types while devices depend on it are held, counted and reported ({@link NodeTypeGuard}).
      * The frame still counts as heard and is still forwarded (abstraction devices ignore keep-alives).
      */
     private void keepAlive(KeepAlive ka, R from) {

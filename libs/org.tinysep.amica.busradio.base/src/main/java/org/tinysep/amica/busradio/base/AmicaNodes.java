@@ -95,7 +95,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     }
 
     /**
-     * Creates the bus device of a new node, unless the bus radio has {@code maxNodes} already (issue 14: a flood
+     * Creates the bus device of a new node, unless the bus radio has {@code maxNodes} already (a flood
      * of keep-alives from made-up addresses must not create devices without end): then the node is rejected and
      * counted, and the first such rejection is a PROBLEM in the event log.
      *

@@ -54,7 +54,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     private volatile Instant lastStamp;
     /**
      * The packet log's origin text per node and route ("node 1:17 via 127.0.0.1:5000"), formatted once rather than
-     * per frame (issue 29, item 1: formatting the route and the origin was most of the packet log's cost on this
+     * per frame (formatting the route and the origin was most of the packet log's cost on this
      * thread).
      */
     private final Map<Via<R>, String> origins = new ConcurrentHashMap<>();

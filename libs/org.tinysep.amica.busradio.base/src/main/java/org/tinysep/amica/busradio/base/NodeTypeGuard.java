@@ -9,7 +9,7 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.device.Parameter;
 
 /**
- * Keeps a node's type while devices depend on it (issue 25, item 1): a keep-alive is not authenticated, so one
+ * Keeps a node's type while devices depend on it: a keep-alive is not authenticated, so one
  * datagram claiming other node types must not re-type a node and so remove the devices that watch the person. A
  * disagreeing keep-alive is counted, its types are held as <em>pending</em>, and each distinct claim is reported
  * once (at most {@link #MAX_REPORTS} per node: a forger cycling through type sets cannot flood the event log); the
@@ -23,7 +23,7 @@ final class NodeTypeGuard {
     static final String ACCEPT = "acceptNodeTypes";
     /** Distinct claims reported per node; later ones are only counted. */
     static final int MAX_REPORTS = 8;
-    /** The start of every report (the shared "monitoring reduced" contract of issue 25). */
+    /** The start of every report (the caregiver-visible signals of docs/security.md, "Node identity"). */
     static final String PREFIX = "Node type mismatch: ";
 
     /** What a disagreeing keep-alive claimed, and where it came from. */

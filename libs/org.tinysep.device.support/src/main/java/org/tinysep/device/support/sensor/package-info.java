@@ -1,5 +1,5 @@
 /**
- * Sensor abstraction devices as small declarations (issue 16): {@link SensorDevice} owns status, decoding and
+ * Sensor abstraction devices as small declarations: {@link SensorDevice} owns status, decoding and
  * filtering through its {@link Source} (one per node family), change detection, the first-report rule, the
  * {@code state}/{@code since} parameters and the listeners; {@link ContactSensorDevice}, {@link MotionSensorDevice}
  * and {@link MovementSensorDevice} add the rules of their kind once for both node families; {@link SensorDriver}

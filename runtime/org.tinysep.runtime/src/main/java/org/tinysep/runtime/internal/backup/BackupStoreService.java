@@ -106,9 +106,9 @@ public final class BackupStoreService implements BackupStore {
     /**
      * The framework begins to stop (before any bundle stops): the backlog is written at once, and for refreshes of
      * backups already on disk (a device's last state as it stops) the stop's time limit ({@code stopSaveSeconds})
-     * counts from now, the drivers' own stop included (issue 14: 10,000 devices took 38-60 s to stop, the limit then
-     * counted only from this store's own deactivation). Backups with no file yet (devices just created) go first and
-     * keep the limit from the store's deactivation: a device is never lost to a slow stop, a refresh may be.
+     * counts from now, the drivers' own stop included (10,000 devices take 38-60 s to stop, which a limit counted
+     * only from this store's own deactivation would not cover). Backups with no file yet (devices just created) go
+     * first and keep the limit from the store's deactivation: a device is never lost to a slow stop, a refresh may be.
      */
     void frameworkStopping() {
         long now = System.nanoTime();

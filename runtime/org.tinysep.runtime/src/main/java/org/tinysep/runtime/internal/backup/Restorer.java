@@ -34,7 +34,7 @@ final class Restorer {
 
         void startApplications(List<String> problems);
 
-        /** A restore changed these settings (issue 25, item 3): the caregivers are told. */
+        /** A restore changed these settings: the caregivers are told. */
         default void settingsChanged(Path archive, List<String> changes) {
         }
     }

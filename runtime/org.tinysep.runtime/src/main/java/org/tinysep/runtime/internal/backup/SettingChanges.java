@@ -13,7 +13,7 @@ import java.util.TreeSet;
 import java.util.stream.Stream;
 
 /**
- * What a restore changes in {@code etc/*.cfg} (issue 25, item 3): every setting whose value differs before and
+ * What a restore changes in {@code etc/*.cfg}: every setting whose value differs before and
  * after, as {@code <file> <key>: <old> → <new>}; values of passwords and keys are not shown.
  */
 final class SettingChanges {

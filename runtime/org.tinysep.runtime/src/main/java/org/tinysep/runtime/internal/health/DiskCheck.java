@@ -13,7 +13,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 
 /**
- * One check of the state folder's disk (issue 12 item 5, disk-full handling). Below the minimum free space, the
+ * One check of the state folder's disk (disk-full handling). Below the minimum free space, the
  * log history goes first: the oldest packet-log files, then the oldest event-log files, never the file each log is
  * writing, until the minimum is free again. Then one {@code PROBLEM} in plain words per episode (how much is free,
  * what was deleted, what to do); a {@code STATUS} when there is room again. State files are not touched: they are

@@ -25,7 +25,7 @@ import org.tinysep.device.support.AtomicFiles;
 import org.tinysep.device.support.StateFolder;
 
 /**
- * Tells that the platform was restarted after a failure (issue 12 item 5, "cannot die silently"). The launcher (or
+ * Tells that the platform was restarted after a failure (the platform cannot die silently). The launcher (or
  * its supervisor) leaves {@value #FILE} in the state folder when the last run ended without a clean stop: a hang, an
  * error exit, a crash, a power cut. On activation its sentence ("TinySEP was restarted at 10:02 after it stopped
  * responding at 09:58 (Europe/Berlin)") goes to the event log as a {@code PROBLEM}, once; as soon as a Mail Manager

@@ -47,8 +47,8 @@ public final class HistoryLearner {
                 return;
             }
             // an older sighting (a frame replayed late, e.g. by a driver's handover) is sorted in at the next daily
-            // learning, like every sighting of today: it does not make the profile learn anew now (issue 14: that
-            // rebuilt the whole profile once per replayed frame); history read from the log calls loaded()
+            // learning, like every sighting of today: it does not make the profile learn anew now (that
+            // would rebuild the whole profile once per replayed frame); history read from the log calls loaded()
         }
         sightings.add(s);
     }
@@ -106,7 +106,7 @@ public final class HistoryLearner {
     }
 
     /**
-     * What the learner remembers, for its own file beside the rotating event log (issue 25, item 6).
+     * What the learner remembers, for its own file beside the rotating event log.
      *
      * @param sightings the history, in time order
      * @param away      the times the flat was empty

@@ -13,7 +13,7 @@ import java.time.Duration;
  * @param days      how many days of history it was learned from
  * @param periods   how many quiet periods those days held
  * @param allDay    true when it was learned from the room's whole day because the hours asked about had quiet
- *                  periods on too few days (a limit longer than the fixed one is then not used, issue 28)
+ *                  periods on too few days (a limit longer than the fixed one is then not used)
  */
 public record Learned(String roomName, boolean asleep, String scope, Duration usual, Duration limit, int days,
         int periods, boolean allDay) {

@@ -8,7 +8,7 @@ import java.time.Instant;
  * (thesis) limit of the room, never below the floor. Pure Java: the platform's device and an evaluation harness
  * call it alike.
  * <p>
- * Cold start without a switch (issue 11): with history on n days, 1 ≤ n < {@code minDays}, for the room and state
+ * Cold start without a switch: with history on n days, 1 ≤ n < {@code minDays}, for the room and state
  * (at any time of day), the limit is a credibility-weighted mean of what those days taught (L) and the fixed limit
  * (F): Z·L + (1 − Z)·F with Z = √(n / minDays) — the square-root rule of limited-fluctuation credibility (an
  * estimate from n observations gets full weight once n reaches the standard for full credibility, here
@@ -41,7 +41,7 @@ public final class LearnedLimits {
     }
 
     /**
-     * "Never worse than the fixed limits" (issue 28), both ways. Shorter: a limit shorter than the fixed one needs
+     * "Never worse than the fixed limits", both ways. Shorter: a limit shorter than the fixed one needs
      * at least {@code minPeriodsToShorten} observed quiet periods behind it; with fewer the fixed limit holds (a
      * short limit learned from a handful of periods is what raised the learned detector's false alarms). Longer: a
      * limit longer than the fixed one must be learned from the hours it is used at; learned from the room's whole

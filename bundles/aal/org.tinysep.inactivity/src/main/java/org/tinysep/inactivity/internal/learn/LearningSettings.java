@@ -13,7 +13,7 @@ import java.time.Duration;
  * @param floor       a learned limit is never shorter
  * @param ceiling     nor longer (a collapse must be reported within this)
  * @param halfWindow  quiet periods that began this many hours before or after the hour asked for count too
- * @param minPeriodsToShorten "never worse than the fixed limits" (issue 28): a learned limit may be shorter than
+ * @param minPeriodsToShorten "never worse than the fixed limits": a learned limit may be shorter than
  *                    the room's fixed limit only when at least this many observed quiet periods support it; with
  *                    thinner history the fixed (thesis) limit holds. A longer learned limit needs no such support.
  */

@@ -78,7 +78,7 @@ public final class QuietProfile {
     }
 
     /**
-     * Cold start (issue 11): what fewer than {@code minDays} days say about a room and state at any time of day.
+     * Cold start: what fewer than {@code minDays} days say about a room and state at any time of day.
      *
      * Only whole days count: today's first minutes (a new installation, a test) are not a day of history.
      *

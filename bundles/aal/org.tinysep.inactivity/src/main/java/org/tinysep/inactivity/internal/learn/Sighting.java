@@ -14,8 +14,8 @@ import java.util.Objects;
  * @param inBed    true when a bed mat reported the person in bed
  * @param seated   true when a seat mat turned ON with this activity: the person is there and resting (sitting),
  *                 a quiet period that is normal for a resting person, not for one moving about
- * @param upFromBed true when a bed mat turned OFF with this activity: the person got up, so sleep ends (issue 28
- *                 item 2), also in the bedroom at night
+ * @param upFromBed true when a bed mat turned OFF with this activity: the person got up, so sleep ends, also in
+ *                 the bedroom at night
  */
 public record Sighting(Instant at, String room, String roomName, String roomType, boolean inBed, boolean seated,
         boolean upFromBed) {

@@ -8,7 +8,7 @@ import java.util.Locale;
  * Decides whether a quiet period that begins with a sighting is sleep: a bed mat says the person is in bed, or the
  * last activity was in a room of type Bedroom during the night hours. Everything else is an awake quiet period,
  * also at night: getting up at 03:00 and going to the bathroom leaves the sleep state, so the bathroom's own
- * (short) limit applies, not the whole night's. A bed mat turning OFF ends sleep too (issue 28 item 2): a person up
+ * (short) limit applies, not the whole night's. A bed mat turning OFF ends sleep too: a person up
  * at night in the bedroom is watched with the bedroom's awake limit learned for those hours, not the night's.
  *
  * @param nightStart first hour of the night (local), 0..23

@@ -13,7 +13,7 @@ import java.util.function.Function;
 import org.tinysep.api.sensor.person.MovementSummary;
 
 /**
- * Whose activity is what (issue 26, item 4; bundle README "Activity per person"). Pure logic with explicit times.
+ * Whose activity is what (bundle README, "Activity per person"). Pure logic with explicit times.
  * <ul>
  * <li>A person node's movement (a summary whose magnitude spread is above the threshold) is its wearer's activity,
  * wherever they are.</li>

@@ -5,7 +5,7 @@ import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.Notification;
 
 /**
- * Which channel reached whom (issue 27), for the caregiver page: one sentence per message sent about an alert,
+ * Which channel reached whom, for the caregiver page: one sentence per message sent about an alert,
  * e.g. "escalation to Otto by push: delivered (taken by the push server ntfy.example.org for topic otto-topic)".
  */
 final class AlertReach {

@@ -79,7 +79,7 @@ final class AlertsApi {
         m.put("state", a.state().name());
         m.put("contactsReached", a.contactsReached());
         m.put("closedBy", a.closedBy());
-        m.put("reached", AlertReach.lines(a)); // which channel reached whom, in words (issue 27)
+        m.put("reached", AlertReach.lines(a)); // which channel reached whom, in words
         return m;
     }
 }

@@ -42,7 +42,7 @@ final class ApplicationInstaller {
         this.json = json;
     }
 
-    /** The applications that watch the person (issue 25, item 3): an upload does not replace them by default. */
+    /** The applications that watch the person: an upload does not replace them by default. */
     static final java.util.Set<String> WATCHING = java.util.Set.of("org.tinysep.inactivity", "org.tinysep.flatoccupancy",
             "org.tinysep.alerts", "org.tinysep.sensorhealth", "org.tinysep.mailmanager");
 

@@ -81,7 +81,7 @@ public final class CaregiverApi {
         }
         out.put("lastActivity", last);
         out.put("rooms", rooms);
-        out.put("personNodes", PersonNodes.of(platform, now)); // issue 26: wearer, last report, battery, worn, watch
+        out.put("personNodes", PersonNodes.of(platform, now)); // wearer, last report, battery, worn, watch
         out.put("now", now);
         return out;
     }

@@ -19,7 +19,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 
 /**
- * A console that cannot listen is not silent (issue 25, item 7): when the framework has started and the HTTP
+ * A console that cannot listen is not silent: when the framework has started and the HTTP
  * service has not come up within {@value #WAIT_SECONDS} s (Jetty did not start, e.g. its address is taken by
  * another program, which may then serve its own login page), a {@code PROBLEM} entry "Monitoring reduced: the web
  * console cannot listen on …" is written: a caregiver notice and a WARNING under the launcher's banner.

@@ -18,7 +18,7 @@ import org.slf4j.LoggerFactory;
  * Feeds live Server-Sent Events streams from one log: every {@value #PERIOD_MS} ms it reads the log's newest
  * entries ({@code recent}) and hands those with a higher sequence number than seen before to every subscriber,
  * already formatted as SSE messages ({@code id: <sequence>}). One poller per log, whatever the number of
- * streams, and none while no stream is open (issue 14: an idle gateway should not wake up five times a second
+ * streams, and none while no stream is open (an idle gateway should not wake up five times a second
  * for nobody); a subscriber that falls {@value #QUEUE} messages behind is cut off (its browser reconnects with
  * {@code Last-Event-ID} and {@link #subscribe} gives it the gap).
  *

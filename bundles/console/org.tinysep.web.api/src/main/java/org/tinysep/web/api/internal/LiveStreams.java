@@ -12,7 +12,7 @@ import java.util.concurrent.TimeUnit;
  * message with the entry's sequence number as the event id. {@code ?after=<sequence>} or the browser's
  * {@code Last-Event-ID} replays what came after it first. A comment line every {@value #KEEP_ALIVE_S} s keeps the
  * connection open and finds closed ones. A stream ends within {@value #CHECK_MS} ms of its login session ending
- * (logout, a password change, the session's idle time; issue 25, item 5) with an {@code event: ended} message;
+ * (logout, a password change, the session's idle time) with an {@code event: ended} message;
  * the slots per log and per login are {@link StreamSlots}'.
  */
 final class LiveStreams implements AutoCloseable {

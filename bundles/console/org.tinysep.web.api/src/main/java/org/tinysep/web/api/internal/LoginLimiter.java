@@ -9,7 +9,7 @@ import java.time.Instant;
 import java.util.Optional;
 
 /**
- * Rate limit on failed logins (issue 25, item 4), built so that a flood from other addresses cannot lock the right
+ * Rate limit on failed logins, built so that a flood from other addresses cannot lock the right
  * user out:
  * <ul>
  * <li>per address: after {@code maxFailures} failures within {@code window} from one client address (an IPv6

@@ -18,7 +18,7 @@ import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.PersonWatch;
 
 /**
- * The person nodes for the caregiver page ({@code personNodes} of {@code GET /api/caregiver}, issue 26 item 7): per
+ * The person nodes for the caregiver page ({@code personNodes} of {@code GET /api/caregiver}): per
  * node the wearer's name, when it last reported and its battery, whether it is worn, its last movement, where its
  * wearer was last seen and the wearer's own inactivity watch, each also in words. The battery and the last report
  * come from the node's bus device ({@link NodeHealthSource}); the Sun SPOT protocol carries no battery level, which

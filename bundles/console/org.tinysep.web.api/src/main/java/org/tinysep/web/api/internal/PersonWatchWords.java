@@ -7,7 +7,7 @@ import java.util.Map;
 import org.tinysep.api.service.PersonWatch;
 
 /**
- * What Inactivity Recognition knows of a person node's wearer ({@link PersonWatch}, issue 26 item 4) for the
+ * What Inactivity Recognition knows of a person node's wearer ({@link PersonWatch}) for the
  * caregiver page, each also in plain words: whether the node is worn, its last movement, the room where the wearer
  * was last seen, and the wearer's own watch.
  */

@@ -6,7 +6,7 @@ import java.util.Locale;
 import java.util.Optional;
 
 /**
- * Plain HTTP only on this machine (issue 25, item 4): passwords and the session cookie must not cross a network
+ * Plain HTTP only on this machine: passwords and the session cookie must not cross a network
  * readable. A request that came over plain HTTP to an address other than loopback is refused, unless the
  * configuration allows it explicitly ({@code allowPlainHttpOffLoopback=true}, which is then reported); over TLS the
  * console answers on any address and the cookie carries {@code Secure}.

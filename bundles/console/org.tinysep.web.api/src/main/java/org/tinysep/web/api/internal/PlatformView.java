@@ -39,7 +39,7 @@ public final class PlatformView {
     public List<DeviceRef> devices() {
         List<DeviceRef> out = new ArrayList<>();
         for (ServiceReference<Device> ref : refs(Device.class, null)) {
-            Device d = ServiceUse.take(context, ref); // no use left per device in the registry (issue 29)
+            Device d = ServiceUse.take(context, ref); // no use left per device in the registry
             if (d != null) {
                 try {
                     String uid = String.valueOf(ref.getProperty(DeviceProperties.DEVICE_UID));

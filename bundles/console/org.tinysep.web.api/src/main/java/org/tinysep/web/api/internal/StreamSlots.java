@@ -5,7 +5,7 @@ import java.util.Map;
 import org.tinysep.web.api.internal.Sessions.Session;
 
 /**
- * The live-stream slots of one log (issue 25, item 5): at most {@value #TOTAL} streams, at most
+ * The live-stream slots of one log: at most {@value #TOTAL} streams, at most
  * {@value #PER_SESSION} per login session (a browser needs one per open tab), and the caregiver's sessions together
  * at most {@code TOTAL - }{@value #KEPT_FOR_INSTALLER}, so the installer can always open one even when caregivers
  * (or someone with the caregiver's password) hold every other slot.

@@ -9,7 +9,7 @@ import org.tinysep.api.device.ConnectionInfo;
 import org.tinysep.api.device.DeviceStatus;
 
 /**
- * Whether the inactivity watch can see (issue 32, item 3): its sensors are its vital connections (movement, door,
+ * Whether the inactivity watch can see: its sensors are its vital connections (movement, door,
  * window, presence); it is <b>blind</b> when it has none or every one of them is OFFLINE (a sensor follows its
  * radio node), so the caregiver is not told "watching – someone is home" beside "25 of 25 sensors offline".
  *

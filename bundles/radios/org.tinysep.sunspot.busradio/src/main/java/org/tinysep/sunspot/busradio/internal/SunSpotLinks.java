@@ -58,7 +58,7 @@ final class SunSpotLinks implements AutoCloseable {
                     udp.socket().receiveBufferSize());
         } catch (IOException | RuntimeException e) {
             udpState = "cannot listen on " + settings.udpBindAddress() + ":" + port + ": " + e.getMessage();
-            // the shared contract of issue 25 (item 7): a caregiver notice and a WARNING under the banner
+            // a caregiver notice and a WARNING under the banner (docs/security.md, "Nothing reduces monitoring")
             problem("Monitoring reduced: the Sun SPOT radio cannot listen on " + settings.udpBindAddress() + ":"
                     + port + " (" + e.getMessage() + "): no Sun SPOT sensor is heard over UDP. Another program may "
                     + "hold the port: stop it, or set another udpPort in etc/org.tinysep.sunspot.busradio.cfg, then "

@@ -49,7 +49,7 @@ final class SunSpotNodes {
 
     /**
      * @return the bus device of {@code address}, created and registered now if it is new; null when it is new and
-     *         the bus radio has {@code maxNodes} already (issue 14: 2,000 frames from random addresses made 2,000
+     *         the bus radio has {@code maxNodes} already (2,000 frames from random addresses made 2,000
      *         devices): counted, the first one a PROBLEM
      */
     SunSpotBusDevice findOrCreate(SunSpotAddress address, SunSpotSensorType type, String link) {

@@ -23,7 +23,7 @@ import org.tinysep.sunspot.protocol.SunSpotPayloads;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
 
 /**
- * Abstracts one Sun SPOT person node (issue 26): its button reports, movement summaries and burst chunks (sensor
+ * Abstracts one Sun SPOT person node: its button reports, movement summaries and burst chunks (sensor
  * type 6) become {@link PersonNodeListener} calls; bursts are reassembled first ({@link BurstAssembler}). Listeners
  * hear every report. Button changes, complete bursts and bursts given up are event-log entries in words.
  * <p>

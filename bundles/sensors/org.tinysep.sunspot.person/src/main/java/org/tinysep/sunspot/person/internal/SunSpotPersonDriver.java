@@ -6,7 +6,7 @@ import org.tinysep.api.device.NodeType;
 import org.tinysep.device.support.sensor.SensorDriver;
 
 /**
- * Sun SPOT Person (issue 26): one {@link SunSpotPersonDevice} per Sun SPOT bus device of node type {@code person};
+ * Sun SPOT Person: one {@link SunSpotPersonDevice} per Sun SPOT bus device of node type {@code person};
  * nodes of other types are ignored.
  */
 @Component(service = {}, immediate = true)

@@ -102,7 +102,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         if (transport != null) {
             transport.start(this::datagram);
             ticker = new PlatformTicker(bundleContext, NAME, this::tick);
-        } else { // the shared contract of issue 25 (item 7): a caregiver notice and a WARNING under the banner
+        } else { // a caregiver notice and a WARNING under the banner (docs/security.md, "Nothing reduces monitoring")
             context().event(EventKind.PROBLEM, "Monitoring reduced: the AmICA radio cannot listen on "
                     + config.bindAddress() + ":" + config.port() + " (" + why + "): no AmICA "
                     + "sensor is heard. Another program may hold the port: stop it, or set another port in "
