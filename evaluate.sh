@@ -3,7 +3,7 @@
 #   ./evaluate.sh [A|B|<folder with events.csv, labels.csv>] [--collapses N] [--seed S] [--no-readme] ...
 #   ./evaluate.sh falls [folder] [--loso] [--why]   fall detection on SisFall recordings (docs/fall-detection.md)
 #   ./evaluate.sh --engine core [--model uniform|moving|both] [--split half|cvK] [--collapses N] A B A:nomotion B:two
-#     the detector core without the platform (CoreSweep, seconds per home; issue 28): one table for all homes
+#     the detector core without the platform (CoreSweep, seconds per home): one table for all homes
 # SKIP_BUILD=1 uses the last build (the distribution in runtime/org.tinysep.launcher/target/tinysep).
 set -euo pipefail
 cd "$(dirname "$0")"

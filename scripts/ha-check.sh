@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Home Assistant check of the MQTT bridge's discovery (issue 15, item 5). Opt-in: NOT run by ./test.sh.
+# Home Assistant check of the MQTT bridge's discovery. Opt-in: NOT run by ./test.sh.
 #
 #   scripts/ha-check.sh            (from anywhere; needs mosquitto, python3 >= 3.11, network to PyPI the first time)
 #
@@ -98,7 +98,7 @@ etc="$demo/home/etc"
 cat > "$etc/org.tinysep.mqtt.cfg" <<EOF
 brokerUrl=tcp://127.0.0.1:$mport
 flatId=flat-a
-# the check's broker lets anyone in (issue 25 item 2: only with the override; Home Assistant's plain ON/OFF is unsigned)
+# the check's broker lets anyone in (only with the override; Home Assistant's plain ON/OFF is unsigned)
 allowAnonymous=true
 commands.actuators=unsigned
 queueDir=$demo/var/mqtt

@@ -50,7 +50,7 @@ async function refresh() {
     detail.textContent = (c.inactivity.state === 'WATCHING' ? 'Someone is home; an alert is raised when activity stops for longer than the room\'s limit.'
       : 'Nobody seems to be home: not watching.') + (c.inactivity.sight ? ' ' + c.inactivity.sight : '');
   }
-  // the person nodes (issue 26): who wears each, when it last reported, its battery, and from Inactivity
+  // the person nodes: who wears each, when it last reported, its battery, and from Inactivity
   // Recognition's persons(): whether it is worn, its last movement, where its wearer was last seen, the wearer's watch
   const persons = Tiny.clear(document.getElementById('person-nodes'));
   const nodes = c.personNodes || [];
@@ -95,7 +95,7 @@ async function alerts() {
     if (alert.explanation && alert.explanation !== alert.text) {
       list.append(Tiny.el('p', {class: 'alert-explanation'}, alert.explanation));
     }
-    if (alert.reached && alert.reached.length) { // which channel reached whom (issue 27)
+    if (alert.reached && alert.reached.length) { // which channel reached whom
       list.append(Tiny.el('ul', {class: 'muted reached'}, ...alert.reached.map(r => Tiny.el('li', {}, r))));
     }
   }
