@@ -137,7 +137,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         return List.of(Parameter.readOnly("maxNodes", p.maxNodes(), "most nodes this bus radio creates"),
                 Parameter.readOnly("rejected.node_cap", overCap.get(), "frames from new nodes beyond maxNodes"),
                 Parameter.readOnly("typeMismatches", nodes.values().stream().mapToLong(AmicaBusDevice::typeMismatches)
-                        .sum(), "keep-alives of known nodes whose node types disagreed, not applied (issue 25)"),
+                        .sum(), "keep-alives of known nodes whose node types disagreed, not applied"),
                 Parameter.readOnly("silentAfterIntervals", p.silentAfterIntervals(),
                         "missed report intervals that make a node OFFLINE"),
                 Parameter.readOnly("lowBatteryMillivolts", p.lowBatteryMillivolts(),
