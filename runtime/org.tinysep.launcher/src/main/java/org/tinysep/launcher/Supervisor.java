@@ -11,7 +11,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.device.support.Backoff;
+import org.tinysep.device.support.time.Backoff;
 
 /**
  * {@code java -jar tinysep.jar --supervise …}: the same guarantee as systemd's {@code Restart=on-failure} and

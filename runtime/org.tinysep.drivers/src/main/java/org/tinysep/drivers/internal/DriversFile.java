@@ -6,7 +6,7 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.Arrays;
 import java.util.List;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * {@code drivers.xml} on disk. Writes are atomic ({@link AtomicFiles}) and skipped when nothing changed; a malformed

@@ -22,7 +22,7 @@ import org.tinysep.api.backup.BackupStore;
 import org.tinysep.api.drivers.ApplicationEntry;
 import org.tinysep.api.drivers.DriversListService;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The drivers list component (thesis 3.4): loads {@code drivers.xml} (seeding it from the applications folder on

@@ -9,7 +9,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
-import org.tinysep.device.support.ServiceUse;
+import org.tinysep.device.support.lifecycle.ServiceUse;
 
 /**
  * Keeps the directory's devices in step with the registry and announces creation and removal. A device's

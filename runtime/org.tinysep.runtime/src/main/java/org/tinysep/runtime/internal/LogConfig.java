@@ -3,7 +3,7 @@ package org.tinysep.runtime.internal;
 import java.nio.file.Path;
 import java.time.Duration;
 import org.osgi.framework.BundleContext;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

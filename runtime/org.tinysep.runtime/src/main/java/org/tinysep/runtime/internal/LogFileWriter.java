@@ -42,7 +42,7 @@ final class LogFileWriter<E> implements AutoCloseable {
         this.settings = settings;
         this.clock = clock;
         this.kept = kept;
-        org.tinysep.device.support.AtomicFiles.createPrivateDirectories(folder.folder());
+        org.tinysep.device.support.files.AtomicFiles.createPrivateDirectories(folder.folder());
         List<Path> files = folder.files();
         if (!files.isEmpty()) {
             Path last = files.get(files.size() - 1);
@@ -122,7 +122,7 @@ final class LogFileWriter<E> implements AutoCloseable {
     }
 
     private void open(Path path) throws IOException {
-        file = new FileOutputStream(org.tinysep.device.support.AtomicFiles.createPrivateFile(path).toFile(), true);
+        file = new FileOutputStream(org.tinysep.device.support.files.AtomicFiles.createPrivateFile(path).toFile(), true);
         out = new BufferedOutputStream(file, 64 * 1024);
         current = path;
         size = Files.size(path);

@@ -12,7 +12,7 @@ import java.util.List;
 import java.util.function.Predicate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * A log's {@link OriginShare} on disk: {@code <prefix>-per-origin.log} beside the rotating files, in the same line

@@ -23,7 +23,7 @@ import org.tinysep.api.sensor.person.AccelerationBurst;
 import org.tinysep.api.sensor.person.MovementSummary;
 import org.tinysep.api.sensor.person.PersonNodeListener;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Fall Detection: listens to every person node and raises a FALL alert through the alert service when

@@ -17,7 +17,7 @@ import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * Where the person was last seen, for the FALL alert's words: the room of the newest activity the room sensors

@@ -10,7 +10,7 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.HouseInformationProvider;
-import org.tinysep.device.support.TrackedPlacements;
+import org.tinysep.device.support.rooms.TrackedPlacements;
 
 /**
  * Feeds {@link LastSeen} from the platform: every movement, door and presence sensor and House Information, tracked

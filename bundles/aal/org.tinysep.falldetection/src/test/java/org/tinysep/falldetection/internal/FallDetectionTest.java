@@ -27,9 +27,9 @@ import org.tinysep.api.sensor.person.AccelerationBurst;
 import org.tinysep.api.sensor.person.MovementSummary;
 import org.tinysep.api.sensor.person.PersonNodeListener;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.Reporter;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.Reporter;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** The component with a fake node and a fake alert service: a fall on the node becomes a FALL alert in words. */
 class FallDetectionTest {
@@ -121,7 +121,7 @@ class FallDetectionTest {
 
     @Test
     void theAlertSaysWhereThePersonWasLastSeenOrThatNoRoomWasSeen() {
-        LastSeen seen = new LastSeen(new org.tinysep.device.support.Placements() {
+        LastSeen seen = new LastSeen(new org.tinysep.device.support.rooms.Placements() {
             @Override
             public Optional<String> roomOf(String deviceUid) {
                 return Optional.of("r-bath");

@@ -19,7 +19,7 @@ import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.rooms.Placements;
 
 /** Where the person was last seen: the newest indoor activity's room, by name, in the FALL alert's words. */
 class LastSeenTest {

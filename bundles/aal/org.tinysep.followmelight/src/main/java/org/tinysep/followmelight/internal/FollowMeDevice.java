@@ -22,10 +22,10 @@ import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.Placements;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * The one Follow Me Light device (thesis 4.4.4.2). Lights (simple and dimmable) are its vital connections;

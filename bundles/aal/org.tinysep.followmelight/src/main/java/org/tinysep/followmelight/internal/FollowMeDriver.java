@@ -13,10 +13,10 @@ import org.tinysep.api.sensor.Percent;
 import org.tinysep.api.sensor.PetMovementProvider;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.SingleDeviceWiring;
-import org.tinysep.device.support.TrackedPlacements;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.lifecycle.SingleDeviceWiring;
+import org.tinysep.device.support.rooms.TrackedPlacements;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * Follow Me Light driver: creates its single device when the first light (simple or dimmable) appears and

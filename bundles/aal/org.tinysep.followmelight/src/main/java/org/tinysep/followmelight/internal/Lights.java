@@ -11,7 +11,7 @@ import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.actuator.SimpleLightProvider;
 import org.tinysep.api.device.Provider;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * The connected lights, found by room through the {@link Placements} at the moment of switching. Remembers

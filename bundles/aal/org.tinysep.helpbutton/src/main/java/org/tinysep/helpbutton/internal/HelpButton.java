@@ -25,7 +25,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.sensor.person.ButtonEvent;
 import org.tinysep.api.sensor.person.PersonNodeListener;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
-import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * The help button (README): listens to every person node's switches and hands help calls to the alert service.

@@ -25,7 +25,7 @@ import org.tinysep.api.service.Room;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * Turns "device X reported something at T" into an {@link Activity}: the room from the device's

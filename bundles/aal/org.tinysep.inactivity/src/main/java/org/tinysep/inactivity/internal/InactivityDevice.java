@@ -34,11 +34,11 @@ import org.tinysep.api.service.InactivityRecognitionProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.Placements;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;

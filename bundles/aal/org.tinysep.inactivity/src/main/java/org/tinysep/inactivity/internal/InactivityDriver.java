@@ -31,11 +31,11 @@ import org.tinysep.inactivity.internal.person.WearerSettings;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.SingleDeviceWiring;
-import org.tinysep.device.support.TrackedPlacements;
-import org.tinysep.device.support.UnmonitoredRooms;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.lifecycle.SingleDeviceWiring;
+import org.tinysep.device.support.rooms.TrackedPlacements;
+import org.tinysep.device.support.rooms.UnmonitoredRooms;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * Inactivity Recognition driver: creates its single device when the first activity source (Movement, Door or
@@ -95,7 +95,7 @@ public final class InactivityDriver extends AbstractDriver {
         ticker = new PlatformTicker(bundleContext, "inactivity", now -> wiring.current().forEach(d -> d.tick(now)));
         if (fromLog != null) {
             int days = learner.settings().historyDays();
-            java.nio.file.Path folder = org.tinysep.device.support.StateFolder.resolveOrDataArea(null, bundleContext,
+            java.nio.file.Path folder = org.tinysep.device.support.files.StateFolder.resolveOrDataArea(null, bundleContext,
                     "inactivity");
             memory = folder == null ? null : new LearnedMemory(folder.resolve("learned-history.txt"));
             loader = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "inactivity-history"));

@@ -8,7 +8,7 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.QuietGaps;
 import org.tinysep.inactivity.internal.learn.Sighting;

@@ -3,7 +3,7 @@ package org.tinysep.inactivity.internal;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.LongSupplier;
-import org.tinysep.device.support.Placements;
+import org.tinysep.device.support.rooms.Placements;
 
 /**
  * The "room" of a device without one, "unknown room (device Hall sensor)", looked up at most once per device per

@@ -13,9 +13,9 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * Issue 10 items 1 and 2 with a fake clock: the clock going back (virtual time, then real time; a backup from the

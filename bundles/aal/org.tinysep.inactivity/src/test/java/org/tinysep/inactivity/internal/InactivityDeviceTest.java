@@ -17,10 +17,10 @@ import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
 import org.tinysep.device.support.testing.FakeHouse;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** The device wired to fakes of its providers: rooms from the directory, one mail per alert. */
 class InactivityDeviceTest {

@@ -18,9 +18,9 @@ import org.tinysep.api.service.InactivityState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.PersonWatch;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 import org.tinysep.inactivity.internal.person.WearerSettings;
 
 /** The device with person nodes (README "Activity per person"): each wearer watched on their own. */

@@ -6,9 +6,9 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 
 /**
  * The bridge as a device ({@code tinysep:devices}, web console): its status says whether the broker is reachable

@@ -22,7 +22,7 @@ import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.health.SensorHealth;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.RoomDirectory;
+import org.tinysep.device.support.rooms.RoomDirectory;
 
 /**
  * Reads every sensor's and actuator's state from its provider (every {@code pollSeconds}, on the bridge's thread)

@@ -11,8 +11,8 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
 
 /**
  * The MQTT bridge: like the Mail Manager a driver with its one device, created at once. Installed by

@@ -10,7 +10,7 @@ import java.util.function.Supplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.device.support.Backoff;
+import org.tinysep.device.support.time.Backoff;
 
 /**
  * The bridge's side of the link, on the bridge's thread: what the broker's answers do (connected: publish the

@@ -25,9 +25,9 @@ import org.tinysep.api.channel.ReplyHandler;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
+import org.tinysep.device.support.time.PlatformClock;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * The alert service (README): raises, keeps, repeats, escalates, acknowledges and clears alerts. Every change is

@@ -19,7 +19,7 @@ import org.tinysep.api.alert.AlertState;
 import org.tinysep.api.alert.Notification;
 import org.tinysep.api.alert.NotificationStep;
 import org.tinysep.api.service.MailDelivery;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * The alerts on disk: one UTF-8 properties file written atomically (temporary file, fsync, rename,

@@ -10,7 +10,7 @@ import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.device.Device;
-import org.tinysep.device.support.ServiceUse;
+import org.tinysep.device.support.lifecycle.ServiceUse;
 import org.tinysep.api.health.SensorHealth;
 import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.device.DeviceStatus;

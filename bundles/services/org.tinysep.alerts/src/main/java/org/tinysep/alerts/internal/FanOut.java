@@ -7,7 +7,7 @@ import java.util.concurrent.TimeUnit;
 import org.tinysep.api.alert.Alert;
 import org.tinysep.api.alert.AlertListener;
 import org.tinysep.api.device.Connection;
-import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.lifecycle.Listeners;
 
 /** Tells the alert listeners of each change, in order, on a thread of its own (never the caller's). */
 final class FanOut implements AutoCloseable {

@@ -26,8 +26,8 @@ import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.AtomicFiles;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.AtomicFiles;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * Turns the event log's "monitoring reduced" and "node type mismatch" {@code PROBLEM} entries into a notice mail

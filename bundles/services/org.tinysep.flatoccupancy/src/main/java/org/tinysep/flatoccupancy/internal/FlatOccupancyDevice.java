@@ -31,10 +31,10 @@ import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.FlatOccupancyListener;
 import org.tinysep.api.service.FlatOccupancyProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 
 /**
  * The one Flat Occupancy device (thesis 4.4.3.1). Connects to every Movement and Door provider; each connection

@@ -15,10 +15,10 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.ProviderTracker;
-import org.tinysep.device.support.UnmonitoredRooms;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.lifecycle.ProviderTracker;
+import org.tinysep.device.support.rooms.UnmonitoredRooms;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * Flat Occupancy driver: creates its single device when the first Movement or Door interface appears (thesis Fig

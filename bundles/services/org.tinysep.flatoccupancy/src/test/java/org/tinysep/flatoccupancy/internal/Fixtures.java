@@ -18,9 +18,9 @@ import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * What these tests build: the device (T = 10 min, G = 10 s) and the sensors they hand to it directly, of which

@@ -15,10 +15,10 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * Issue 10 items 1 and 2 for Flat Occupancy: a restart resumes the saved decision (not UNKNOWN), a leave check

@@ -11,7 +11,7 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.logs.RecordingLogs;
 
 /** Door reports through the device: a door node's first report is its resting state, not a closing. */
 class FlatOccupancyDeviceTest {

@@ -15,7 +15,7 @@ import org.tinysep.api.sensor.WindowProvider;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.Occupancy;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.logs.RecordingLogs;
 
 /**
  * Presence from all evidence (issue 11): a home without a single motion sensor — front door, an inner door, a

@@ -7,7 +7,7 @@ import java.util.function.Supplier;
 import java.util.stream.Collectors;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.Rooms;
+import org.tinysep.device.support.rooms.Rooms;
 
 /**
  * What the house shell commands do, framework-free: each returns its output as text or throws

@@ -15,11 +15,11 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.HouseInformationListener;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Rooms;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
+import org.tinysep.device.support.rooms.Rooms;
 
 /**
  * The House Information device: holds the plan, validates every change, saves it, then tells listeners and the

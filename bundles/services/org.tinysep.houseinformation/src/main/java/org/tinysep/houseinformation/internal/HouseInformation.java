@@ -8,8 +8,8 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
 
 /**
  * House Information driver: creates its single device at once on activation, since it needs nothing else (thesis

@@ -6,9 +6,9 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.RoomDirectory;
-import org.tinysep.device.support.ServiceUse;
-import org.tinysep.device.support.Rooms;
+import org.tinysep.device.support.lifecycle.ServiceUse;
+import org.tinysep.device.support.rooms.RoomDirectory;
+import org.tinysep.device.support.rooms.Rooms;
 
 /** One attempt to place one device by a rule, and its outcome. */
 record Placement(Result result, String detail) {

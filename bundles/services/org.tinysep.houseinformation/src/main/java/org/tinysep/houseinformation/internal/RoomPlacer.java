@@ -21,7 +21,7 @@ import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.HouseInformationProvider;
-import org.tinysep.device.support.Reporter;
+import org.tinysep.device.support.logs.Reporter;
 
 /**
  * Places devices in rooms by their node address (the wire protocols carry no rooms): tracks the Device services

@@ -16,9 +16,9 @@ import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** Changes are validated, saved, then announced; a malformed file makes the device report ERROR. */
 class HouseDeviceTest {

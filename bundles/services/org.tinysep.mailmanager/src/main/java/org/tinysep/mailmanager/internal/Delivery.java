@@ -7,7 +7,7 @@ import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
-import org.tinysep.device.support.Backoff;
+import org.tinysep.device.support.time.Backoff;
 
 /**
  * One delivery attempt of one message and what follows from it (README, "Retry and give-up policy"): recipients

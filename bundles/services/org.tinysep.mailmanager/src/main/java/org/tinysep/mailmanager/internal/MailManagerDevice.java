@@ -15,10 +15,10 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerListener;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 
 /**
  * The Mail Manager device (thesis 4.4.3.3): created at once by its driver, it takes send requests from any device

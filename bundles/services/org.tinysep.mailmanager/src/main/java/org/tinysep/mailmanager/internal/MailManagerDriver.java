@@ -14,8 +14,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
 
 /**
  * Mail Manager driver (thesis 4.4.3.3): like House Information it creates its one device at once, with no

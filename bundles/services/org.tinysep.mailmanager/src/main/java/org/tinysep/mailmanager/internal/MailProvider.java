@@ -8,7 +8,7 @@ import org.tinysep.api.service.MailDelivery;
 import org.tinysep.api.service.MailManagerListener;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.lifecycle.Listeners;
 
 /**
  * The MailManagerProvider side of the device: a separate object because {@code MailManagerProvider.status()} and

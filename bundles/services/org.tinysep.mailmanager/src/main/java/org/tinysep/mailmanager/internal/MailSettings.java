@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Pattern;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The validated Mail Manager configuration. {@link #toString()} and {@link #redacted()} never show the password.

@@ -15,7 +15,7 @@ import java.util.List;
 import java.util.Properties;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * The queue on disk: one {@code <id>.mail} file per message (UTF-8 properties), written atomically (temporary

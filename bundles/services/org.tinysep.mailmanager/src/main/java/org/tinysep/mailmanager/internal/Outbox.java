@@ -13,7 +13,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.device.support.Backoff;
+import org.tinysep.device.support.time.Backoff;
 
 /**
  * The sending engine: a FIFO queue mirrored in a {@link MailSpool}, worked off one message at a time on its own

@@ -21,7 +21,7 @@ import java.util.Properties;
 import org.eclipse.angus.mail.util.MailConnectException;
 import org.eclipse.angus.mail.smtp.SMTPAddressFailedException;
 import org.eclipse.angus.mail.smtp.SMTPSendFailedException;
-import org.tinysep.device.support.TrustedCertificates;
+import org.tinysep.device.support.files.TrustedCertificates;
 
 /**
  * Sends one message through SMTP with Jakarta Mail (embedded privately in this bundle). Jakarta Mail and

@@ -16,9 +16,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.BooleanSupplier;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.service.MailStatus;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** Builds Mail Manager devices outside a framework, records their events and captures System.err (slf4j-simple). */
 final class MailHarness implements AutoCloseable {

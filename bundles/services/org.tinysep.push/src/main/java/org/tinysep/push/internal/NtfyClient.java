@@ -12,7 +12,7 @@ import javax.net.ssl.SSLException;
 import org.tinysep.api.channel.ChannelDelivery;
 import org.tinysep.api.channel.ChannelMessage;
 import org.tinysep.api.service.MailDelivery;
-import org.tinysep.device.support.TrustedCertificates;
+import org.tinysep.device.support.files.TrustedCertificates;
 
 /**
  * ntfy's HTTP publish as JSON (https://docs.ntfy.sh/publish/#publish-as-json): one POST to the server's root with

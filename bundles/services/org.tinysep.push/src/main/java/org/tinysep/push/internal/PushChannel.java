@@ -20,7 +20,7 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailDelivery;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The push channel (README): a contact's {@code push:topic} address is an ntfy topic; each message is one HTTPS

@@ -10,7 +10,7 @@ import org.osgi.util.tracker.ServiceTrackerCustomizer;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.health.NodeHealthSource;
-import org.tinysep.device.support.ServiceUse;
+import org.tinysep.device.support.lifecycle.ServiceUse;
 import org.tinysep.sensorhealth.internal.Placements.OnNode;
 
 /**

@@ -15,11 +15,11 @@ import org.tinysep.api.health.SensorHealthProvider;
 import org.tinysep.api.health.UnmonitoredRoom;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.HealthWords;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.health.HealthWords;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 import org.tinysep.sensorhealth.internal.Notices.Notice;
 
 /**

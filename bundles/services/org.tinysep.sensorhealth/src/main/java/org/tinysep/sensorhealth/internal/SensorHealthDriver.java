@@ -13,9 +13,9 @@ import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.MailManagerProvider;
 import org.tinysep.api.service.Room;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.RoomDirectory;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.rooms.RoomDirectory;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * Sensor Health: creates its single device at once. It watches every bus device's node health, tells

@@ -3,9 +3,9 @@ package org.tinysep.sms.internal;
 import java.util.List;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 
 /**
  * The GSM modem behind gammu-smsd as a device in the platform's device list: ONLINE while SMS can go

@@ -5,7 +5,7 @@ import java.util.List;
 import org.osgi.framework.BundleContext;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.AbstractDriver;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
 
 /**
  * The driver of the {@link ModemDevice}, opened and closed by the SMS channel (not a component of its own: the

@@ -27,7 +27,7 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailDelivery;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The SMS channel (README): alerts go out as SMS through gammu-smsd's files spool ({@link Spool}), replies that

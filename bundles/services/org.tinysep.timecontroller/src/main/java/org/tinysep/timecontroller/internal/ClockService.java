@@ -8,7 +8,7 @@ import org.tinysep.api.device.Connection;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerListener;
 import org.tinysep.api.service.TimeControllerProvider;
-import org.tinysep.device.support.Listeners;
+import org.tinysep.device.support.lifecycle.Listeners;
 
 /**
  * The {@link TimeControllerProvider} service of the Time Controller device: the clock plus its listeners.

@@ -11,9 +11,9 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.RejectSampler;
-import org.tinysep.device.support.SourceGate;
+import org.tinysep.device.support.intake.RejectSampler;
+import org.tinysep.device.support.intake.SourceGate;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * The platform side of the synchroniser protocol: one datagram in, one answer out. TICK and BYE must be signed

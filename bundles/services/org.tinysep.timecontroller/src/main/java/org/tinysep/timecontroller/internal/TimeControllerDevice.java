@@ -10,9 +10,9 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Uids;
-import org.tinysep.device.support.WholeFlatDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Uids;
+import org.tinysep.device.support.lifecycle.WholeFlatDevice;
 
 /**
  * The one Time Controller device (thesis 4.4.3.4), created as soon as the driver starts: it needs no other device.

@@ -25,9 +25,9 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.SourceGate;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
+import org.tinysep.device.support.intake.SourceGate;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
 
 /**
  * Time Controller driver (thesis 4.4.3.4): creates its single device at once, opens the synchroniser link and

@@ -20,9 +20,9 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.api.service.ClockMode;
 import org.tinysep.api.service.TimeControllerListener;
 import org.tinysep.api.service.TimeControllerProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 import org.tinysep.link.sync.SyncSecret;
 
 /**
@@ -178,7 +178,7 @@ class SyncLinkTest {
         DriverContext context = new DriverContext(null, "driver-uid", "TimeController", logs.reporter(),
                 new PlatformClock(() -> T0));
         SyncProtocol guarded = new SyncProtocol(context, clock, auth, () -> { },
-                org.tinysep.device.support.SourceGate.of("0.0.0.0", "127.0.0.1", 0));
+                org.tinysep.device.support.intake.SourceGate.of("0.0.0.0", "127.0.0.1", 0));
         try (SyncLink open = SyncLink.open("0.0.0.0", 0);
                 DatagramSocket stranger = new DatagramSocket(0, InetAddress.getByName("127.0.0.2"))) {
             open.start(guarded);

@@ -17,12 +17,12 @@ import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.ConfirmedSetting;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.ParameterValues;
-import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.ConfirmedSetting;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.ParameterValues;
+import org.tinysep.device.support.lifecycle.Uids;
 
 /**
  * Abstracts one AmICA percent-actuator node. Its status payload of type {@code P} reports the value (a

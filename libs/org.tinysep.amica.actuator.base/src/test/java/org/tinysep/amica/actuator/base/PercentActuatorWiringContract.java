@@ -20,7 +20,7 @@ import org.tinysep.amica.protocol.LightControl;
 import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.testing.TestPlatform;
 
 /**

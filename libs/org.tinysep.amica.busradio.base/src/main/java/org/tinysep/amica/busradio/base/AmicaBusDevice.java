@@ -27,14 +27,14 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.health.NodeHealthSource;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.HealthWords;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.NodePolicy;
-import org.tinysep.device.support.NodeWatch;
-import org.tinysep.device.support.ReportRates;
-import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.health.HealthWords;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.health.NodeWatch;
+import org.tinysep.device.support.health.ReportRates;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
 
 /**
  * One AmICA sensor node as seen through a bus radio (thesis 4.4.1). Forwards every valid payload to its listeners

@@ -15,10 +15,10 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.Backups;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.Backups;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * The node table of a bus radio and the way out to the nodes: creates a bus device per node (registered through

@@ -13,7 +13,7 @@ import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.ReedSwitchStatus;
 import org.tinysep.amica.protocol.SpeakerControl;
 import org.tinysep.api.packet.PacketDescriber;
-import org.tinysep.device.support.FrameWords;
+import org.tinysep.device.support.intake.FrameWords;
 
 /**
  * AmICA frames in words for the packet log's readers. Each AmICA bus radio bundle registers it as a

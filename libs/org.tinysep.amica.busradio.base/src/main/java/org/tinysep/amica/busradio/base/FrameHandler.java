@@ -12,9 +12,9 @@ import org.tinysep.amica.protocol.AmicaProtocolException;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.Direction;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PacketIntake;
-import org.tinysep.device.support.RejectCounter;
+import org.tinysep.device.support.intake.PacketIntake;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Turns one frame into a delivery to a bus device, a new bus device (keep-alive from an unknown node), or a

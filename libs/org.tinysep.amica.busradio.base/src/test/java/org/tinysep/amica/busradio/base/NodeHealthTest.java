@@ -19,7 +19,7 @@ import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.health.NodePolicy;
 
 /** Sensor health of AmICA bus devices (issue 12.1) and the node cap (issue 14), without a framework. */
 class NodeHealthTest {

@@ -10,10 +10,10 @@ import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.RejectReason;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
-import org.tinysep.device.support.RejectCounter;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * The base parts wired like a bus radio driver wires them, without a framework: a route is a plain string and the

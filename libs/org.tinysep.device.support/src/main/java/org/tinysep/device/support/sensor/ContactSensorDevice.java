@@ -1,7 +1,7 @@
 package org.tinysep.device.support.sensor;
 
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * A contact (a reed switch on a door or a window): OPEN or CLOSED, UNKNOWN before the first report; listeners and

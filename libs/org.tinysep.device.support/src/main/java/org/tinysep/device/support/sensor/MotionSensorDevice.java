@@ -5,7 +5,7 @@ import java.util.Optional;
 import java.util.function.Function;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.MovementEvent;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * A movement sensor, of a person or of a pet: every report goes to the listeners, motion or not; only changes

@@ -9,7 +9,7 @@ import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.MovementListener;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.MovementProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * A person's movement sensor: a {@link MotionSensorDevice} that watches INSIDE (default) or OUTSIDE the flat, the

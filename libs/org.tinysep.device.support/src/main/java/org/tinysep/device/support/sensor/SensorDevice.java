@@ -13,10 +13,10 @@ import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.device.Provider;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.Uids;
 
 /**
  * What every sensor abstraction device does, written once: a stable UID from its driver and bus device, the node

@@ -1,9 +1,9 @@
 package org.tinysep.device.support.sensor;
 
 import java.util.function.BiFunction;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.NodeTypeDriver;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.NodeTypeDriver;
 
 /**
  * A sensor bundle's driver: one device per bus device (of type {@code P}) whose {@code tinysep.node.type} contains

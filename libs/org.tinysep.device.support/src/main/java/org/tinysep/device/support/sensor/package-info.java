@@ -5,9 +5,11 @@
  * and {@link MovementSensorDevice} add the rules of their kind once for both node families; {@link SensorDriver}
  * is the driver. A sensor declares its listener call to the constructor ({@link SensorDevice.ListenerCall}, e.g.
  * {@code DoorListener::doorChanged}) or overrides {@code tell}; 2.0: {@link ContactSensorDevice} takes the call
- * only. Compiled into each sensor bundle like the rest of device support ({@code -conditionalpackage}).
+ * only; 3.0: the device support types in its signatures moved to the job packages ({@code DriverContext},
+ * {@code AbstractDevice}, {@code NodeTypeDriver} to {@code org.tinysep.device.support.lifecycle}). Compiled into
+ * each sensor bundle like the rest of device support ({@code -conditionalpackage: org.tinysep.device.support.*}).
  */
-@Version("2.0.0")
+@Version("3.0.0")
 package org.tinysep.device.support.sensor;
 
 import org.osgi.annotation.versioning.Version;

@@ -15,11 +15,11 @@ import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.OpenState;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
 import org.tinysep.device.support.testing.FakeAmicaBus;
 import org.tinysep.device.support.testing.FakeSunSpotBus;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** The shared behaviour of sensor devices, on a door declared in a few lines over a made-up payload format. */
 class SensorDeviceTest {

@@ -13,7 +13,7 @@ import java.util.regex.Pattern;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipInputStream;
 import javax.crypto.Mac;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * Streams an archive into a staging folder, entry by entry, counting the bytes as they are inflated (the sizes

@@ -9,7 +9,7 @@ import java.util.Map;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
 import javax.crypto.Mac;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * Writes the configuration archive of {@code tinysep:backup} (docs/backup.md): a zip of the entries

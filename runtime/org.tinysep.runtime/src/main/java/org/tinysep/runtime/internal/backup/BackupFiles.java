@@ -9,8 +9,8 @@ import java.util.List;
 import java.util.function.BiConsumer;
 import java.util.stream.Stream;
 import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.device.support.AtomicBatch;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicBatch;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * The backup files on disk: reads them all (a damaged one is moved aside and reported, the others still load),

@@ -26,7 +26,7 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.backup.ComponentKind;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The device manager's backup store (thesis 3.7): on activation reads every backup file (damaged ones are moved

@@ -12,7 +12,7 @@ import java.util.function.BiConsumer;
 import java.util.function.Function;
 import java.util.function.Predicate;
 import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.device.support.AtomicBatch;
+import org.tinysep.device.support.files.AtomicBatch;
 
 /**
  * Writes backups on the store's own thread: saves of one component before its write are coalesced (the newest

@@ -10,7 +10,7 @@ import java.util.TreeMap;
 import java.util.Optional;
 import java.util.stream.Stream;
 import javax.crypto.Mac;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * {@code tinysep:restore} without OSGi (docs/backup.md § Restore): all or nothing. The archive is streamed into a

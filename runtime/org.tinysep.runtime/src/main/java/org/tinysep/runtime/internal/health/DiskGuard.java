@@ -11,7 +11,7 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * Runs {@link DiskCheck} on the state folder ({@code ${tinysep.var}}, its log history in {@code log/}) every

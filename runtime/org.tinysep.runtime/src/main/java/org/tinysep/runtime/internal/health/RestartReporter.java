@@ -21,8 +21,8 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
 import org.tinysep.api.service.MailManagerProvider;
-import org.tinysep.device.support.AtomicFiles;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.AtomicFiles;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * Tells that the platform was restarted after a failure (the platform cannot die silently). The launcher (or

@@ -342,7 +342,7 @@ class RestoreTest {
     @Test
     void stateFilesAreWrittenPrivate() throws Exception {
         Path house = var.resolve("fresh/house.xml");
-        org.tinysep.device.support.AtomicFiles.write(house, HOUSE.getBytes(StandardCharsets.UTF_8));
+        org.tinysep.device.support.files.AtomicFiles.write(house, HOUSE.getBytes(StandardCharsets.UTF_8));
         assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(house)));
         assertEquals("rwx------", PosixFilePermissions.toString(Files.getPosixFilePermissions(house.getParent())));
         store.save(BackupStoreServiceTest.device("u-9", "x", "r-1", Instant.parse("2026-11-23T10:00:00Z")));

@@ -6,7 +6,7 @@ import org.tinysep.api.actuator.DimmableLightListener;
 import org.tinysep.api.actuator.DimmableLightProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Abstracts one AmICA light node as a dimmable light: Light Control status payloads (5 2 0 A) report the

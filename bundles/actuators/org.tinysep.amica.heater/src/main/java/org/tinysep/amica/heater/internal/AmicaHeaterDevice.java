@@ -6,7 +6,7 @@ import org.tinysep.api.actuator.HeaterListener;
 import org.tinysep.api.actuator.HeaterProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Abstracts one AmICA heater node: Heater Control status payloads (5 8 0 A) report the potency,

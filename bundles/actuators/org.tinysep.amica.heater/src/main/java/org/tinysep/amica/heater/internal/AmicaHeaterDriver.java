@@ -3,7 +3,7 @@ package org.tinysep.amica.heater.internal;
 import org.osgi.service.component.annotations.Component;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.device.support.NodeTypeDriver;
+import org.tinysep.device.support.lifecycle.NodeTypeDriver;
 
 /**
  * AmICA Heater (thesis 4.4.2.5): one {@link AmicaHeaterDevice} per AmICA bus device of node type

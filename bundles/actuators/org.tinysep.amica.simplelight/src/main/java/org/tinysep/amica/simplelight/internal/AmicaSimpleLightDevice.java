@@ -16,12 +16,12 @@ import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.NodeType;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.ConfirmedSetting;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.Listeners;
-import org.tinysep.device.support.ParameterValues;
-import org.tinysep.device.support.Uids;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.ConfirmedSetting;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.lifecycle.Listeners;
+import org.tinysep.device.support.lifecycle.ParameterValues;
+import org.tinysep.device.support.lifecycle.Uids;
 
 /**
  * Abstracts one AmICA light node as an on/off light. Light Control status payloads (5 2 0 A) report the light:

@@ -6,7 +6,7 @@ import org.tinysep.api.actuator.SpeakerListener;
 import org.tinysep.api.actuator.SpeakerProvider;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.NodeType;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Abstracts one AmICA speaker node: Speaker Control status payloads report the volume,

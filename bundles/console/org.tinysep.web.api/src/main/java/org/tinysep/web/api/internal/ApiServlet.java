@@ -70,7 +70,7 @@ public final class ApiServlet extends HttpServlet {
         this.rooms = new RoomsApi(platform);
         this.logs = new LogsApi(platform, descriptions);
         this.caregiver = new CaregiverApi(platform);
-        java.nio.file.Path web = org.tinysep.device.support.StateFolder.resolveOrDataArea(null, context, "web");
+        java.nio.file.Path web = org.tinysep.device.support.files.StateFolder.resolveOrDataArea(null, context, "web");
         this.applications = new ApplicationsApi(context, platform,
                 (web == null ? java.nio.file.Path.of("tinysep-web") : web).resolve("uploads").toAbsolutePath());
         this.timeline = new TimelineApi(platform);

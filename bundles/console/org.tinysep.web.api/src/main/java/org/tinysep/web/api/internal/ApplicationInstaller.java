@@ -17,7 +17,7 @@ import org.osgi.framework.wiring.FrameworkWiring;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.drivers.ApplicationEntry;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * Installs, updates and uninstalls applications for {@link ApplicationsApi}: an upload is kept as

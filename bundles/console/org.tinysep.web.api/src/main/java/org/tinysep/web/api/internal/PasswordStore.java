@@ -12,7 +12,7 @@ import java.util.Optional;
 import java.util.Properties;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.device.support.AtomicFiles;
+import org.tinysep.device.support.files.AtomicFiles;
 
 /**
  * The console's password hashes, one per role. Two sources: the file {@code passwords.properties} in the state

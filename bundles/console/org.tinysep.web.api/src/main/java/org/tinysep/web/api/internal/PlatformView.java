@@ -13,7 +13,7 @@ import org.osgi.framework.Constants;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
 import org.tinysep.api.device.Device;
-import org.tinysep.device.support.ServiceUse;
+import org.tinysep.device.support.lifecycle.ServiceUse;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
 

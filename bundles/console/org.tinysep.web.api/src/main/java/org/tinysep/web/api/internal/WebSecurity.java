@@ -16,7 +16,7 @@ import org.slf4j.LoggerFactory;
 import org.osgi.service.component.annotations.Reference;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.device.support.StateFolder;
+import org.tinysep.device.support.files.StateFolder;
 
 /**
  * The console's security state, shared by the login filter, the API and the shell command: passwords, sessions,

@@ -1,6 +1,6 @@
 package org.tinysep.sunspot.busradio.internal;
 
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * What every link of the bus radio feeds, built once by {@link SunSpotLinks#start}: the one decoder path, the node

@@ -2,9 +2,9 @@ package org.tinysep.sunspot.busradio.internal;
 
 import java.time.Instant;
 import org.tinysep.api.log.Direction;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PacketIntake;
-import org.tinysep.device.support.RejectCounter;
+import org.tinysep.device.support.intake.PacketIntake;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.sunspot.protocol.RejectReason;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
 import org.tinysep.sunspot.protocol.SunSpotFrame;

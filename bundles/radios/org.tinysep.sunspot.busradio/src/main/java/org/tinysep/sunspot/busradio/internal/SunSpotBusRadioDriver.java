@@ -12,12 +12,12 @@ import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.NodePolicy;
-import org.tinysep.device.support.PlatformTicker;
-import org.tinysep.device.support.RejectCounter;
-import org.tinysep.device.support.RejectTotals;
-import org.tinysep.device.support.SourceGate;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.intake.RejectTotals;
+import org.tinysep.device.support.intake.SourceGate;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.time.PlatformTicker;
 import org.tinysep.sunspot.protocol.RejectReason;
 
 /**

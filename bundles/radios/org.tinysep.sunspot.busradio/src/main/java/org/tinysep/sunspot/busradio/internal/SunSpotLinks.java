@@ -9,8 +9,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.Closeables;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.Closeables;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * The three links of the bus radio, built from one configuration and feeding one {@link PacketHandler}: UDP,
@@ -72,7 +72,7 @@ final class SunSpotLinks implements AutoCloseable {
     }
 
     /** Sets who may send on the UDP link (docs/security.md); call before {@link #start}. */
-    void gate(org.tinysep.device.support.SourceGate gate, java.util.function.Consumer<String> problems) {
+    void gate(org.tinysep.device.support.intake.SourceGate gate, java.util.function.Consumer<String> problems) {
         if (udp != null) {
             udp.gate(gate, problems);
         }

@@ -9,10 +9,10 @@ import java.util.function.UnaryOperator;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDevice;
-import org.tinysep.device.support.Backups;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.lifecycle.AbstractDevice;
+import org.tinysep.device.support.lifecycle.Backups;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotSensorType;
 

@@ -4,7 +4,7 @@ import java.util.Optional;
 import java.util.regex.Pattern;
 import org.osgi.service.component.annotations.Component;
 import org.tinysep.api.packet.PacketDescriber;
-import org.tinysep.device.support.FrameWords;
+import org.tinysep.device.support.intake.FrameWords;
 import org.tinysep.sunspot.protocol.BurstChunk;
 import org.tinysep.sunspot.protocol.ButtonReport;
 import org.tinysep.sunspot.protocol.LightStatus;

@@ -5,7 +5,7 @@ import java.net.InetSocketAddress;
 import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import org.tinysep.device.support.SourceGate;
+import org.tinysep.device.support.intake.SourceGate;
 import org.tinysep.link.udp.DatagramLink;
 
 /**

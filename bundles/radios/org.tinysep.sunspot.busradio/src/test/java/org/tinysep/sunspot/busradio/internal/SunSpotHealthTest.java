@@ -10,7 +10,7 @@ import static org.tinysep.sunspot.busradio.internal.TestBus.frame;
 
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.DeviceStatus;
-import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.health.NodePolicy;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.TemperatureStatus;
 

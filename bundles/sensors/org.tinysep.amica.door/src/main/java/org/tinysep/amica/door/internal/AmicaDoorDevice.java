@@ -10,7 +10,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.DoorKind;
 import org.tinysep.api.sensor.DoorListener;
 import org.tinysep.api.sensor.DoorProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.ContactSensorDevice;
 import org.tinysep.device.support.sensor.Source;
 

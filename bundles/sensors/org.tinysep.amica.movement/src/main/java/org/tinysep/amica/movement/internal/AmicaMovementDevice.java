@@ -9,7 +9,7 @@ import org.tinysep.api.device.NodeType;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.MovementListener;
 import org.tinysep.api.sensor.MovementProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.MovementSensorDevice;
 import org.tinysep.device.support.sensor.Source;
 

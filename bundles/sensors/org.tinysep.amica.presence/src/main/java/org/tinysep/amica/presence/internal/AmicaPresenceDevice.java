@@ -11,7 +11,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.api.sensor.presence.PresenceListener;
 import org.tinysep.api.sensor.presence.PresenceProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.SensorDevice;
 import org.tinysep.device.support.sensor.Source;
 

@@ -18,10 +18,10 @@ import org.tinysep.api.device.NodeType;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.sensor.presence.PresenceKind;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
 import org.tinysep.device.support.testing.FakeAmicaBus;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** Reed-Switch Status in, presence ON/OFF out, with the kind of the node type; repeats are not re-announced. */
 class AmicaPresenceDeviceTest {

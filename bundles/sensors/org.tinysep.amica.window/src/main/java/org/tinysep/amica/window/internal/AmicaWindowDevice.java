@@ -11,7 +11,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.ContactSensorDevice;
 import org.tinysep.device.support.sensor.Source;
 

@@ -20,9 +20,9 @@ import org.tinysep.api.sensor.Coordinates;
 import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.sensor.WindowListener;
 import org.tinysep.api.sensor.WindowProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** Reed-switch payloads in, window changes out; the position parameter is validated and announced. */
 class AmicaWindowDeviceTest {

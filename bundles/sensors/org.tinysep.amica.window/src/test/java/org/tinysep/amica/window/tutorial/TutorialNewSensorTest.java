@@ -128,7 +128,7 @@ class TutorialNewSensorTest {
         }
         assertEquals(new TreeSet<>(expected), found, "files of " + NEW_MODULE);
         assertEquals(List.of(), traces, "files that still mention the window");
-        assertEquals("-conditionalpackage: org.tinysep.device.support,org.tinysep.device.support.sensor\n"
+        assertEquals("-conditionalpackage: org.tinysep.device.support.*\n"
                 + "-dsannotations-options: inherit", Files.readString(module.resolve("bnd.bnd")).strip());
     }
 

@@ -9,7 +9,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.LightBrightnessListener;
 import org.tinysep.api.sensor.LightBrightnessProvider;
 import org.tinysep.api.sensor.Percent;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.SensorDevice;
 import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.LightStatus;

@@ -13,7 +13,7 @@ import org.tinysep.api.sensor.MovementListener;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.MovementWithCoordinatesListener;
 import org.tinysep.api.sensor.MovementWithCoordinatesProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.MovementSensorDevice;
 import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.MovementDetection;

@@ -18,9 +18,9 @@ import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.MovementWithCoordinatesListener;
 import org.tinysep.api.sensor.MovementWithCoordinatesProvider;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 import org.tinysep.sunspot.protocol.LightStatus;
 import org.tinysep.sunspot.protocol.MovementDetection;
 import org.tinysep.sunspot.protocol.Position;
@@ -142,7 +142,7 @@ class SunSpotMovementDeviceTest {
     @Test
     void identityFollowsTheBusDevice() {
         assertEquals("Movement sensor 0014.4F01.0000.1234", movement.name());
-        assertEquals(org.tinysep.device.support.Uids.of("SunSpotMovement", "bus-1"), movement.uid());
+        assertEquals(org.tinysep.device.support.lifecycle.Uids.of("SunSpotMovement", "bus-1"), movement.uid());
     }
 
     private String parameter(String key) {

@@ -15,7 +15,7 @@ import org.tinysep.api.sensor.person.ButtonEvent;
 import org.tinysep.api.sensor.person.MovementSummary;
 import org.tinysep.api.sensor.person.PersonNodeListener;
 import org.tinysep.api.sensor.person.PersonNodeProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.SensorDevice;
 import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.SunSpotPayload;

@@ -7,7 +7,7 @@ import org.tinysep.api.device.NodeType;
 import org.tinysep.api.sensor.MovementEvent;
 import org.tinysep.api.sensor.PetMovementListener;
 import org.tinysep.api.sensor.PetMovementProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.MotionSensorDevice;
 import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.PetMovementDetection;

@@ -8,7 +8,7 @@ import org.tinysep.api.device.NodeType;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.sensor.TemperatureListener;
 import org.tinysep.api.sensor.TemperatureProvider;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.sensor.SensorDevice;
 import org.tinysep.device.support.sensor.Source;
 import org.tinysep.sunspot.protocol.SunSpotPayloads;

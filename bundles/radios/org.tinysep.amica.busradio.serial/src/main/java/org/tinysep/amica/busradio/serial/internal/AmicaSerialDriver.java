@@ -13,9 +13,9 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.AbstractDriver;
-import org.tinysep.device.support.NodePolicy;
-import org.tinysep.device.support.PlatformTicker;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.lifecycle.AbstractDriver;
+import org.tinysep.device.support.time.PlatformTicker;
 
 /**
  * Bus Radio AmICA (serial), thesis 4.4.1.1: one instance per factory configuration, i.e. per serial port, named

@@ -12,10 +12,10 @@ import org.tinysep.amica.busradio.base.FrameHandler;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.NodePolicy;
-import org.tinysep.device.support.RejectCounter;
-import org.tinysep.device.support.RejectTotals;
+import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.intake.RejectTotals;
+import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.serial.support.SerialPortLink;
 
 /**

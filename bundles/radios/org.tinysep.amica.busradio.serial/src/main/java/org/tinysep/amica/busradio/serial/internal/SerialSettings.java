@@ -5,7 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.function.IntSupplier;
-import org.tinysep.device.support.NodePolicy;
+import org.tinysep.device.support.health.NodePolicy;
 
 /**
  * The configuration of one serial port, checked: a bad value never stops the driver. A missing port leaves the

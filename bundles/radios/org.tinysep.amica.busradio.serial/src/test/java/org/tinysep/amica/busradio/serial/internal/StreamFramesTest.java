@@ -17,7 +17,7 @@ import org.tinysep.amica.protocol.AmicaStreamDecoder;
 import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.PacketEntry;
-import org.tinysep.device.support.RejectCounter;
+import org.tinysep.device.support.intake.RejectCounter;
 
 /** Bytes of a serial stream, cut anywhere, become frames and skipped runs, each logged with its exact bytes. */
 class StreamFramesTest {

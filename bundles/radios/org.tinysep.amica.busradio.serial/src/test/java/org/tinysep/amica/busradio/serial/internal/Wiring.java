@@ -14,10 +14,10 @@ import org.tinysep.amica.protocol.KeepAlive;
 import org.tinysep.amica.protocol.RejectReason;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
-import org.tinysep.device.support.PlatformClock;
-import org.tinysep.device.support.RecordingLogs;
-import org.tinysep.device.support.RejectCounter;
+import org.tinysep.device.support.intake.RejectCounter;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /** A driver context with in-memory logs, and frames as a node sends them; for tests without a framework. */
 final class Wiring {

@@ -1,0 +1,122 @@
+package org.tinysep.device.support.rooms;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.stream.Stream;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
+import org.osgi.framework.FrameworkUtil;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+import org.osgi.util.tracker.ServiceTracker;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.device.support.lifecycle.ServiceUse;
+
+/**
+ * A {@link Placements} over the service registry: every service carrying {@code tinysep.device.uid}, indexed by that
+ * UID when it is registered, so a lookup reads only the one device's few services (a scan of every device's
+ * services per lookup was most of the packet → reaction latency, since Follow Me Light asks for the room of every
+ * light per motion). Service references show property modifications live, so the room read here is the one the
+ * device has right now.
+ */
+public final class TrackedPlacements implements Placements, AutoCloseable {
+
+    private final Map<String, List<ServiceReference<Object>>> byUid = new ConcurrentHashMap<>();
+    private final ServiceTracker<Object, String> tracker;
+    private final BundleContext context;
+
+    public TrackedPlacements(BundleContext context) {
+        this.context = context;
+        try {
+            tracker = new ServiceTracker<>(context,
+                    FrameworkUtil.createFilter("(" + DeviceProperties.DEVICE_UID + "=*)"), null) {
+                @Override
+                public String addingService(ServiceReference<Object> ref) {
+                    String uid = uidOf(ref);
+                    byUid.merge(uid, List.of(ref), TrackedPlacements::plus);
+                    return uid;
+                }
+
+                @Override
+                public void modifiedService(ServiceReference<Object> ref, String indexedAs) {
+                    String uid = uidOf(ref);
+                    if (!uid.equals(indexedAs)) { // a UID does not change in practice; keep the index true anyway
+                        forget(indexedAs, ref);
+                        byUid.merge(uid, List.of(ref), TrackedPlacements::plus);
+                    }
+                }
+
+                @Override
+                public void removedService(ServiceReference<Object> ref, String indexedAs) {
+                    forget(indexedAs, ref);
+                    forget(uidOf(ref), ref); // the tracker keeps the UID it was added under
+                }
+            };
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+        tracker.open();
+    }
+
+    @Override
+    public Optional<String> roomOf(String deviceUid) {
+        for (ServiceReference<Object> ref : byUid.getOrDefault(deviceUid, List.of())) {
+            Object room = ref.getProperty(DeviceProperties.ROOM);
+            if (room != null && !room.toString().isBlank()) {
+                return Optional.of(room.toString());
+            }
+        }
+        return Optional.empty();
+    }
+
+    @Override
+    public String nameOf(String deviceUid) {
+        for (ServiceReference<Object> ref : byUid.getOrDefault(deviceUid, List.of())) {
+            if (isDevice(ref)) {
+                String name = ServiceUse.with(context, ref, d -> d instanceof Device device ? device.name() : null,
+                        null);
+                if (name != null) {
+                    return name;
+                }
+            }
+        }
+        return deviceUid;
+    }
+
+    private void forget(String uid, ServiceReference<Object> ref) {
+        byUid.computeIfPresent(uid, (k, refs) -> {
+            List<ServiceReference<Object>> rest = refs.stream().filter(r -> !r.equals(ref)).toList();
+            return rest.isEmpty() ? null : rest;
+        });
+    }
+
+    private static List<ServiceReference<Object>> plus(List<ServiceReference<Object>> a,
+            List<ServiceReference<Object>> b) {
+        return Stream.concat(a.stream(), b.stream().filter(r -> !a.contains(r))).toList();
+    }
+
+    private static String uidOf(ServiceReference<?> ref) {
+        return String.valueOf(ref.getProperty(DeviceProperties.DEVICE_UID));
+    }
+
+    private static boolean isDevice(ServiceReference<?> ref) {
+        Object classes = ref.getProperty(Constants.OBJECTCLASS);
+        if (classes instanceof String[] names) {
+            for (String n : names) {
+                if (Device.class.getName().equals(n)) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    @Override
+    public void close() {
+        tracker.close();
+        byUid.clear();
+    }
+}

@@ -1,0 +1,98 @@
+package org.tinysep.device.support.rooms;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.lang.reflect.Proxy;
+import java.nio.file.Path;
+import java.util.Hashtable;
+import java.util.Map;
+import java.util.Optional;
+import org.apache.felix.framework.FrameworkFactory;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
+import org.osgi.framework.ServiceRegistration;
+import org.osgi.framework.launch.Framework;
+import org.tinysep.api.device.Device;
+import org.tinysep.api.device.DeviceProperties;
+
+/** Placements read from a real Felix service registry, indexed by device UID (issue 14). */
+class TrackedPlacementsTest {
+
+    @TempDir
+    Path storage;
+    private Framework fw;
+    private BundleContext context;
+
+    @BeforeEach
+    void start() throws Exception {
+        fw = new FrameworkFactory().newFramework(Map.of(Constants.FRAMEWORK_STORAGE, storage.toString(),
+                Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT));
+        fw.start();
+        context = fw.getBundleContext();
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        fw.stop();
+        fw.waitForStop(30_000);
+    }
+
+    @Test
+    void aDevicesRoomAndNameComeFromItsOwnServicesAndFollowChangesLive() {
+        for (int i = 0; i < 300; i++) { // other devices, before and after the one asked about
+            register("other-" + i, "room-" + i);
+        }
+        ServiceRegistration<?> device = register("lamp", "kitchen");
+        ServiceRegistration<?> provider = provider("lamp", null); // a second service of the same device, no room
+        try (TrackedPlacements placements = new TrackedPlacements(context)) {
+            assertEquals(Optional.of("kitchen"), placements.roomOf("lamp"));
+            assertEquals("Lamp lamp", placements.nameOf("lamp"));
+            assertEquals(Optional.of("room-299"), placements.roomOf("other-299"));
+
+            device.setProperties(props("lamp", "hall")); // moved at run time
+            assertEquals(Optional.of("hall"), placements.roomOf("lamp"));
+
+            ServiceRegistration<?> later = register("late", "bedroom"); // registered after the tracker opened
+            assertEquals(Optional.of("bedroom"), placements.roomOf("late"));
+            later.unregister();
+            assertEquals(Optional.empty(), placements.roomOf("late"));
+            assertEquals("late", placements.nameOf("late"), "an unknown device is named by its UID");
+
+            device.unregister();
+            assertEquals(Optional.empty(), placements.roomOf("lamp"), "the provider left has no room");
+            provider.setProperties(props("lamp", "study"));
+            assertEquals(Optional.of("study"), placements.roomOf("lamp"));
+            provider.unregister();
+            assertEquals(Optional.empty(), placements.roomOf("lamp"));
+            assertEquals(Optional.of("room-7"), placements.roomOf("other-7"));
+        }
+    }
+
+    private ServiceRegistration<?> register(String uid, String room) {
+        Device d = (Device) Proxy.newProxyInstance(Device.class.getClassLoader(), new Class<?>[] {Device.class},
+                (proxy, method, args) -> switch (method.getName()) {
+                    case "name" -> "Lamp " + uid;
+                    case "hashCode" -> System.identityHashCode(proxy);
+                    case "equals" -> proxy == args[0];
+                    default -> null;
+                });
+        return context.registerService(Device.class, d, props(uid, room));
+    }
+
+    private ServiceRegistration<?> provider(String uid, String room) {
+        return context.registerService(Runnable.class, () -> { }, props(uid, room));
+    }
+
+    private static Hashtable<String, Object> props(String uid, String room) {
+        Hashtable<String, Object> p = new Hashtable<>();
+        p.put(DeviceProperties.DEVICE_UID, uid);
+        if (room != null) {
+            p.put(DeviceProperties.ROOM, room);
+        }
+        return p;
+    }
+}
