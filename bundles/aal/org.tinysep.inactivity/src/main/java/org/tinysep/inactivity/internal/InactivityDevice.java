@@ -61,8 +61,7 @@ final class InactivityDevice extends WholeFlatDevice
     private final LoggedHistory history;
     private final Announcer announcer;
     private final ActivityFeed feed;
-    private final DeviceSide side = new DeviceSide(this::event, this::saveBackup, this::stateChanged,
-            this::status, (s, at) -> listeners.fire(l -> l.inactivityStateChanged(this, s, at)));
+    private final DeviceSide side;
     /** Each wearer of a person node, watched on their own (issue 26, item 4; README "Activity per person"). */
     private volatile PersonWatches persons;
 
@@ -78,6 +77,8 @@ final class InactivityDevice extends WholeFlatDevice
             LimitPolicy policy, HistoryFromLog fromLog) {
         super(context, Uids.of(context.driverName(), "inactivity"), context.driverName(), "Inactivity recognition");
         this.listeners = new Listeners<>(uid());
+        this.side = new DeviceSide(this::event, this::saveBackup, this::stateChanged, this::status,
+                (s, at) -> listeners.fire(l -> l.inactivityStateChanged(this, s, at)));
         this.logic = new InactivityLogic(limits.defaultLimit(), context.now());
         this.policy = policy;
         this.help = new HelpCall(words);
