@@ -36,7 +36,7 @@ final class Why {
     private static String missReason(Scored s, FallSettings d) {
         if (alerts(s, d)) {
             return "the detector alerts on it in process with these settings: lost only through the platform "
-                    + "(reports stamped with whole seconds, or a frame that did not arrive)";
+                    + "(frames stamped later than played, or a frame that did not arrive: see the run's 'stamped later' line)";
         }
         if (alerts(s, d.withImpactMg(1))) {
             return "no impact reached " + d.impactMg() + " mg (or no burst was sent)";

@@ -20,18 +20,36 @@ final class Progress {
         this.traced = sim.world().trace().size();
     }
 
+    /** @return {@code inner} with the progress printed; what falls due inside a second comes from the simulation */
     Stepper wrap(Stepper inner) {
-        return t -> {
-            int changed = inner.step(t);
-            List<String> trace = sim.world().trace();
-            for (; traced < trace.size(); traced++) {
-                System.out.println("  " + trace.get(traced));
+        return new Stepper() {
+            @Override
+            public int step(Instant t) throws Exception {
+                return stepAndTell(inner, t);
             }
-            long s = t.getEpochSecond();
-            if (s > start && (s - start) % everySeconds == 0) {
-                System.out.printf("%s  %.1f s wall  %s%n", t, (System.nanoTime() - wallStart) / 1e9, sim.director().whereabouts());
+
+            @Override
+            public List<Instant> within(Instant t) {
+                return sim.within(t);
             }
-            return changed;
+
+            @Override
+            public int stepWithin(Instant at) {
+                return sim.stepWithin(at);
+            }
         };
+    }
+
+    private int stepAndTell(Stepper inner, Instant t) throws Exception {
+        int changed = inner.step(t);
+        List<String> trace = sim.world().trace();
+        for (; traced < trace.size(); traced++) {
+            System.out.println("  " + trace.get(traced));
+        }
+        long s = t.getEpochSecond();
+        if (s > start && (s - start) % everySeconds == 0) {
+            System.out.printf("%s  %.1f s wall  %s%n", t, (System.nanoTime() - wallStart) / 1e9, sim.director().whereabouts());
+        }
+        return changed;
     }
 }

@@ -69,6 +69,36 @@ public final class Simulation implements AutoCloseable {
         return nodes.tick(t.getEpochSecond());
     }
 
+    /** @return the instants inside second {@code t} at which a node has a frame due (played after {@link #step}) */
+    public java.util.List<Instant> within(Instant t) {
+        return nodes.dueWithin(t.getEpochSecond());
+    }
+
+    /** Sends what the nodes have due by {@code at}, one of {@link #within}'s instants. @return changed values */
+    public int stepWithin(Instant at) {
+        return nodes.sendDue(at);
+    }
+
+    /** @return this simulation as a driver's stepper: each second, then what falls due inside it */
+    public org.tinysep.simulator.time.Stepper stepper() {
+        return new org.tinysep.simulator.time.Stepper() {
+            @Override
+            public int step(Instant t) {
+                return Simulation.this.step(t);
+            }
+
+            @Override
+            public java.util.List<Instant> within(Instant t) {
+                return Simulation.this.within(t);
+            }
+
+            @Override
+            public int stepWithin(Instant at) {
+                return Simulation.this.stepWithin(at);
+            }
+        };
+    }
+
     public World world() {
         return world;
     }

@@ -45,6 +45,28 @@ public final class NodeSet implements AutoCloseable {
         return changed;
     }
 
+    /** @return the instants inside second {@code t} at which a powered node has a frame due, in order, once each */
+    public List<java.time.Instant> dueWithin(long t) {
+        java.util.TreeSet<java.time.Instant> due = new java.util.TreeSet<>();
+        for (SimNode n : nodes.values()) {
+            if (n.powered()) {
+                due.addAll(n.dueWithin(t));
+            }
+        }
+        return List.copyOf(due);
+    }
+
+    /** Sends what the nodes have due by {@code at}. @return as {@link #tick} */
+    public int sendDue(java.time.Instant at) {
+        int changed = 0;
+        for (SimNode n : nodes.values()) {
+            if (n.powered()) {
+                changed += n.sendDue(at);
+            }
+        }
+        return changed;
+    }
+
     /** Switches a node's battery on or off; unknown ids are reported, never thrown. */
     public void power(String id, boolean on) {
         SimNode n = nodes.get(id);

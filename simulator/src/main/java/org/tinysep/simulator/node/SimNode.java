@@ -49,4 +49,17 @@ public abstract class SimNode {
     }
 
     protected abstract int report(long t, long elapsed);
+
+    /**
+     * @return the instants after second {@code t} and before the next at which this node has a frame to send, in
+     *         order (a worn node's burst leaves at its trigger); none by default
+     */
+    public java.util.List<java.time.Instant> dueWithin(long t) {
+        return java.util.List.of();
+    }
+
+    /** Sends what is due by {@code at}, one of {@link #dueWithin}'s instants. @return as {@link #tick} */
+    public int sendDue(java.time.Instant at) {
+        return 0;
+    }
 }

@@ -63,7 +63,13 @@ public final class LockStepDriver {
         return played;
     }
 
-    /** Plays the seconds from {@code from} (inclusive) to {@code until} (exclusive) chosen by {@code next}. */
+    /**
+     * Plays the seconds from {@code from} (inclusive) to {@code until} (exclusive) chosen by {@code next}; after each,
+     * the instants inside it that the stepper has something due at ({@link Stepper#within}), each TICKed as it is,
+     * milliseconds kept (a worn node's burst leaves at its trigger, not at the whole second).
+     *
+     * @return TICKs played
+     */
     public long run(Instant from, Instant until, Stepper stepper, NextSecond next) throws Exception {
         long played = 0;
         for (long t = from.getEpochSecond(); t < until.getEpochSecond(); t = next.after(t)) {
@@ -73,6 +79,19 @@ public final class LockStepDriver {
             played++;
             if (stepper.step(at) > 0 && paceNanos > 0) {
                 LockSupport.parkNanos(paceNanos);
+            }
+            Instant after = at;
+            for (Instant in : stepper.within(at)) {
+                if (!in.isAfter(after) || !in.isBefore(at.plusSeconds(1))) {
+                    continue;
+                }
+                after = in;
+                clock.set(in);
+                sync.tick(in);
+                played++;
+                if (stepper.stepWithin(in) > 0 && paceNanos > 0) {
+                    LockSupport.parkNanos(paceNanos);
+                }
             }
         }
         return played;

@@ -5,7 +5,8 @@ import java.time.Instant;
 /**
  * Real time: virtual second {@code t} is played when the wall clock reaches
  * {@code start + (t - from) / speed}; speed 1 is real time, 60 plays a minute a second. If the simulation falls
- * behind it plays the late seconds at once (it never skips).
+ * behind it plays the late seconds at once (it never skips). What falls due inside a second ({@link Stepper#within})
+ * is played at its own instant.
  */
 public final class RealTimeDriver {
 
@@ -30,6 +31,20 @@ public final class RealTimeDriver {
             }
             clock.set(t);
             stepper.step(t);
+            Instant after = t;
+            for (Instant in : stepper.within(t)) { // due inside this second: sent at their own instant
+                if (!in.isAfter(after) || !in.isBefore(t.plusSeconds(1))) {
+                    continue;
+                }
+                after = in;
+                long at = start + (long) (java.time.Duration.between(from, in).toNanos() / speed);
+                long w = at - System.nanoTime();
+                if (w > 0) {
+                    Thread.sleep(w / 1_000_000, (int) (w % 1_000_000));
+                }
+                clock.set(in);
+                stepper.stepWithin(in);
+            }
         }
     }
 }

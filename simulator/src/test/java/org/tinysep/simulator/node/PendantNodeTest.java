@@ -21,6 +21,10 @@ import org.tinysep.simulator.cli.Simulation;
 import org.tinysep.simulator.flat.Flat;
 import org.tinysep.simulator.flat.FlatLoader;
 import org.tinysep.simulator.person.SyntheticRecordings;
+import org.tinysep.simulator.time.FakeSynchroniserPeer;
+import org.tinysep.simulator.time.LockStepDriver;
+import org.tinysep.simulator.time.SyncClient;
+import org.tinysep.simulator.time.VirtualClock;
 import org.tinysep.sunspot.protocol.BurstChunk;
 import org.tinysep.sunspot.protocol.MovementSummaryReport;
 import org.tinysep.sunspot.protocol.SunSpotCodec;
@@ -71,6 +75,40 @@ class PendantNodeTest {
                 "then lying still on her back: " + lying.subList(0, 3));
         int total = summaries(frames).size();
         assertTrue(total >= 590 && total <= 605, "a summary every 2 s over 20 min: " + total);
+    }
+
+    /**
+     * In lock-step the fall's burst leaves at its own instants, milliseconds kept: the driver TICKs the platform to
+     * each chunk's instant inside the second (so the radio stamps the burst with its trigger, not the whole second
+     * it fell in), and only to those: the summaries end on whole seconds.
+     */
+    @Test
+    void inLockStepTheFallsBurstIsTickedToItsOwnMilliseconds() throws Exception {
+        Flat flat = FlatLoader.load("flat-a");
+        long a = MIDNIGHT + LocalTime.parse("13:58").toSecondOfDay();
+        long b = MIDNIGHT + LocalTime.parse("14:06").toSecondOfDay();
+        try (Radio amica = new Radio(); Radio spots = new Radio();
+                FakeSynchroniserPeer peer = new FakeSynchroniserPeer("EXTERNAL");
+                SyncClient sync = new SyncClient(peer.address(), 2000);
+                Simulation sim = new Simulation(flat, Simulation.scenario("demo-day", flat),
+                        new Target(InetAddress.getLoopbackAddress(), amica.port(), spots.port()), MIDNIGHT, 1, 90, 0,
+                        e -> { }, true)) {
+            for (long t = MIDNIGHT; t < a; t++) {
+                sim.rehearse(t);
+            }
+            sync.hello();
+            long played = new LockStepDriver(sync, new VirtualClock(Instant.ofEpochSecond(a)), 0)
+                    .run(Instant.ofEpochSecond(a), Instant.ofEpochSecond(b), sim.stepper());
+            List<Instant> ticks = peer.ticks();
+            List<Instant> inside = ticks.stream().filter(t -> t.getNano() != 0).toList();
+            assertEquals(played, ticks.size());
+            assertEquals(b - a, ticks.size() - inside.size(), "every whole second once: " + inside);
+            assertTrue(!inside.isEmpty() && inside.size() <= 5, "the burst's 5 chunks, each at its instant "
+                    + "(one may fall on a whole second): " + inside);
+            assertTrue(!inside.get(inside.size() - 1).isAfter(inside.get(0).plusMillis(1980)),
+                    "all within the burst's 2 s after its trigger: " + inside);
+            assertTrue(inside.get(0).getNano() % 20_000_000 == 0, "on the node's 20 ms sample grid: " + inside);
+        }
     }
 
     @Test

@@ -2,12 +2,8 @@ package org.tinysep.inactivity.internal;
 
 import java.time.Instant;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.function.Supplier;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.api.sensor.MovementLocation;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.sensor.person.MovementSummary;
@@ -17,7 +13,6 @@ import org.tinysep.api.service.PersonWatch;
 import org.tinysep.inactivity.internal.person.PersonAlertWords;
 import org.tinysep.inactivity.internal.person.WearerSettings;
 import org.tinysep.inactivity.internal.person.Wearers;
-import org.tinysep.inactivity.internal.learn.Sighting;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceStatus;
@@ -43,7 +38,10 @@ import org.tinysep.device.support.rooms.Placements;
 /**
  * The one Inactivity Recognition device (thesis 4.4.4.1). Activity sources (movement, door, window) are vital;
  * Flat Occupancy, Mail Manager and House Information are optional. It watches the person: it is not removed when
- * its sources go, it says which rooms it can no longer see.
+ * its sources go, it says which rooms it can no longer see. Its parts: {@link ActivityFeed} (what happens,
+ * into the detector and the wearers' watches), {@link StateAnnouncer} (what a state change leads to, the alert handed on),
+ * {@link LoggedHistory} (the learner's history from the event log), {@link InactivityParameters}; the device
+ * connects the providers, keeps the backup and is their {@link DeviceSide}.
  */
 final class InactivityDevice extends WholeFlatDevice
         implements InactivityRecognitionProvider {
@@ -60,14 +58,12 @@ final class InactivityDevice extends WholeFlatDevice
     private volatile long lastHeartbeat = System.nanoTime();
     private final RoomActivity rooms = new RoomActivity();
     private final LimitPolicy policy;
-    private final HistoryFromLog fromLog;
-    /** The activity sources connected so far (devices whose logged entries count as history). */
-    private final Set<String> sources = ConcurrentHashMap.newKeySet();
-    private volatile long lastResolve = System.nanoTime() - HEARTBEAT_NANOS;
-    /** Each wearer of a person node, watched on their own (README, "Activity per person"). */
+    private final LoggedHistory history;
+    private final StateAnnouncer announcer;
+    private final ActivityFeed feed;
+    private final DeviceSide side;
+    /** Each wearer of a person node, watched on their own (README "Activity per person"). */
     private volatile PersonWatches persons;
-    /** The flat's alert not handed on because wearers have their own watches (said once per alert). */
-    private volatile Instant flatAlertLeftToPersons;
 
     InactivityDevice(DriverContext context, Placements directory, LimitTable limits, AlertMail words) {
         this(context, directory, limits, words, LimitPolicy.thesis(), null);
@@ -81,12 +77,16 @@ final class InactivityDevice extends WholeFlatDevice
             LimitPolicy policy, HistoryFromLog fromLog) {
         super(context, Uids.of(context.driverName(), "inactivity"), context.driverName(), "Inactivity recognition");
         this.listeners = new Listeners<>(uid());
+        this.side = new DeviceSide(this::event, this::saveBackup, this::stateChanged, this::status,
+                (s, at) -> listeners.fire(l -> l.inactivityStateChanged(this, s, at)));
         this.logic = new InactivityLogic(limits.defaultLimit(), context.now());
         this.policy = policy;
-        this.fromLog = fromLog;
-        this.activities = new ActivityFactory(directory, limits, policy, this::now, this::activity);
         this.help = new HelpCall(words);
         this.words = words;
+        this.announcer = new StateAnnouncer(logic, help, words, () -> persons, side);
+        this.feed = new ActivityFeed(logic, rooms, policy, words, () -> persons, announcer, side);
+        this.activities = new ActivityFactory(directory, limits, policy, this::now, a -> feed.activity(a, now()));
+        this.history = new LoggedHistory(fromLog, activities);
         watchPersons(WearerSettings.defaults(), java.time.ZoneId.systemDefault(), HelpCall::inFramework);
         limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
         status(DeviceStatus.State.ONLINE, "");
@@ -96,35 +96,33 @@ final class InactivityDevice extends WholeFlatDevice
     void watch(MovementProvider p) {
         connect(p, MovementProvider.class, activities, true);
         if (p.location() == MovementLocation.INSIDE) {
-            sources.add(p.deviceUid());
+            history.source(p.deviceUid());
         }
     }
 
     void watch(DoorProvider p) {
         connect(p, DoorProvider.class, activities, true);
-        sources.add(p.deviceUid());
+        history.source(p.deviceUid());
     }
 
     void watch(WindowProvider p) {
         connect(p, WindowProvider.class, activities, true);
-        sources.add(p.deviceUid());
+        history.source(p.deviceUid());
     }
 
     void watch(PresenceProvider p) {
         connect(p, PresenceProvider.class, activities, true);
-        sources.add(p.deviceUid());
+        history.source(p.deviceUid());
     }
 
     /** Sets how wearers of person nodes are watched (before the backup is restored and any person node given). */
     void watchPersons(WearerSettings settings, java.time.ZoneId zone, HelpCall.AlertDesk desk) {
         PersonAlertWords w = new PersonAlertWords(zone);
-        persons = new PersonWatches(new Wearers(settings, w::time), w, limitDefault(), desk, help::mailer);
-    }
-
-    private java.time.Duration limitDefault() {
+        java.time.Duration limit;
         synchronized (logic) {
-            return logic.defaultLimit();
+            limit = logic.defaultLimit();
         }
+        persons = new PersonWatches(new Wearers(settings, w::time), w, limit, desk, help::mailer);
     }
 
     /** A person node: its movement is its wearer's activity (its wearer gets a watch of their own). */
@@ -132,24 +130,9 @@ final class InactivityDevice extends WholeFlatDevice
         connect(p, PersonNodeProvider.class, new PersonNodeListener() {
             @Override
             public void movementSummarised(PersonNodeProvider source, MovementSummary summary) {
-                personMoved(source, summary);
+                feed.personMoved(source, summary, now());
             }
         }, false);
-    }
-
-    private void personMoved(PersonNodeProvider source, MovementSummary summary) {
-        Instant now = now();
-        PersonWatches.Moved m = persons.summary(source.deviceUid(), source.person(), summary, now);
-        m.events().forEach(this::event);
-        personSave(m.events()); // the wearer's watch (README "System backup and restarts")
-        m.activity().ifPresent(a -> { // someone moved: the flat is active too
-            Optional<InactivityState> change;
-            synchronized (logic) {
-                logic.rebase(now);
-                change = logic.activity(a);
-            }
-            announce(change, a.at(), a::description);
-        });
     }
 
     /** @return the room type of a room House Information knows, else empty (for the learner's sleep rule) */
@@ -157,35 +140,16 @@ final class InactivityDevice extends WholeFlatDevice
         return activities.typeOf(roomUid);
     }
 
-    /** Hands logged history of devices that are now sources to the learner (at most once a minute). */
-    private void resolveHistory() {
-        long wall = System.nanoTime();
-        if (fromLog == null || wall - lastResolve < HEARTBEAT_NANOS || !fromLog.hasPending()) {
-            return;
-        }
-        lastResolve = wall;
-        int n = fromLog.resolve(raw -> {
-            if (!sources.contains(raw.device())) {
-                return Optional.empty();
-            }
-            ActivityFactory.Placed p = activities.placed(raw.device());
-            return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), raw.inBed(), raw.seated()));
-        });
-        if (n > 0) {
-            event("learning: " + n + " logged activities of connected sensors added to the history");
-        }
-    }
-
     void use(FlatOccupancyProvider p) {
         occupancySource = p.deviceUid();
-        connect(p, FlatOccupancyProvider.class, (src, occupancy, at) -> occupancy(occupancy, at), false);
-        occupancy(p.occupancy(), p.since());
+        connect(p, FlatOccupancyProvider.class, (src, occupancy, at) -> feed.occupancy(occupancy, at), false);
+        feed.occupancy(p.occupancy(), p.since());
     }
 
     void use(MailManagerProvider p) {
         help.add(p);
         connect(p, MailManagerProvider.class, (src, status, at) -> { }, false);
-        mailPendingAlert();
+        announcer.handOn();
     }
 
     void use(HouseInformationProvider p) {
@@ -199,138 +163,19 @@ final class InactivityDevice extends WholeFlatDevice
         persons.remove(providerUid);
         if (providerUid.equals(occupancySource)) {
             occupancySource = null;
-            occupancy(Occupancy.UNKNOWN, now());
-        }
-    }
-
-    private void activity(Activity a) {
-        Optional<InactivityState> change;
-        Optional<Instant> wentBack;
-        Instant now = now();
-        synchronized (logic) {
-            wentBack = logic.rebase(now); // the platform's time, not the report's: a late report is no clock step
-            change = logic.activity(a);
-        }
-        wentBack.ifPresent(from -> clockWentBack(from, now));
-        rooms.seen(a);
-        stateChanged(); // last activity per room, saved at most every 10 s (docs/backup.md)
-        announce(change, a.at(), () -> a.description() + " in " + a.roomName()); // built on a change only
-        List<String> said = persons.room(a, now);
-        said.forEach(this::event);
-        personSave(said);
-    }
-
-    /**
-     * A wearer's watch changed: saved at once when it said something (a state change, a hand-over, worn or not
-     * worn), else at most every 10 s like the flat's activity (docs/backup.md).
-     */
-    private void personSave(List<String> said) {
-        if (said.isEmpty()) {
-            stateChanged();
-        } else {
-            saveBackup();
-        }
-    }
-
-    /** The clock went back: says so in plain words (the logic already counts the quiet time from now). */
-    private void clockWentBack(Instant from, Instant now) {
-        String room = lastRoom();
-        event("clock went back from " + words.time(from) + " to " + words.time(now) + ": quiet time"
-                + (room.isEmpty() ? "" : " in " + room) + " counted from now");
-        saveBackup();
-    }
-
-    private String lastRoom() {
-        synchronized (logic) {
-            return logic.lastActivity().map(Activity::roomName).orElse("");
-        }
-    }
-
-    private void occupancy(Occupancy occupancy, Instant at) {
-        if (occupancy != Occupancy.UNKNOWN) {
-            policy.occupancy(occupancy == Occupancy.UNOCCUPIED, at);
-        }
-        Optional<InactivityState> change;
-        synchronized (logic) {
-            change = logic.occupancy(occupancy, at);
-        }
-        announce(change, at, () -> "flat " + lower(occupancy));
-        List<String> said = persons.occupancy(occupancy, at);
-        said.forEach(this::event);
-        if (!said.isEmpty()) {
-            saveBackup();
+            feed.occupancy(Occupancy.UNKNOWN, now());
         }
     }
 
     /** Advances the algorithm's clock; called every platform second by the driver. */
     void tick(Instant now) {
-        Optional<InactivityState> change;
-        Optional<Instant> wentBack;
-        synchronized (logic) {
-            wentBack = logic.rebase(now);
-            change = logic.tick(now);
-        }
-        wentBack.ifPresent(from -> clockWentBack(from, now));
-        announce(change, now, () -> "limit reached");
-        List<String> said = persons.tick(now);
-        said.forEach(this::event);
-        if (!said.isEmpty()) {
-            saveBackup(); // a wearer's alert raised or handed on: not handed on twice after a restart
-        }
-        resolveHistory();
+        feed.tick(now);
+        history.resolve(side);
         long wall = System.nanoTime();
         if (wall - lastHeartbeat >= HEARTBEAT_NANOS) {
             lastHeartbeat = wall;
             saveBackup(); // its time tells, after a crash, until when this device was running
         }
-    }
-
-    private void announce(Optional<InactivityState> change, Instant at, Supplier<String> reason) {
-        change.ifPresent(s -> {
-            String detail = s == InactivityState.ALERT ? alert().map(a -> help.subject(a) + words.why(a)).orElse("")
-                    : "";
-            event("inactivity " + lower(s) + " (" + reason.get() + ")" + (detail.isEmpty() ? "" : ": " + detail));
-            listeners.fire(l -> l.inactivityStateChanged(this, s, at));
-            saveBackup(); // whether (since when) the flat is watched survives a crash
-            if (s == InactivityState.ALERT) {
-                mailPendingAlert();
-            } else {
-                status(DeviceStatus.State.ONLINE, "");
-            }
-        });
-    }
-
-    /** Hands the current alert on once, as soon as the alert service or a Mail Manager is there. */
-    private void mailPendingAlert() {
-        Optional<InactivityAlert> a = alert();
-        if (a.isEmpty()) {
-            return;
-        }
-        List<String> wearers = persons.watched();
-        if (!wearers.isEmpty()) { // each wearer's own watch calls for help for them (README "Activity per person")
-            if (!a.get().raisedAt().equals(flatAlertLeftToPersons)) {
-                flatAlertLeftToPersons = a.get().raisedAt();
-                event("the flat's inactivity alert is not handed on: " + String.join(", ", wearers) + " wear"
-                        + (wearers.size() == 1 ? "s a person node and is" : " person nodes and are") + " watched "
-                        + "on their own, and that watch calls for help (it counts the room sensors when nobody "
-                        + "else's node moves)");
-            }
-            return;
-        }
-        HelpCall.Outcome outcome = help.call(a.get());
-        switch (outcome) {
-            case HANDED_OVER, HANDED_TO_ALERT_SERVICE, RAISED_AGAIN -> {
-                event(help.outcomeWords(a.get(), outcome == HelpCall.Outcome.RAISED_AGAIN));
-                status(DeviceStatus.State.ONLINE, "");
-                saveBackup(); // not handed over twice after a restart
-            }
-            case NO_MAIL_MANAGER -> status(DeviceStatus.State.ERROR, "alert raised but no Mail Manager to send it");
-            case ALREADY_HANDED_OVER -> { }
-        }
-    }
-
-    private static String lower(Enum<?> e) {
-        return e.name().toLowerCase(Locale.ROOT).replace('_', ' ');
     }
 
     /** It stays when its sensors go and says which rooms it can no longer see. */
@@ -358,9 +203,7 @@ final class InactivityDevice extends WholeFlatDevice
 
     @Override
     public Optional<InactivityAlert> alert() {
-        synchronized (logic) {
-            return logic.alert();
-        }
+        return announcer.alert();
     }
 
     @Override
@@ -370,50 +213,20 @@ final class InactivityDevice extends WholeFlatDevice
 
     @Override
     protected List<Parameter> moreParameters() {
-        synchronized (logic) {
-            return List.of(
-                    Parameter.readOnly("state", logic.state(), "current state"),
-                    Parameter.readOnly("since", logic.since(), "when it was entered"),
-                    Parameter.readOnly("deadline", logic.deadline().map(Instant::toString).orElse(""),
-                            "when help is called if nothing happens"),
-                    Parameter.readOnly("lastActivity", logic.lastActivity()
-                            .map(a -> a.description() + " in " + a.roomName() + " at " + a.at()).orElse(""),
-                            "the last activity seen"),
-                    Parameter.readOnly("limitReason", logic.lastActivity().map(Activity::explanation).orElse(""),
-                            "why the deadline is what it is (detector " + policy.name() + ")"),
-                    Parameter.readOnly("alert", logic.alert().map(help::subject).orElse(""), "the raised alert"),
-                    Parameter.readOnly("lastActivityPerRoom", rooms.describe(), "room uid = last activity there"),
-                    Parameter.readOnly("knownRooms", activities.knownRooms(), "rooms known from House Information"),
-                    Parameter.readOnly("persons", persons.describe(), "wearers of person nodes, each watched on "
-                            + "their own"));
-        }
+        return InactivityParameters.of(logic, policy, help, rooms, activities, persons);
     }
 
     @Override
     protected Map<String, String> backupState() {
-        Map<String, String> state;
-        synchronized (logic) {
-            state = new java.util.LinkedHashMap<>(rooms.state(logic.lastActivity().orElse(null),
-                    logic.watchingFrom().orElse(null), help.handedOverDue()));
-        }
-        state.putAll(persons.state()); // each wearer's watch (PersonBackup)
-        return state;
+        return InactivityBackup.state(logic, rooms, help, persons);
     }
 
-    /**
-     * After a restart: the last activity, since when the flat was watched and the alert already handed over come
-     * back, so the quiet time that began before keeps counting once Flat Occupancy (restored too) says OCCUPIED;
-     * an alert that fell due meanwhile is raised by the first tick and says it is late. Times from the future are
-     * counted from now. Each wearer's own watch comes back too ({@link PersonBackup}).
-     */
+    /** After a restart: the flat's watch and each wearer's come back ({@link InactivityBackup#restore}). */
     @Override
     protected void onRestore(ComponentBackup saved) {
-        Restart.Report r = Restart.apply(saved, now(), logic, rooms, help, words);
-        List<String> problems = new java.util.ArrayList<>(r.problems());
-        List<String> events = new java.util.ArrayList<>(r.events());
-        events.addAll(persons.restore(saved.state(), now(), problems)); // each wearer's watch
-        problems.forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
-        events.forEach(this::event);
+        InactivityBackup.Restored r = InactivityBackup.restore(saved, now(), logic, rooms, help, words, persons);
+        r.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));
+        r.events().forEach(this::event);
     }
 
     @Override
