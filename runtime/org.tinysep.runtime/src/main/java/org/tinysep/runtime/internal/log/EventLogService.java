@@ -42,7 +42,7 @@ public final class EventLogService extends LogService<EventEntry> implements Eve
     }
 
     EventLogService(Clock fallback) {
-        super(fallback, 10_000, new EventLines(), "events", "eventCapacity", LogQuery::matches);
+        super(fallback, 10_000, new EventLines(), "events", "eventCapacity", LogQuery::matches, 0);
     }
 
     @Activate

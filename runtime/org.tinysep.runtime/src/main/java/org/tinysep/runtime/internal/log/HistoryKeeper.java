@@ -23,10 +23,13 @@ final class HistoryKeeper<E> {
     private final LineCodec<E> codec;
     private final String prefix;
     private final Clock clock;
+    private final long beatMillis;
     private volatile PersistentLog<E> history;
     private LogSettings settings;
 
-    HistoryKeeper(RingBuffer<E> ring, LineCodec<E> codec, String prefix, Clock clock) {
+    /** @param beatMillis the writer's beat (0: woken by the first entry of a pause), see {@link PersistentLog} */
+    HistoryKeeper(RingBuffer<E> ring, LineCodec<E> codec, String prefix, Clock clock, long beatMillis) {
+        this.beatMillis = beatMillis;
         this.ring = ring;
         this.codec = codec;
         this.prefix = prefix;
@@ -49,7 +52,8 @@ final class HistoryKeeper<E> {
             return 0;
         }
         try {
-            history = PersistentLog.open(ring, codec, prefix, next, clock, first && ring.lastSequence() == 0);
+            history = PersistentLog.open(ring, codec, prefix, next, clock, first && ring.lastSequence() == 0,
+                    beatMillis, PersistentLog.writerThread(prefix));
             return history.loadedDamaged();
         } catch (IOException | RuntimeException e) {
             LOG.warn("Cannot keep the {} history in {}: {}; the log works in memory only", prefix, next.folder(),
@@ -58,10 +62,11 @@ final class HistoryKeeper<E> {
         }
     }
 
-    void signal() {
+    /** After each append, with the appended entry. */
+    void signal(E appended) {
         PersistentLog<E> h = history;
         if (h != null) {
-            h.signal();
+            h.signal(codec.sequence(appended));
         }
     }
 

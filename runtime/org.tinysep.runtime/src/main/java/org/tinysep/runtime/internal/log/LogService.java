@@ -43,12 +43,14 @@ abstract class LogService<E> {
      * @param prefix      the files' name prefix, e.g. {@code events}
      * @param capacityKey the configuration key of the capacity, for its messages
      * @param matcher     whether an entry matches a query ({@code LogQuery::matches})
+     * @param beatMillis  how the file writer is woken: 0 by the first entry of a pause, else on its own beat of
+     *                    that period while entries come ({@link Cadence})
      */
     LogService(Clock fallback, int capacity, LineCodec<E> codec, String prefix, String capacityKey,
-            BiPredicate<LogQuery, E> matcher) {
+            BiPredicate<LogQuery, E> matcher, long beatMillis) {
         this.clock = new PlatformClock(fallback);
         this.ring = new RingBuffer<>(capacity);
-        this.history = new HistoryKeeper<>(ring, codec, prefix, Clock.systemUTC());
+        this.history = new HistoryKeeper<>(ring, codec, prefix, Clock.systemUTC(), beatMillis);
         this.capacityKey = capacityKey;
         this.matcher = matcher;
     }
@@ -81,11 +83,10 @@ abstract class LogService<E> {
         history.close();
     }
 
-    /** Stamps, numbers and stores an entry, and wakes the writer thread. */
+    /** Stamps, numbers and stores an entry, and tells the writer (see {@link PersistentLog#signal}). */
     final void append(Entry<E> entry) {
         Instant time = clock.now(); // outside the ring's lock: it may call the Time Controller
-        ring.append(seq -> entry.make(seq, time));
-        history.signal();
+        history.signal(ring.append(seq -> entry.make(seq, time)));
     }
 
     /** @return the ring, for a subclass that echoes entries */

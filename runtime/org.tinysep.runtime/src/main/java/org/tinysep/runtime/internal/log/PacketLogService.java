@@ -26,13 +26,19 @@ import org.tinysep.runtime.internal.RuntimeConfig;
 public final class PacketLogService extends LogService<PacketEntry> implements PacketLog {
 
     private static final Logger LOG = LoggerFactory.getLogger(PacketLogService.class);
+    /**
+     * The packet writer's beat while packets come: the receive thread hands the writer nothing per packet, and a
+     * trickle of frames goes to the file in one write per beat. The price: a {@code kill -9} can lose the last
+     * beat of packets (the event log keeps its 50 ms).
+     */
+    static final long BEAT_MILLIS = 500;
 
     public PacketLogService() {
         this(Clock.systemUTC());
     }
 
     PacketLogService(Clock fallback) {
-        super(fallback, 20_000, new PacketLines(), "packets", "packetCapacity", LogQuery::matches);
+        super(fallback, 20_000, new PacketLines(), "packets", "packetCapacity", LogQuery::matches, BEAT_MILLIS);
     }
 
     @Activate

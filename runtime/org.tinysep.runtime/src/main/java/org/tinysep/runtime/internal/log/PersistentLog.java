@@ -4,8 +4,7 @@ import java.io.IOException;
 import java.time.Clock;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import org.slf4j.Logger;
@@ -15,10 +14,12 @@ import org.tinysep.runtime.internal.Threads;
 
 /**
  * The on-disk history of one log ring. Appending stays on the caller's thread and O(1) (the ring); one writer
- * thread drains the ring in batches into the log files {@value #WRITE_DELAY_MILLIS} ms after the first new entry,
- * flushing each batch to the operating system, forces the
- * file to the disk every {@link LogSettings#syncInterval()} and prunes old files at each new file and hourly.
- * Queries read the files (and the ring for what is not written yet) on the caller's thread.
+ * thread drains the ring in batches into the log files, each batch in one write to the operating system. The
+ * writer wakes either {@value #WRITE_DELAY_MILLIS} ms after the first new entry (the event log: each pause's
+ * first entry schedules it), or on its own beat while entries keep coming ({@link Cadence}, the packet log: the
+ * receive thread hands it nothing). It forces the file to the disk every {@link LogSettings#syncInterval()} and
+ * prunes old files at each new file and hourly. Queries read the files (and the ring for what is not written yet)
+ * on the caller's thread.
  *
  * @param <E> the entry type
  */
@@ -30,30 +31,36 @@ final class PersistentLog<E> implements AutoCloseable {
      * the same batch, so a steady trickle of packets costs one wake-up and one write per interval, not per packet.
      */
     static final long WRITE_DELAY_MILLIS = 50;
+    /** Empty beats after which a {@link Cadence} stops until the next entry. */
+    static final int IDLE_BEATS = 4;
 
     private final RingBuffer<E> ring;
     private final LineCodec<E> codec;
     private final LogReader<E> reader;
     private final LogFileWriter<E> writer;
     private final OriginHistory<E> kept;
-    private final ScheduledExecutorService thread;
+    private final ScheduledThreadPoolExecutor thread;
     private final RingDrain<E> drain;
+    /** the writer's own beat; null: woken by the first entry after a pause */
+    private final Cadence cadence;
     private final long loadedDamaged;
     private volatile boolean failing;
 
     private PersistentLog(RingBuffer<E> ring, LineCodec<E> codec, LogFolder folder, LogSettings settings,
-            Clock clock, long loadedDamaged) throws IOException {
+            Clock clock, long loadedDamaged, long beatMillis, ScheduledThreadPoolExecutor thread) throws IOException {
         this.ring = ring;
         this.codec = codec;
         this.reader = new LogReader<>(folder, codec);
         this.loadedDamaged = loadedDamaged;
         this.kept = OriginHistory.open(folder, codec, settings, clock);
         this.writer = new LogFileWriter<>(folder, codec, settings, clock, kept);
-        this.thread = Executors.newSingleThreadScheduledExecutor(Threads.named("tinysep-" + folder.prefix()
-                + "-writer"));
+        this.thread = thread;
+        thread.setExecuteExistingDelayedTasksAfterShutdownPolicy(false); // close() drains what is left
         this.drain = new RingDrain<>(ring, codec::sequence,
                 task -> thread.schedule(task, WRITE_DELAY_MILLIS, TimeUnit.MILLISECONDS), this::write,
                 "written to " + folder.prefix() + " files");
+        this.cadence = beatMillis <= 0 ? null
+                : new Cadence(drain, thread, beatMillis, IDLE_BEATS, () -> ring.capacityHint() / 4);
         long sync = settings.syncInterval().toMillis();
         thread.scheduleWithFixedDelay(this::sync, sync, sync, TimeUnit.MILLISECONDS);
         thread.scheduleWithFixedDelay(writer::prune, 0, 1, TimeUnit.HOURS);
@@ -67,6 +74,16 @@ final class PersistentLog<E> implements AutoCloseable {
      */
     static <E> PersistentLog<E> open(RingBuffer<E> ring, LineCodec<E> codec, String prefix, LogSettings settings,
             Clock clock, boolean reload) throws IOException {
+        return open(ring, codec, prefix, settings, clock, reload, 0, writerThread(prefix));
+    }
+
+    /**
+     * @param beatMillis 0: the writer wakes {@value #WRITE_DELAY_MILLIS} ms after the first entry of a pause;
+     *                   else it drains on its own beat of that period while entries come ({@link Cadence})
+     * @param thread     the writer thread (tests pass one that counts what it is handed)
+     */
+    static <E> PersistentLog<E> open(RingBuffer<E> ring, LineCodec<E> codec, String prefix, LogSettings settings,
+            Clock clock, boolean reload, long beatMillis, ScheduledThreadPoolExecutor thread) throws IOException {
         LogFolder folder = new LogFolder(settings.folder(), prefix);
         long damaged = 0;
         if (reload) {
@@ -76,7 +93,11 @@ final class PersistentLog<E> implements AutoCloseable {
             LOG.info("Loaded {} {} entries from {} (last sequence {}, {} damaged lines skipped)",
                     history.entries().size(), prefix, settings.folder(), history.lastSequence(), damaged);
         }
-        return new PersistentLog<>(ring, codec, folder, settings, clock, damaged);
+        return new PersistentLog<>(ring, codec, folder, settings, clock, damaged, beatMillis, thread);
+    }
+
+    static ScheduledThreadPoolExecutor writerThread(String prefix) {
+        return new ScheduledThreadPoolExecutor(1, Threads.named("tinysep-" + prefix + "-writer"));
     }
 
     /** @return the damaged lines skipped while reloading */
@@ -84,9 +105,13 @@ final class PersistentLog<E> implements AutoCloseable {
         return loadedDamaged;
     }
 
-    /** Called after each append: the writer thread will write it soon. */
-    void signal() {
-        drain.signal();
+    /** Called after each append with the entry's sequence: the writer thread will write it soon. */
+    void signal(long sequence) {
+        if (cadence != null) {
+            cadence.signal(sequence);
+        } else {
+            drain.signal();
+        }
     }
 
     /**

@@ -21,9 +21,11 @@ final class RingBuffer<E> {
     private int head; // index of the oldest entry
     private int size;
     private long lastSequence; // 0 while empty
+    private volatile int capacityHint; // the capacity, readable without the lock
 
     RingBuffer(int capacity) {
         slots = new Object[check(capacity)];
+        capacityHint = capacity;
     }
 
     /**
@@ -94,12 +96,18 @@ final class RingBuffer<E> {
             fresh[i] = slots[(head + size - n + i) % slots.length];
         }
         slots = fresh;
+        capacityHint = capacity;
         head = 0;
         size = n;
     }
 
     synchronized int capacity() {
         return slots.length;
+    }
+
+    /** @return the capacity, without taking the lock (for a recording thread's cheap checks) */
+    int capacityHint() {
+        return capacityHint;
     }
 
     synchronized int size() {

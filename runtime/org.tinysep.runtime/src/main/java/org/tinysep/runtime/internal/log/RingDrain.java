@@ -66,6 +66,11 @@ final class RingDrain<E> {
         return drained;
     }
 
+    /** @return whether the ring holds entries not yet handed to the sink */
+    boolean pending() {
+        return ring.lastSequence() > drained;
+    }
+
     /** Hands every entry not yet drained to the sink; runs on the executor (or, when stopping, on its caller). */
     void drain() {
         scheduled.set(false); // entries appended from now on schedule another drain

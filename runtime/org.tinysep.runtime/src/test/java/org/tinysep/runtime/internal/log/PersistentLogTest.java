@@ -61,7 +61,7 @@ class PersistentLogTest {
             long seq = first + i;
             ring.append(s -> new EventEntry(s, NOW.minusSeconds(10_000 - seq), seq % 2 == 0 ? EventKind.DEVICE_EVENT
                     : EventKind.STATUS, "dev-" + (seq % 3), "entry " + seq + "\twith tab"));
-            log.signal();
+            log.signal(seq);
             if (i % 10 == 9) {
                 log.flush();
             }
@@ -175,8 +175,7 @@ class PersistentLogTest {
     void aBurstBiggerThanTheRingIsCountedAsSkipped() throws IOException {
         open(5, LogSettings.in(dir));
         for (int i = 0; i < 1000; i++) { // the writer cannot keep up with 1000 appends into a ring of 5
-            ring.append(s -> new EventEntry(s, NOW, EventKind.STATUS, "o", "m"));
-            log.signal();
+            log.signal(ring.append(s -> new EventEntry(s, NOW, EventKind.STATUS, "o", "m")).sequence());
         }
         log.flush();
         long written = log.query(e -> true, 10_000).matched();
