@@ -61,13 +61,17 @@ public final class PacketRecordCost {
             PacketLogService memory = new PacketLogService();
             memory.configure(() -> 20_000);
             String memorySparse = sparse(memory, sparse);
+            long writer0 = writerCpu();
             String diskSparse = sparse(disk, sparse);
+            String writerSparse = String.format("%.1f µs", (writerCpu() - writer0) / 1e3 / sparse);
             String floorFlat = flat(empty, 1_000_000);
             String diskFlat = flat(disk, 1_000_000);
             disk.deactivate();
             System.out.printf("round %d%n  sparse (1 per %d ms, %d records): floor %s | in memory only %s"
-                    + " | packet log with its files %s%n  flat out (1,000,000 records): floor %s | packet log %s%n",
-                    round, SPARSE_GAP_MILLIS, sparse, floorSparse, memorySparse, diskSparse, floorFlat, diskFlat);
+                    + " | packet log with its files %s; its writer thread %s per record%n"
+                    + "  flat out (1,000,000 records): floor %s | packet log %s%n",
+                    round, SPARSE_GAP_MILLIS, sparse, floorSparse, memorySparse, diskSparse, writerSparse, floorFlat,
+                    diskFlat);
         }
         delete(root);
     }
@@ -83,6 +87,16 @@ public final class PacketRecordCost {
         }
         Arrays.sort(cost);
         return String.format("p50 %.2f µs, p90 %.2f µs", cost[n / 2] / 1e3, cost[n * 9 / 10] / 1e3);
+    }
+
+    /** @return the CPU time of the packet log's writer thread so far, in ns */
+    private static long writerCpu() {
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (t.getName().equals("tinysep-packets-writer")) {
+                return CPU.getThreadCpuTime(t.getId());
+            }
+        }
+        return 0;
     }
 
     /** @return the recording thread's CPU time per call, calls back to back */
