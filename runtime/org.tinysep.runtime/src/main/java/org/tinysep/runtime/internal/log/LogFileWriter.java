@@ -16,7 +16,10 @@ import java.util.List;
 /**
  * Appends log entries to the newest file of a {@link LogFolder}, one line each, starting a new file before one
  * would exceed the size bound (then pruning old files). {@link #write} ends with a flush to the operating system;
- * {@link #sync} forces the file to the disk. Not thread-safe: one writer thread.
+ * {@link #sync} forces the file to the disk. Each line goes to the 64 KiB buffer in one call, and the buffer hands
+ * the OS only whole calls (a line longer than the buffer goes in one write of its own), so a process crash never
+ * leaves half a line from a completed write; a line torn by power loss is ended by {@link #repairTornLine} and
+ * skipped as damaged. Not thread-safe: one writer thread.
  *
  * @param <E> the entry type
  */

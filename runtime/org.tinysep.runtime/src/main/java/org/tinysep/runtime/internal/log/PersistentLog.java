@@ -14,8 +14,8 @@ import org.tinysep.runtime.internal.Threads;
 
 /**
  * The on-disk history of one log ring. Appending stays on the caller's thread and O(1) (the ring); one writer
- * thread drains the ring in batches into the log files, each batch in one write to the operating system. The
- * writer wakes either {@value #WRITE_DELAY_MILLIS} ms after the first new entry (the event log: each pause's
+ * thread drains the ring in batches into the log files, each batch flushed to the operating system in whole lines
+ * (see {@link LogFileWriter}). The writer wakes either {@value #WRITE_DELAY_MILLIS} ms after the first new entry (the event log: each pause's
  * first entry schedules it), or on its own beat while entries keep coming ({@link Cadence}, the packet log: the
  * receive thread hands it nothing). It forces the file to the disk every {@link LogSettings#syncInterval()} and
  * prunes old files at each new file and hourly. Queries read the files (and the ring for what is not written yet)
