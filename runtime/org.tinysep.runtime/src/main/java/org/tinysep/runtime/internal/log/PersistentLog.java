@@ -100,6 +100,11 @@ final class PersistentLog<E> implements AutoCloseable {
         return new ScheduledThreadPoolExecutor(1, Threads.named("tinysep-" + prefix + "-writer"));
     }
 
+    /** @return whether the writer's own beat is running (false when it has none) */
+    boolean beating() {
+        return cadence != null && cadence.running();
+    }
+
     /** @return the damaged lines skipped while reloading */
     long loadedDamaged() {
         return loadedDamaged;
