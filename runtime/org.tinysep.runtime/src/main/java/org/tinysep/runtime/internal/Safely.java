@@ -3,13 +3,13 @@ package org.tinysep.runtime.internal;
 import java.util.function.Supplier;
 
 /** Calls into other bundles' objects without letting their exceptions escape. */
-final class Safely {
+public final class Safely {
 
     private Safely() {
     }
 
     /** @return {@code call}'s result, or {@code fallback} if it throws or returns null */
-    static <T> T get(Supplier<T> call, T fallback) {
+    public static <T> T get(Supplier<T> call, T fallback) {
         try {
             T value = call.get();
             return value == null ? fallback : value;
@@ -19,13 +19,13 @@ final class Safely {
     }
 
     /** @return a one-line description of a failure: the exception's simple class name and message */
-    static String describe(Throwable t) {
+    public static String describe(Throwable t) {
         String message = t.getMessage();
         String name = t.getClass().getSimpleName();
         return message == null || message.isBlank() ? name : name + ": " + oneLine(message);
     }
 
-    static String oneLine(String text) {
+    public static String oneLine(String text) {
         return text == null ? "" : text.replaceAll("[\\r\\n\\t]+", " ").strip();
     }
 }

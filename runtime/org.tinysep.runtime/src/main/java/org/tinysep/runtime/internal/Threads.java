@@ -4,12 +4,12 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ThreadFactory;
 
 /** Thread factories for the runtime's executors: named daemon threads. */
-final class Threads {
+public final class Threads {
 
     private Threads() {
     }
 
-    static ThreadFactory named(String name) {
+    public static ThreadFactory named(String name) {
         ThreadFactory base = Executors.defaultThreadFactory();
         return r -> {
             Thread t = base.newThread(r);

@@ -24,7 +24,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Driver;
 import org.tinysep.device.support.files.StateFolder;
-import org.tinysep.runtime.internal.Usage;
+import org.tinysep.runtime.internal.shell.Usage;
 
 /**
  * {@code tinysep:backup [--with-secrets] [file]} writes the configuration as one signed zip archive;

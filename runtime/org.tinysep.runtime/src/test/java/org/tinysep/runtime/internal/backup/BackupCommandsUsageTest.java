@@ -10,7 +10,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.runtime.internal.GogoShell;
+import org.tinysep.runtime.internal.shell.GogoShell;
 
 /** {@code tinysep:backup} and {@code restore} with too many arguments: the usage line, not "Cannot coerce". */
 class BackupCommandsUsageTest {

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.runtime.internal.EventLogService;
+import org.tinysep.runtime.internal.log.EventLogService;
 
 /**
  * Disk nearly full, without filling a disk: the minimum free space is set above what the real disk has free, so the

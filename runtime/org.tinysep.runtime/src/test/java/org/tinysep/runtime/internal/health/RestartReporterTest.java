@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.runtime.internal.EventLogService;
+import org.tinysep.runtime.internal.log.EventLogService;
 
 /**
  * The launcher's restart note reaches the event log once, in its own words, and stays until it can be mailed (the
