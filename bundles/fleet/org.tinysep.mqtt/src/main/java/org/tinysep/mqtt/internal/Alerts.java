@@ -1,5 +1,6 @@
 package org.tinysep.mqtt.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import static org.tinysep.json.JsonWriter.object;
 import static org.tinysep.json.JsonWriter.writePlain;
 

@@ -3,7 +3,7 @@ package org.tinysep.runtime.internal.directory;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /** The log origins a user means by a device or driver reference in {@code events --device D}. */
 public final class DeviceOrigins {

@@ -10,7 +10,7 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.device.support.lifecycle.ServiceUse;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /**
  * Keeps the directory's devices in step with the registry and announces creation and removal. A device's

@@ -9,7 +9,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.device.Driver;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /** Keeps the directory's drivers in step with the registry and announces each arrival and departure. */
 final class DriverTracking implements ServiceTrackerCustomizer<Driver, DriverRecord> {

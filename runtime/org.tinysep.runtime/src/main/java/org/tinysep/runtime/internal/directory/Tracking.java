@@ -4,7 +4,7 @@ import java.util.function.Supplier;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceReference;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /** Small helpers shared by the service-tracker customizers. */
 final class Tracking {

@@ -5,7 +5,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Supplier;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /**
  * Builds the shell's views from the inventory, calling the drivers and devices for their live state. A call that

@@ -30,7 +30,7 @@ abstract class LogService<E> {
         E make(long sequence, Instant time);
     }
 
-    private final PlatformClock clock;
+    private final LogClock clock;
     private final RingBuffer<E> ring;
     private final HistoryKeeper<E> history;
     private final String capacityKey;
@@ -48,7 +48,7 @@ abstract class LogService<E> {
      */
     LogService(Clock fallback, int capacity, LineCodec<E> codec, String prefix, String capacityKey,
             BiPredicate<LogQuery, E> matcher, long beatMillis) {
-        this.clock = new PlatformClock(fallback);
+        this.clock = new LogClock(fallback);
         this.ring = new RingBuffer<>(capacity);
         this.history = new HistoryKeeper<>(ring, codec, prefix, Clock.systemUTC(), beatMillis);
         this.capacityKey = capacityKey;

@@ -19,7 +19,7 @@ import org.tinysep.api.log.EventLog;
 import org.tinysep.api.log.LogHistory;
 import org.tinysep.api.log.LogQuery;
 import org.tinysep.api.log.PacketLog;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 import org.tinysep.runtime.internal.directory.DeviceOrigins;
 import org.tinysep.runtime.internal.directory.DeviceRecord;
 import org.tinysep.runtime.internal.directory.Inventory;

@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.tinysep.api.device.DeviceFunction;
 import org.tinysep.api.device.Parameter;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 import org.tinysep.runtime.internal.directory.DeviceRecord;
 import org.tinysep.runtime.internal.directory.DeviceView;
 import org.tinysep.runtime.internal.directory.DriverRecord;

@@ -13,7 +13,7 @@ import org.osgi.service.component.annotations.ReferencePolicy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.backup.BackupStore;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 import org.tinysep.runtime.internal.directory.Inventory;
 
 /**

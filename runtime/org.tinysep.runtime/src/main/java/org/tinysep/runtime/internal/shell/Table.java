@@ -2,7 +2,7 @@ package org.tinysep.runtime.internal.shell;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.tinysep.runtime.internal.Safely;
+import org.tinysep.device.support.lifecycle.Safely;
 
 /**
  * A plain-text table: a header row, then one row per line, columns separated by {@code " | "} and padded to a

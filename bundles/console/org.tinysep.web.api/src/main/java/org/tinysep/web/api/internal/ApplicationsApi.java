@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import jakarta.servlet.http.HttpServletRequest;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -144,9 +145,9 @@ final class ApplicationsApi {
         List<Object> drivers = new ArrayList<>();
         for (Driver d : platform.drivers(b)) {
             Map<String, Object> dm = new LinkedHashMap<>();
-            dm.put("uid", Safe.get(d::uid, ""));
-            dm.put("name", Safe.get(d::name, ""));
-            dm.put("devices", Safe.get(() -> d.devices().size(), 0));
+            dm.put("uid", Safely.get(d::uid, ""));
+            dm.put("name", Safely.get(d::name, ""));
+            dm.put("devices", Safely.get(() -> d.devices().size(), 0));
             drivers.add(dm);
         }
         m.put("drivers", drivers);

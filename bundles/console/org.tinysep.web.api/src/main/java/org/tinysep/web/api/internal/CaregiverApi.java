@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -120,10 +121,10 @@ public final class CaregiverApi {
         if (r instanceof Device watch) {
             Map<String, WatchSight.Named> devices = new HashMap<>();
             for (PlatformView.DeviceRef d : platform.devices()) {
-                DeviceStatus s = Safe.get(d.device()::status, null);
-                devices.put(d.uid(), s == null ? null : new WatchSight.Named(Safe.name(d.device(), d.uid()), s));
+                DeviceStatus s = Safely.get(d.device()::status, null);
+                devices.put(d.uid(), s == null ? null : new WatchSight.Named(Safely.get(() -> d.device().name(), d.uid()), s));
             }
-            m.putAll(WatchSight.of(Safe.get(watch::connections, List.of()), devices::get).json());
+            m.putAll(WatchSight.of(Safely.get(watch::connections, List.of()), devices::get).json());
         }
         return m;
     }

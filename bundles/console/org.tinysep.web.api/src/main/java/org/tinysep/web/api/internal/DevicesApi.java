@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -76,10 +77,10 @@ public final class DevicesApi {
         List<Object> out = new ArrayList<>();
         for (Driver d : platform.drivers()) {
             Map<String, Object> m = new LinkedHashMap<>();
-            m.put("uid", Safe.get(d::uid, ""));
-            m.put("name", Safe.get(d::name, ""));
-            m.put("devices", Safe.get(() -> d.devices().stream().map(Device::uid).toList(), List.of()));
-            m.put("parameters", parameters(Safe.get(d::parameters, List.of())));
+            m.put("uid", Safely.get(d::uid, ""));
+            m.put("name", Safely.get(d::name, ""));
+            m.put("devices", Safely.get(() -> d.devices().stream().map(Device::uid).toList(), List.of()));
+            m.put("parameters", parameters(Safely.get(d::parameters, List.of())));
             out.add(m);
         }
         return out;
@@ -100,11 +101,11 @@ public final class DevicesApi {
         Device d = ref.device();
         Map<String, Object> m = new LinkedHashMap<>();
         m.put("uid", ref.uid());
-        m.put("name", Safe.name(d, ref.uid()));
-        m.put("type", Safe.get(d::type, ""));
-        m.put("driverUid", Safe.get(d::driverUid, ""));
+        m.put("name", Safely.get(d::name, ref.uid()));
+        m.put("type", Safely.get(d::type, ""));
+        m.put("driverUid", Safely.get(d::driverUid, ""));
         m.put("driverName", ref.driverName());
-        DeviceStatus s = Safe.get(d::status, null);
+        DeviceStatus s = Safely.get(d::status, null);
         Map<String, Object> status = new LinkedHashMap<>();
         status.put("state", s == null ? "UNKNOWN" : s.state().name());
         status.put("detail", s == null ? "the device did not answer" : s.detail());
@@ -121,9 +122,9 @@ public final class DevicesApi {
         m.put("nodeAddress", ref.nodeAddress());
         m.put("nodeTypes", ref.nodeTypes());
         m.put("provides", ref.provides());
-        m.put("parameters", parameters(Safe.get(d::parameters, List.of())));
+        m.put("parameters", parameters(Safely.get(d::parameters, List.of())));
         List<Object> functions = new ArrayList<>();
-        for (DeviceFunction f : Safe.get(d::functions, List.<DeviceFunction>of())) {
+        for (DeviceFunction f : Safely.get(d::functions, List.<DeviceFunction>of())) {
             Map<String, Object> fm = new LinkedHashMap<>();
             fm.put("name", f.name());
             fm.put("description", f.description());
@@ -131,7 +132,7 @@ public final class DevicesApi {
         }
         m.put("functions", functions);
         List<Object> connections = new ArrayList<>();
-        for (ConnectionInfo c : Safe.get(d::connections, List.<ConnectionInfo>of())) {
+        for (ConnectionInfo c : Safely.get(d::connections, List.<ConnectionInfo>of())) {
             Map<String, Object> cm = new LinkedHashMap<>();
             cm.put("interface", c.interfaceName());
             cm.put("providerUid", c.providerDeviceUid());

@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.time.Instant;
 import java.time.format.DateTimeParseException;
 import java.util.ArrayList;
@@ -142,15 +143,15 @@ public final class LogsApi {
         Set<String> out = new LinkedHashSet<>();
         out.add(ref);
         for (DeviceRef d : platform.devices()) {
-            if (d.uid().equals(ref) || Safe.name(d.device(), "").equalsIgnoreCase(ref)) {
+            if (d.uid().equals(ref) || Safely.get(() -> d.device().name(), "").equalsIgnoreCase(ref)) {
                 out.add(d.uid());
                 if (!d.nodeAddress().isEmpty()) {
                     out.add("node " + d.nodeAddress());
                 }
             }
         }
-        platform.drivers().stream().filter(d -> Safe.get(d::name, "").equalsIgnoreCase(ref))
-                .forEach(d -> out.add(Safe.get(d::uid, ref)));
+        platform.drivers().stream().filter(d -> Safely.get(d::name, "").equalsIgnoreCase(ref))
+                .forEach(d -> out.add(Safely.get(d::uid, ref)));
         return out;
     }
 

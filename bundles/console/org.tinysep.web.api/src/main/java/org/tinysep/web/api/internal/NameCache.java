@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.util.Map;
 
 /** Device and driver names for live log entries, looked up in the registry at most once a second. */
@@ -18,7 +19,7 @@ final class NameCache {
     Map<String, String> get() {
         long now = System.nanoTime();
         if (now - readAt > MAX_AGE_NANOS) {
-            names = Safe.get(platform::names, names);
+            names = Safely.get(platform::names, names);
             readAt = now;
         }
         return names;

@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
@@ -48,7 +49,7 @@ final class PacketDescriptions {
         List<String> saidNo = new ArrayList<>();
         List<String> failed = new ArrayList<>();
         for (PacketDescriber d : ordered) {
-            String protocol = Safe.get(d::protocol, "an unnamed protocol");
+            String protocol = Safely.get(d::protocol, "an unnamed protocol");
             if (!asked.add(protocol)) {
                 continue; // another bus radio of the same protocol was asked already
             }

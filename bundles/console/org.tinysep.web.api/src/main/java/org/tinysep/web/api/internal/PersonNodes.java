@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -42,18 +43,18 @@ final class PersonNodes {
     static List<Map<String, Object>> of(PlatformView platform, Instant now) {
         List<PlatformView.DeviceRef> devices = platform.devices();
         Optional<Map<String, PersonWatch>> watches = platform.withService(InactivityRecognitionProvider.class,
-                r -> Safe.get(r::persons, List.<PersonWatch>of()).stream()
+                r -> Safely.get(r::persons, List.<PersonWatch>of()).stream()
                         .collect(Collectors.toMap(PersonWatch::nodeUid, Function.identity(), (a, b) -> a)));
         List<Node> nodes = new ArrayList<>();
         for (PlatformView.DeviceRef d : devices) {
             if (d.device() instanceof PersonNodeProvider p) {
                 NodeHealth health = devices.stream()
                         .filter(b -> b.device() instanceof NodeHealthSource && b.nodeAddress().equals(d.nodeAddress()))
-                        .map(b -> Safe.get(((NodeHealthSource) b.device())::health, null))
+                        .map(b -> Safely.get(((NodeHealthSource) b.device())::health, null))
                         .filter(h -> h != null).findFirst().orElse(null);
-                nodes.add(new Node(d.uid(), Safe.name(d.device(), d.uid()),
-                        Safe.get(p::person, Optional.<String>empty()).orElse(""), d.nodeAddress(),
-                        Safe.get(p::lastSummary, Optional.<MovementSummary>empty()).map(MovementSummary::end)
+                nodes.add(new Node(d.uid(), Safely.get(() -> d.device().name(), d.uid()),
+                        Safely.get(p::person, Optional.<String>empty()).orElse(""), d.nodeAddress(),
+                        Safely.get(p::lastSummary, Optional.<MovementSummary>empty()).map(MovementSummary::end)
                                 .orElse(null), health, new PersonWatchWords.Source(watches.isPresent(),
                                 watches.map(w -> w.get(d.uid())).orElse(null))));
             }

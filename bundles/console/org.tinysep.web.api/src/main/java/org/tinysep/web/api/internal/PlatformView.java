@@ -1,5 +1,6 @@
 package org.tinysep.web.api.internal;
 
+import org.tinysep.device.support.lifecycle.Safely;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -51,7 +52,7 @@ public final class PlatformView {
                 }
             }
         }
-        out.sort((a, b) -> Safe.name(a.device(), a.uid()).compareToIgnoreCase(Safe.name(b.device(), b.uid())));
+        out.sort((a, b) -> Safely.get(a.device()::name, a.uid()).compareToIgnoreCase(Safely.get(b.device()::name, b.uid())));
         return out;
     }
 
@@ -70,7 +71,7 @@ public final class PlatformView {
                 context.ungetService(ref);
             }
         }
-        out.sort((a, b) -> Safe.get(a::name, "").compareToIgnoreCase(Safe.get(b::name, "")));
+        out.sort((a, b) -> Safely.get(a::name, "").compareToIgnoreCase(Safely.get(b::name, "")));
         return out;
     }
 
@@ -93,10 +94,10 @@ public final class PlatformView {
     public Map<String, String> names() {
         Map<String, String> names = new LinkedHashMap<>();
         for (Driver d : drivers()) {
-            names.put(Safe.get(d::uid, ""), Safe.get(d::name, ""));
+            names.put(Safely.get(d::uid, ""), Safely.get(d::name, ""));
         }
         for (DeviceRef d : devices()) {
-            names.put(d.uid(), Safe.name(d.device(), d.uid()));
+            names.put(d.uid(), Safely.get(() -> d.device().name(), d.uid()));
         }
         return names;
     }

@@ -1,8 +1,11 @@
-package org.tinysep.runtime.internal;
+package org.tinysep.device.support.lifecycle;
 
 import java.util.function.Supplier;
 
-/** Calls into other bundles' objects without letting their exceptions escape. */
+/**
+ * Calls into other bundles' objects (devices, drivers, services that may be going away or may throw) without letting
+ * their exceptions escape, and describes a failure in one line for an event or a status.
+ */
 public final class Safely {
 
     private Safely() {
@@ -25,6 +28,7 @@ public final class Safely {
         return message == null || message.isBlank() ? name : name + ": " + oneLine(message);
     }
 
+    /** @return {@code text} on one line (line breaks and tabs as one space), "" for null */
     public static String oneLine(String text) {
         return text == null ? "" : text.replaceAll("[\\r\\n\\t]+", " ").strip();
     }

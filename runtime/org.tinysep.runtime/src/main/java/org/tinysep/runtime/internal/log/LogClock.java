@@ -12,15 +12,15 @@ import org.tinysep.api.service.TimeControllerProvider;
  * The platform's time for log entries: the bound Time Controller's {@code now()} when there is one, else the
  * fallback clock (the system clock in the framework, a fixed clock in tests). Lock-free.
  */
-final class PlatformClock {
+final class LogClock {
 
-    private static final Logger LOG = LoggerFactory.getLogger(PlatformClock.class);
+    private static final Logger LOG = LoggerFactory.getLogger(LogClock.class);
 
     private final Clock fallback;
     private final AtomicReference<TimeControllerProvider> controller = new AtomicReference<>();
     private final AtomicBoolean warned = new AtomicBoolean();
 
-    PlatformClock(Clock fallback) {
+    LogClock(Clock fallback) {
         this.fallback = fallback;
     }
 
