@@ -5,7 +5,7 @@
  * {@link SingleDeviceWiring}, {@link WholeFlatDevice}), the {@link DriverContext} a driver hands its devices, the
  * connections between them ({@link Listeners}, {@link ProviderTracker}, {@link ServiceUse}, {@link Consumptions}),
  * parameter values and actuator settings ({@link ParameterValues}, {@link ConfirmedSetting}), {@link Uids},
- * {@link Backups} and {@link Closeables}.
+ * {@link Backups}, {@link Closeables} and {@link Safely} (calls into other bundles' objects that may throw).
  * <p>
  * Not exported: bnd copies the packages an application uses into its bundle
  * ({@code -conditionalpackage: org.tinysep.device.support.*}), so an application still depends only on the exported
