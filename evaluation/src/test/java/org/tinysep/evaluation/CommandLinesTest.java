@@ -75,7 +75,8 @@ class CommandLinesTest {
         assertEquals("error: Unknown option: '--modle'", r.firstErrorLine()); // 'both' is taken for a home
         Ran bad = java(CoreSweep.class.getName(), "--engine", "core", "--model", "sideways", "A");
         assertEquals(2, bad.code(), bad.err());
-        assertTrue(bad.firstErrorLine().contains("'--model': needs uniform, moving or both"), bad.err());
+        assertTrue(bad.firstErrorLine().startsWith("error: Invalid value for option '--model'")
+                && bad.firstErrorLine().endsWith("needs uniform, moving or both, not 'sideways'"), bad.err());
     }
 
     @Test
