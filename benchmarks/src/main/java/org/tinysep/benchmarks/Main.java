@@ -4,12 +4,14 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Instant;
 import java.util.List;
+import org.tinysep.tools.cli.Cli;
 
 /**
  * Runs every benchmark against the real distribution and writes RESULTS.md and the plots.
  * <pre>
- * Main [--smoke] [--repeat 3] --dist runtime/org.tinysep.launcher/target/tinysep --out benchmarks/RESULTS.md --images docs/images
+ * Main [--smoke] [--repeat 3] [--only footprint,scale] [--append] --dist runtime/org.tinysep.launcher/target/tinysep --out benchmarks/RESULTS.md --images docs/images
  * </pre>
+ * ({@link BenchFlags}: an unknown flag is refused with exit code 2.)
  * The thesis, throughput and latency steps run {@code --repeat} times (default 3, smoke 1): the last run's tables
  * are shown, every run's headline figures with their spread, and the issue-29 goals ({@link Goals}) are judged on
  * the medians.
@@ -20,23 +22,29 @@ public final class Main {
     private Main() {
     }
 
-    public static void main(String[] args) throws Exception {
-        System.exit(run(args));
+    /** Exit code 2 for a refused command line (one line naming it, then the usage), 1 when a benchmark failed. */
+    public static void main(String[] args) {
+        BenchFlags flags = new BenchFlags();
+        System.exit(Cli.main(flags, args, System.out, System.err, () -> run(flags)));
     }
 
+    /** @throws IllegalArgumentException naming a refused option or argument */
     static int run(String[] args) throws Exception {
-        boolean smoke = List.of(args).contains("--smoke");
-        String selected = arg(args, "--only", ""); // e.g. --only footprint,scale (while developing one)
-        only = selected.isEmpty() ? List.of() : List.of(selected.split(","));
-        Path dist = Path.of(arg(args, "--dist", "runtime/org.tinysep.launcher/target/tinysep"));
-        Path out = Path.of(arg(args, "--out", "benchmarks/RESULTS.md"));
-        Path images = Path.of(arg(args, "--images", "docs/images"));
+        return run(Cli.parse(new BenchFlags(), args));
+    }
+
+    static int run(BenchFlags flags) throws Exception {
+        boolean smoke = flags.smoke;
+        only = List.copyOf(flags.only);
+        Path dist = flags.dist;
+        Path out = flags.out;
+        Path images = flags.images;
         Path work = Files.createTempDirectory("tinysep-bench-");
         Report report = new Report();
         Bench b = new Bench(dist, work, smoke, Bench.chosenOptions(dist), report, images);
         String loadBefore = Machine.load();
         long t0 = System.nanoTime();
-        int repeat = Integer.parseInt(arg(args, "--repeat", smoke ? "1" : "3")); // runs of the repeated steps
+        int repeat = flags.repeat(); // runs of the repeated steps
         Footprint footprint = new Footprint();
         step("footprint", report, () -> {
             footprint.run(b);
@@ -72,7 +80,7 @@ public final class Main {
         String loadAfter = Machine.load();
         Goals.lines(report).forEach(l -> System.out.println("benchmarks: goal " + l));
         StringBuilder md = new StringBuilder();
-        if (List.of(args).contains("--append") && Files.isRegularFile(out)) {
+        if (flags.append && Files.isRegularFile(out)) {
             // sections run later (--only …) added below an earlier run's, with their own machine load
             md.append(Files.readString(out)).append("\n---\n\n# Added by a later run (").append(Instant.now())
                     .append(", sections: ").append(String.join(", ", only)).append("; load average before ")
@@ -142,15 +150,5 @@ public final class Main {
         } catch (RuntimeException e) {
             return false;
         }
-    }
-
-    /** @return the value after the last {@code name} (run.sh's defaults come first, the user's win) */
-    private static String arg(String[] args, String name, String otherwise) {
-        for (int i = args.length - 2; i >= 0; i--) {
-            if (args[i].equals(name)) {
-                return args[i + 1];
-            }
-        }
-        return otherwise;
     }
 }

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.tinysep.tools.cli.Cli;
 
 /**
  * Analysis and sweeps on the detector core ({@link CoreReplay}), in seconds instead of the platform's minutes:
@@ -35,39 +36,24 @@ public final class CoreSweep {
      * {@code CoreSweep A [half|cv K] [N]} still works. Prints one block per home, model and detector, then a
      * markdown table of all and a summary row (worst and median home).
      */
-    public static void main(String[] args) throws Exception {
+    public static void main(String[] args) {
+        CoreSweepFlags flags = new CoreSweepFlags();
+        System.exit(Cli.main(flags, args, System.out, System.err, () -> {
+            sweep(flags, args);
+            return Cli.OK;
+        }));
+    }
+
+    private static void sweep(CoreSweepFlags flags, String[] args) throws Exception {
         Path repo = Path.of(System.getProperty("tinysep.repo", "."));
-        List<String> homes = new ArrayList<>();
-        List<Collapses.Model> models = List.of(Collapses.Model.UNIFORM);
-        int k = 0;
-        int n = 200;
-        boolean readme = false; // --readme: a sweep (-Dfloor=...) must not overwrite the published tables
+        CoreSweepFlags.Plan plan = flags.plan();
+        List<String> homes = plan.homes();
+        List<Collapses.Model> models = flags.models;
+        int k = plan.folds();
+        int n = plan.collapses();
+        boolean readme = flags.writeReadme(); // a sweep (-Dfloor=...) must not overwrite the published tables
         String commit = Evaluate.commit(); // at the start: the code that runs
         Instant started = Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
-        for (int i = 0; i < args.length; i++) {
-            switch (args[i]) {
-            case "--engine" -> i++; // core, from evaluate.sh
-            case "--model" -> models = models(args[++i]);
-            case "--split" -> k = args[++i].startsWith("cv") ? Integer.parseInt(args[i].substring(2)) : 0;
-            case "--collapses" -> n = Integer.parseInt(args[++i]);
-            case "--readme" -> readme = true;
-            case "--no-readme" -> readme = false;
-            case "half" -> k = 0;
-            case "cv" -> k = Integer.parseInt(args[++i]);
-            default -> {
-                if (args[i].matches("\\d+") && !homes.isEmpty()) {
-                    n = Integer.parseInt(args[i]);
-                } else if (args[i].startsWith("--")) {
-                    throw new IllegalArgumentException("unknown option " + args[i]);
-                } else {
-                    homes.add(args[i]);
-                }
-            }
-            }
-        }
-        if (homes.isEmpty()) {
-            homes = List.of("A", "B");
-        }
         List<Figures> all = new ArrayList<>();
         for (String spec : homes) {
             Home home = load(spec, repo);
@@ -87,15 +73,6 @@ public final class CoreSweep {
             Readme.put(repo.resolve("README.md"), "core", table);
             System.out.println("written between the results:core markers of README.md and evaluation/README.md");
         }
-    }
-
-    static List<Collapses.Model> models(String v) {
-        return switch (v) {
-        case "uniform" -> List.of(Collapses.Model.UNIFORM);
-        case "moving" -> List.of(Collapses.Model.MOVING);
-        case "both" -> List.of(Collapses.Model.UNIFORM, Collapses.Model.MOVING);
-        default -> throw new IllegalArgumentException("--model needs uniform, moving or both, not '" + v + "'");
-        };
     }
 
     /** A, B, a folder, or {@code <home>:<variant>} (variant nomotion or two; the other home is the other Ordonez). */

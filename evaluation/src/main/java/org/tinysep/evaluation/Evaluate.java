@@ -9,6 +9,7 @@ import java.time.temporal.ChronoUnit;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import org.tinysep.tools.cli.Cli;
 
 /**
  * {@code ./evaluate.sh [A|B|folder] [--collapses N] [--seed S] ...}: evaluates the inactivity alert of the real
@@ -19,23 +20,19 @@ public final class Evaluate {
     private Evaluate() {
     }
 
+    /** Exit code 2 for a refused command line (one line naming it, then the usage), 1 for a failed run. */
     public static void main(String[] args) {
-        try {
-            if (args.length > 0 && args[0].equals("falls")) { // fall detection on SisFall
-                System.exit(org.tinysep.evaluation.falls.FallsCommand.main(
-                        java.util.Arrays.copyOfRange(args, 1, args.length),
-                        Path.of(System.getProperty("tinysep.repo", ".")), System.out));
-            }
-            run(EvalOptions.parse(args, Path.of(System.getProperty("tinysep.repo", "."))));
-            System.exit(0);
-        } catch (IllegalArgumentException e) {
-            System.err.println(e.getMessage());
-            System.exit(2);
-        } catch (Exception e) {
-            System.err.println("evaluation failed: " + e);
-            e.printStackTrace();
-            System.exit(1);
+        Path repo = Path.of(System.getProperty("tinysep.repo", "."));
+        if (args.length > 0 && args[0].equals("falls")) { // fall detection on SisFall: its own options
+            String[] rest = java.util.Arrays.copyOfRange(args, 1, args.length);
+            System.exit(Cli.run(new org.tinysep.evaluation.falls.FallsFlags(),
+                    () -> org.tinysep.evaluation.falls.FallsCommand.main(rest, repo, System.out), System.err));
         }
+        EvalFlags flags = new EvalFlags();
+        System.exit(Cli.main(flags, args, System.out, System.err, () -> {
+            run(flags.options(repo, "./evaluate.sh " + String.join(" ", args)));
+            return Cli.OK;
+        }));
     }
 
     /** What a run produced: the table and the figures behind it, per detector. */

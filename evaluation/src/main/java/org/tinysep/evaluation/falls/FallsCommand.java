@@ -14,6 +14,7 @@ import org.tinysep.falldetection.internal.FallSettings;
 import org.tinysep.simulator.person.NodeResampler;
 import org.tinysep.simulator.person.PersonNodeRule;
 import org.tinysep.simulator.person.SisfallRecording;
+import org.tinysep.tools.cli.Cli;
 
 /**
  * {@code ./evaluate.sh falls [folder] [--loso] [--why]}: plays every SisFall recording of the folder through the
@@ -21,68 +22,35 @@ import org.tinysep.simulator.person.SisfallRecording;
  */
 public final class FallsCommand {
 
-    static final String USAGE = """
-            usage: ./evaluate.sh falls [folder] [--loso] [--why] [--in-process] [--parallel P]
-              folder   laid out like SisFall: <subject>/<code>_<subject>_<trial>.txt[.gz]
-                       (default: $TINYSEP_SISFALL, else data/sisfall in the repository)
-              --loso   leave-one-subject-out: each subject judged with settings chosen on the others only
-                       (default: Fall Detection's default settings on every recording)
-              --why    list every missed fall and every false alert with the setting that decided it
-              --in-process  judge with Fall Detection's detector class in this process (seconds; settings are
-                       always chosen this way) instead of through the real distribution (the default: one platform
-                       process per subject, the recordings played over UDP in lock-step, the alerts read back from
-                       its event log; needs runtime/org.tinysep.launcher/target/tinysep, which ./evaluate.sh builds)
-              --parallel P  platform processes at once (default 2)
-              --dist DIR    the distribution (default runtime/org.tinysep.launcher/target/tinysep)
-              --work DIR    where the platforms' home and state folders go (default evaluation/target/falls-platforms)
-            """;
-
     private FallsCommand() {
     }
 
-    /** @return the process's exit code */
+    /**
+     * @param args the command line ({@link FallsFlags})
+     * @return the process's exit code (0; {@code --help} prints the usage on {@code out})
+     * @throws IllegalArgumentException naming a refused option or argument, a folder that is not there or holds no
+     *                                  recordings
+     */
     public static int main(String[] args, Path repo, PrintStream out) throws Exception {
-        Path folder = null;
-        boolean loso = false;
-        boolean why = false;
-        boolean inProcess = false;
-        int parallel = 2;
-        Path dist = repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
-        Path work = repo.resolve("evaluation/target/falls-platforms");
-        for (int i = 0; i < args.length; i++) {
-            String a = args[i];
-            switch (a) {
-                case "--loso" -> loso = true;
-                case "--why" -> why = true;
-                case "--in-process" -> inProcess = true;
-                case "--dist" -> dist = Path.of(value(args, ++i, a));
-                case "--work" -> work = Path.of(value(args, ++i, a));
-                case "--parallel" -> {
-                    try {
-                        parallel = Integer.parseInt(i + 1 < args.length ? args[++i] : "");
-                    } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException("falls: --parallel needs a whole number\n" + USAGE);
-                    }
-                }
-                case "-h", "--help" -> {
-                    out.print(USAGE);
-                    return 0;
-                }
-                default -> {
-                    if (a.startsWith("-") || folder != null) {
-                        throw new IllegalArgumentException("falls: unknown argument '" + a + "'\n" + USAGE);
-                    }
-                    folder = Path.of(a);
-                }
-            }
+        FallsFlags flags = Cli.parse(new FallsFlags(), args);
+        if (flags.help) {
+            out.print(Cli.usage(flags));
+            return 0;
         }
+        boolean loso = flags.loso;
+        boolean why = flags.why;
+        boolean inProcess = flags.inProcess;
+        int parallel = flags.parallel;
+        Path dist = flags.dist != null ? flags.dist : repo.resolve("runtime/org.tinysep.launcher/target/tinysep");
+        Path work = flags.work != null ? flags.work : repo.resolve("evaluation/target/falls-platforms");
+        Path folder = flags.folder;
         if (folder == null) {
             String env = System.getenv("TINYSEP_SISFALL");
             folder = env != null && !env.isBlank() ? Path.of(env) : repo.resolve("data/sisfall");
         }
         if (!Files.isDirectory(folder)) {
             throw new IllegalArgumentException("falls: " + folder + " is not a folder; give a folder laid out like "
-                    + "SisFall (<subject>/<code>_<subject>_<trial>.txt.gz) or set TINYSEP_SISFALL\n" + USAGE);
+                    + "SisFall (<subject>/<code>_<subject>_<trial>.txt.gz) or set TINYSEP_SISFALL");
         }
         Map<String, List<NodeStream>> bySubject = load(folder);
         if (bySubject.isEmpty()) {
@@ -120,13 +88,6 @@ public final class FallsCommand {
         }
         out.println(Figures.of(scored).lastLine());
         return 0;
-    }
-
-    private static String value(String[] args, int i, String option) {
-        if (i >= args.length) {
-            throw new IllegalArgumentException("falls: " + option + " needs a value\n" + USAGE);
-        }
-        return args[i];
     }
 
     static Map<String, List<NodeStream>> load(Path folder) throws IOException {

@@ -47,8 +47,8 @@ public final class Main {
             passwordRole = WebPassword.role(Arrays.asList(args));
             options = Options.parse(WebPassword.rest(Arrays.asList(args)), System.getenv(),
                     Options.defaultHome(launcherJar()));
-        } catch (IllegalArgumentException e) {
-            System.err.println(e.getMessage());
+        } catch (IllegalArgumentException e) { // one line naming it, as the tools' command lines (tools.cli) say it
+            System.err.println("error: " + e.getMessage());
             System.err.println(Options.USAGE);
             System.exit(2);
             return;

@@ -7,7 +7,10 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Command-line options of the launcher.
+ * Command-line options of the launcher. A parser of its own rather than picocli (which the simulator, the evaluation
+ * and the benchmarks use, tools/org.tinysep.tools.cli): the platform's start time counts, and picocli's classes take
+ * 0.1 s and more of class loading before Felix starts. Refusals read as picocli's do ({@code Unknown option: '--x'});
+ * {@link Main} prints them as {@code error: ...}, then the usage, with exit code 2.
  *
  * @param daemon run without the interactive Gogo shell until SIGTERM ({@code --daemon} or {@code TINYSEP_DAEMON=1})
  * @param home   the distribution directory holding {@code bundles/}, {@code etc/} and {@code deploy/}
@@ -104,7 +107,8 @@ public record Options(boolean daemon, Path home, Path var, boolean help, boolean
                     } else if (arg.startsWith("--var=") && arg.length() > "--var=".length()) {
                         var = Path.of(arg.substring("--var=".length()));
                     } else {
-                        throw new IllegalArgumentException("unknown argument: " + arg);
+                        throw new IllegalArgumentException((arg.startsWith("-") ? "Unknown option: '"
+                                : "Unmatched argument: '") + arg + "'");
                     }
                 }
             }

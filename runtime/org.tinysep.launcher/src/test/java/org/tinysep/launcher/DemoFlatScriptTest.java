@@ -144,7 +144,8 @@ class DemoFlatScriptTest {
         Result r = script(without, "simulate", tmp.resolve("dist").toString(), demo.toString());
         assertTrue(r.output().contains("DEMO: a day without the pendant (TINYSEP_DEMO_PENDANT=0, simulator "
                 + "--no-pendant)"), r.output());
-        assertTrue(!r.output().contains("unknown option") && !r.output().contains("unexpected argument"),
+        String said = r.output().toLowerCase(java.util.Locale.ROOT); // the simulator's refusals (tools.cli, picocli)
+        assertTrue(!said.contains("unknown option") && !said.contains("unmatched argument"),
                 "the simulator takes --no-pendant: " + r.output());
     }
 }

@@ -67,8 +67,28 @@ class OptionsTest {
     void rejectsUnknownArgumentsAndMissingValues() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> Options.parse(List.of("--deamon"), Map.of(), HOME));
-        assertTrue(e.getMessage().contains("--deamon"));
+        assertEquals("Unknown option: '--deamon'", e.getMessage(), "as the tools' command lines say it (tools.cli)");
+        e = assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("stray"), Map.of(), HOME));
+        assertEquals("Unmatched argument: 'stray'", e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("--home"), Map.of(), HOME));
         assertThrows(IllegalArgumentException.class, () -> Options.parse(List.of("--home="), Map.of(), HOME));
+    }
+
+    /** {@code java -jar tinysep.jar --deamon}: one line naming it, the usage, exit code 2, and no framework started. */
+    @Test
+    void theLauncherRefusesAnUnknownFlagWithExitCode2() throws Exception {
+        java.nio.file.Path err = java.nio.file.Files.createTempFile("launcher-", ".err");
+        try {
+            Process p = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java")
+                    .toString(), "-cp", System.getProperty("java.class.path"), Main.class.getName(), "--daemon",
+                    "--deamon").redirectError(err.toFile()).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            assertTrue(p.waitFor(60, java.util.concurrent.TimeUnit.SECONDS), "the launcher ends at once");
+            String said = java.nio.file.Files.readString(err);
+            assertEquals(2, p.exitValue(), said);
+            assertEquals("error: Unknown option: '--deamon'", said.lines().findFirst().orElse(""));
+            assertTrue(said.contains("--headless"), "the usage follows: " + said);
+        } finally {
+            java.nio.file.Files.deleteIfExists(err);
+        }
     }
 }

@@ -14,6 +14,7 @@ import org.tinysep.simulator.time.RealTimeDriver;
 import org.tinysep.simulator.time.SyncClient;
 import org.tinysep.simulator.time.VirtualClock;
 import org.tinysep.simulator.time.Welcome;
+import org.tinysep.tools.cli.Cli;
 
 /** The simulator's command line: loads a flat and a scenario and plays them against a platform. */
 public final class Main {
@@ -21,20 +22,15 @@ public final class Main {
     private Main() {
     }
 
+    /** Exit code 2 for a refused command line (one line naming it, then the usage), 1 for a failed run. */
     public static void main(String[] args) {
-        try {
-            if (args.length == 1 && (args[0].equals("--help") || args[0].equals("-h"))) {
-                System.out.print(Options.USAGE);
-                return;
-            }
-            run(Options.parse(args));
-        } catch (IllegalArgumentException e) {
-            System.err.println("error: " + e.getMessage());
-            System.err.print(Options.USAGE);
-            System.exit(2);
-        } catch (Exception e) {
-            System.err.println("error: " + e.getMessage());
-            System.exit(1);
+        Flags flags = new Flags();
+        int code = Cli.main(flags, args, System.out, System.err, () -> {
+            run(flags.options());
+            return Cli.OK;
+        });
+        if (code != Cli.OK) {
+            System.exit(code);
         }
     }
 
