@@ -138,8 +138,10 @@ final class BusLanes {
 
         @Override
         protected String describe() {
-            String name = listener instanceof Device d ? "'" + d.name() + "'" : listener.getClass().getSimpleName();
-            return "The listener " + (name.isEmpty() ? listener.getClass().getName() : name) + " of " + node;
+            String name = listener instanceof Device d ? "'" + d.name() + "'" : listener.getClass().getName();
+            int lambda = name.indexOf("$$");
+            return "The listener " + (lambda > 0 ? name.substring(name.lastIndexOf('.', lambda) + 1, lambda) : name)
+                    + " of " + node;
         }
 
         /** The listener leaves: what was queued for it and not yet given is held for its replacement, first. */

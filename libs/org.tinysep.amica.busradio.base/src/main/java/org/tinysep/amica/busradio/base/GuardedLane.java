@@ -26,6 +26,7 @@ public abstract class GuardedLane<T> {
     private volatile OrderedDelivery delivery; // set when quarantined (by the dispatcher that retired)
     private final ArrayDeque<OrderedDelivery.Job<T>> backlog = new ArrayDeque<>();
     private final RateLimitedProblem drops = new RateLimitedProblem();
+    private final RateLimitedProblem slowCalls = new RateLimitedProblem();
     private boolean closed; // guarded by this
     private boolean quarantined; // guarded by this
     private boolean draining; // guarded by this
@@ -138,7 +139,7 @@ public abstract class GuardedLane<T> {
     /** Says that it was taken out (at most once a minute per listener). */
     final void quarantined(Duration limit) {
         quickNanos = limit.toNanos() / 10;
-        if (drops.mayReport()) {
+        if (slowCalls.mayReport()) {
             String words = describe() + " has been busy with one payload for over " + limit.toMillis() + " ms. So"
                     + " that the radio and the other devices do not wait for it, it now gets its payloads through its"
                     + " own queue (at most " + delivery.laneCapacity() + " waiting; more are dropped and counted) and"
