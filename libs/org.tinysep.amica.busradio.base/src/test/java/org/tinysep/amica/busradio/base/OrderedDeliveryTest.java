@@ -217,6 +217,37 @@ class OrderedDeliveryTest {
         assertFalse(d.awaitDelivered(Duration.ofMillis(50)), "nothing moves while the dispatcher is held");
     }
 
+    /** A driver update while its listener was out of the ordered path: its replacement gets what was queued. */
+    @Test
+    void whatWasQueuedForAQuarantinedListenerThatLeavesGoesToItsReplacementInOrder() throws Exception {
+        OrderedDelivery d = delivery(SLOW, 4_096, 4_096);
+        AmicaBusDevice<String> a = node(1);
+        List<String> old = new CopyOnWriteArrayList<>();
+        CountDownLatch first = new CountDownLatch(1);
+        org.tinysep.api.device.Connection c = a.connect((src, payload, at) -> {
+            old.add(heard(1, payload));
+            first.countDown();
+            sleep(400); // taken out of the ordered path on its first payload
+        });
+        List<String> fed = new ArrayList<>();
+        for (int i = 0; i < 10; i++) {
+            feed(1, i);
+            fed.add(fed(1, i));
+        }
+        assertTrue(first.await(5, TimeUnit.SECONDS));
+        waitFor(() -> d.quarantines() == 1, 2_000);
+        assertTrue(d.awaitDelivered(Duration.ofSeconds(2))); // the other 9 wait in its own queue
+        c.close(); // its driver is updated
+        List<String> replacement = new CopyOnWriteArrayList<>();
+        a.connect(recorder(1, replacement));
+        feed(1, 10);
+        fed.add(fed(1, 10));
+        assertTrue(d.awaitDelivered(Duration.ofSeconds(2)));
+        waitFor(() -> old.size() + replacement.size() >= 11, 2_000);
+        assertEquals(fed.subList(0, 1), old, "the leaving listener finished the payload it was on, and no more");
+        assertEquals(fed.subList(1, 11), replacement, "none lost, none twice, in order");
+    }
+
     private List<String> problems() {
         return radio.logs.events().stream().filter(e -> e.kind() == EventKind.PROBLEM).map(e -> e.message()).toList();
     }
