@@ -45,7 +45,7 @@ public abstract class GuardedLane<T> {
     }
 
     /** On the dispatcher. @return false when the watchdog retired this dispatcher during the call */
-    final boolean fromDispatcher(OrderedDelivery.Job<T> job, OrderedDelivery.Worker worker) {
+    final boolean fromDispatcher(OrderedDelivery.Job<T> job, Dispatcher worker) {
         boolean missed = false;
         boolean rejoined = false;
         synchronized (this) {

@@ -58,7 +58,7 @@ public final class OrderedDelivery implements AutoCloseable {
     private final AtomicLong dropped = new AtomicLong();
     private final AtomicLong quarantines = new AtomicLong();
     private final RateLimitedProblem full = new RateLimitedProblem();
-    private volatile Worker worker;
+    private volatile Dispatcher worker;
     private volatile Thread waiter;
     private volatile long waitFor;
     private volatile boolean closed;
@@ -81,7 +81,7 @@ public final class OrderedDelivery implements AutoCloseable {
         long period = Math.max(10_000_000L, slowNanos / 4);
         watchdog.scheduleAtFixedRate(this::watch, period, period, TimeUnit.NANOSECONDS);
         this.capacity = capacity;
-        this.worker = new Worker(null, this);
+        this.worker = new Dispatcher(null, this);
         pool.execute(worker);
     }
 
@@ -144,13 +144,13 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** The watchdog: a listener inside one call longer than the limit leaves the ordered path. */
     void watch() {
-        Worker w = worker;
+        Dispatcher w = worker;
         GuardedLane<?> lane = w.quarantineIfSlow(slowNanos);
         if (lane == null) {
             return;
         }
         quarantines.incrementAndGet();
-        Worker next = new Worker(w.job, this);
+        Dispatcher next = new Dispatcher(w.job, this);
         worker = next;
         try {
             pool.execute(next);
@@ -160,7 +160,15 @@ public final class OrderedDelivery implements AutoCloseable {
         lane.quarantined(Duration.ofNanos(slowNanos));
     }
 
-    private void done() {
+    boolean closed() {
+        return closed;
+    }
+
+    Job<?> take() throws InterruptedException {
+        return queue.take();
+    }
+
+    void done() {
         long c = completed.incrementAndGet();
         Thread t = waiter;
         if (t != null && c >= waitFor) {
@@ -211,7 +219,7 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** Runs a job on the caller's thread (a radio without a dispatcher): same order, no watchdog. */
     public static void inline(Job<?> job) {
-        new Worker(null, null).run(job);
+        new Dispatcher(null, null).run(job);
     }
 
     /** One payload for the listeners {@link #begin()} names, in their order. */
@@ -236,81 +244,6 @@ public final class OrderedDelivery implements AutoCloseable {
 
         public T item() {
             return item;
-        }
-    }
-
-    /** A dispatcher: drains the ordered queue until the watchdog retires it in a slow call. */
-    static final class Worker implements Runnable {
-        private final OrderedDelivery owner;
-        private Job<?> resume;
-        Job<?> job;
-        private volatile GuardedLane<?> inCall;
-        private volatile long callStart;
-        private boolean retired; // guarded by this
-
-        Worker(Job<?> resume, OrderedDelivery owner) {
-            this.resume = resume;
-            this.owner = owner;
-        }
-
-        @Override
-        public void run() {
-            OrderedDelivery o = owner;
-            Job<?> j = resume;
-            if (j != null) {
-                j.next++; // the slow listener had it
-            }
-            try {
-                while (!o.closed) {
-                    if (j == null) {
-                        j = o.queue.take();
-                    }
-                    if (!run(j)) {
-                        return; // retired: this thread stays with the quarantined listener (GuardedLane)
-                    }
-                    j = null;
-                    o.done();
-                }
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt(); // closed
-            }
-        }
-
-        <T> boolean run(Job<T> j) {
-            job = j;
-            if (j.next < 0) {
-                j.targets = j.begin();
-                j.next = 0;
-            }
-            while (j.next < j.targets.size()) {
-                GuardedLane<T> lane = j.targets.get(j.next);
-                if (!lane.fromDispatcher(j, this)) {
-                    return false;
-                }
-                j.next++;
-            }
-            return true;
-        }
-
-        void enter(GuardedLane<?> lane) {
-            callStart = System.nanoTime();
-            inCall = lane;
-        }
-
-        /** @return false when the watchdog retired this dispatcher during the call */
-        synchronized boolean leave() {
-            inCall = null;
-            return !retired;
-        }
-
-        synchronized GuardedLane<?> quarantineIfSlow(long limit) {
-            GuardedLane<?> lane = inCall;
-            if (lane == null || retired || System.nanoTime() - callStart <= limit) {
-                return null;
-            }
-            retired = true;
-            lane.takeOut(owner);
-            return lane;
         }
     }
 }
