@@ -63,10 +63,9 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     private final AmicaAddress address;
     private final Link<R> link;
-    private final Listeners<BusRadioAmicaListener> listeners;
+    /** The listeners, the handover for replacements, and the way payloads reach them (issue 29). */
+    private final BusLanes listeners;
     private final AtomicLong packets = new AtomicLong();
-    /** Held payloads for replacement listeners; its monitor also orders live delivery against replays. */
-    private final Handover handover = new Handover(System::nanoTime);
     private volatile Set<String> nodeTypes;
     private volatile KeepAlive keepAlive;
     private volatile R route;
@@ -88,7 +87,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         this.link = link;
         this.route = route;
         this.keepAlive = keepAlive;
-        this.listeners = new Listeners<>(uid());
+        this.listeners = new BusLanes(this, "AmICA node " + address);
         this.nodeTypes = typeNames(keepAlive);
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
         serviceProperty(DeviceProperties.NODE_TYPE, nodeTypes.toArray(String[]::new));
@@ -173,11 +172,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             event(HealthWords.heardAgain(silence, at));
         }
         status(DeviceStatus.State.ONLINE, "");
-        byte[] bytes = frame.payload();
-        synchronized (handover) {
-            handover.record(bytes, at);
-            listeners.fire(l -> l.payloadReceived(this, bytes.clone(), at));
-        }
+        listeners.received(frame.payload(), at); // queued in order for the radio's dispatcher, if it has one
         stateChanged(); // last seen, saved at most every 10 s, never on this thread
     }
 
@@ -209,12 +204,15 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     /** @return whether devices depend on the node: listeners connected, or one left and its replacement is due */
     private boolean dependedOn() {
-        if (listeners.size() > 0) {
-            return true;
-        }
-        synchronized (handover) {
-            return handover.awaitingReplacement();
-        }
+        return listeners.dependedOn();
+    }
+
+    /**
+     * Payloads reach the listeners through the radio's ordered dispatcher (issue 29: a slow listener never stalls
+     * the radio); without one (null) on the receive thread.
+     */
+    public void delivery(OrderedDelivery delivery) {
+        listeners.delivery(delivery);
     }
 
     /** Takes the keep-alive's types as the node's, with an event entry; its devices follow the service property. */
@@ -306,18 +304,10 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
      */
     @Override
     public Connection connect(BusRadioAmicaListener listener) {
-        synchronized (handover) {
-            Connection connection = listeners.add(listener);
-            for (Handover.Held h : handover.claim()) {
-                try {
-                    listener.payloadReceived(this, h.payload().clone(), h.at());
-                } catch (RuntimeException e) {
-                    LOG.warn("Listener {} of {} failed on a replayed payload: {}", listener.getClass().getName(), uid(),
-                            e.toString());
-                }
-            }
-            return new HandoverConnection(connection, handover);
+        if (listener == null) {
+            throw new IllegalArgumentException("listener must not be null");
         }
+        return listeners.connect(listener);
     }
 
     @Override

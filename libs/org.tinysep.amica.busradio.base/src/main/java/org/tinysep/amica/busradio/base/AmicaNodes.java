@@ -58,6 +58,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private final UnaryOperator<AmicaBusDevice<R>> register;
     private final AtomicLong overCap = new AtomicLong();
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
+    private volatile OrderedDelivery delivery;
     private volatile java.time.Duration realSilenceGuard = java.time.Duration.ZERO;
 
     /**
@@ -88,6 +89,15 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         nodes.values().forEach(d -> d.realSilenceGuard(guard));
     }
 
+    /**
+     * Issue 29: payloads reach the bus devices' listeners through this ordered dispatcher (a slow listener never
+     * stalls the radio), for the nodes known and those to come; null = on the receive thread.
+     */
+    public void delivery(OrderedDelivery delivery) {
+        this.delivery = delivery;
+        nodes.values().forEach(d -> d.delivery(delivery));
+    }
+
     /** Sets the health and capacity settings, for the nodes known and those to come. */
     public void policy(NodePolicy policy) {
         this.policy = policy;
@@ -114,6 +124,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         }
         AmicaBusDevice<R> device = new AmicaBusDevice<>(context, deviceType, address, keepAlive, from, this);
         device.policy(p);
+        device.delivery(delivery);
         device.realSilenceGuard(realSilenceGuard);
         nodes.put(address, device);
         return register.apply(device);
@@ -154,6 +165,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         return Backups.recreate(context, saved, b -> {
             AmicaBusDevice<R> d = AmicaBusDevice.restored(context, deviceType, b, this);
             d.policy(policy);
+            d.delivery(delivery);
             d.realSilenceGuard(realSilenceGuard);
             return d;
         }, d -> nodes.putIfAbsent(d.address(), d) == null, register);

@@ -41,15 +41,40 @@ final class Handover {
         lastLeft = nanos.getAsLong();
     }
 
-    /** A payload arrived (it goes live to the listeners still connected). */
-    void record(byte[] payload, Instant at) {
+    /**
+     * A payload arrived (it goes live to the listeners still connected).
+     *
+     * @return whether it is held for a replacement
+     */
+    boolean record(byte[] payload, Instant at) {
         if (!holding()) {
-            return;
+            return false;
         }
+        hold(new Held(payload.clone(), at));
+        return true;
+    }
+
+    /** Holds a payload after those held so far (one that missed a listener as it left). */
+    void hold(Held h) {
         if (held.size() < CAPACITY) {
-            held.add(new Held(payload.clone(), at));
+            held.add(h);
         } else {
             lost++;
+        }
+    }
+
+    /**
+     * A listener disconnected with payloads still queued for it ({@link GuardedLane}, issue 29): they were never
+     * given to it and are older than anything held from now on, so they come first.
+     */
+    void listenerLeft(List<Held> undelivered) {
+        listenerLeft();
+        for (int i = undelivered.size() - 1; i >= 0; i--) {
+            if (held.size() < CAPACITY) {
+                held.addFirst(undelivered.get(i));
+            } else {
+                lost++;
+            }
         }
     }
 

@@ -5,9 +5,9 @@
  * its commands go to: a UDP address for the UDP bus radio, the serial port link for the serial one.
  * <p>
  * Bus radio bundles do not import this package at run time: bnd copies the classes into each of them
- * ({@code -conditionalpackage: org.tinysep.device.support,org.tinysep.amica.busradio.base}).
+ * ({@code -conditionalpackage: org.tinysep.device.support.*,org.tinysep.amica.busradio.base}).
  */
-@Version("2.2.0")
+@Version("3.0.0")
 package org.tinysep.amica.busradio.base;
 
 import org.osgi.annotation.versioning.Version;

@@ -38,6 +38,8 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     private final FrameHandler<SerialPortLink> handler;
     private final SerialPortLink link;
     private final StreamFrames<SerialPortLink> frames;
+    /** One ordered queue and dispatcher for every bus device's listeners: the read thread only decodes (issue 29). */
+    private final org.tinysep.amica.busradio.base.OrderedDelivery delivery;
     private volatile long outages;
 
     /**
@@ -50,6 +52,9 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         this.rejects = new RejectCounter<>(context, RejectReason.class, r -> r.description(), "input",
                 "skipped byte runs and frames rejected in total");
         this.nodes = new AmicaNodes<>(context, DEVICE_TYPE, this, register);
+        this.delivery = new org.tinysep.amica.busradio.base.OrderedDelivery(context, "The AmICA serial radio on "
+                + settings.port());
+        nodes.delivery(delivery);
         this.handler = new FrameHandler<>(context, nodes, rejects);
         this.link = new SerialPortLink(settings.port(), settings.baudRate(), settings.reopenEvery(),
                 context.driverName(), this);
@@ -130,6 +135,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         out.add(Parameter.readOnly("sendFailures", nodes.failed(), "frames not sent (port closed or write failed)"));
         out.addAll(rejects.parameters());
         out.addAll(nodes.parameters());
+        out.addAll(delivery.parameters());
         return RejectTotals.summed(out); // rejected = every rejected.<reason>, node_cap included
 
     }
@@ -142,5 +148,6 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     @Override
     public void close() {
         link.close();
+        delivery.close();
     }
 }

@@ -54,6 +54,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private DatagramLink transport;
     private String listening;
     private PlatformTicker ticker;
+    /** One ordered queue and dispatcher for every bus device's listeners (issue 29). */
+    private org.tinysep.amica.busradio.base.OrderedDelivery delivery;
     private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
     private Instant beforeTick;
@@ -93,6 +95,8 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
                 "datagrams rejected in total");
         nodes = new AmicaNodes<>(context(), NAME, this, this::addDevice);
         nodes.policy(policy);
+        delivery = UdpDelivery.open(context(), config.slowListenerMillis(), settingProblems);
+        nodes.delivery(delivery); // the receive thread only decodes and queues; a slow listener never stalls it
         handler = new FrameHandler<>(context(), nodes, rejects);
         settingProblems.forEach(p -> context().event(EventKind.PROBLEM, p));
         if (gate.enforced()) {
@@ -115,6 +119,9 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         Instant stamp = beforeTick == null ? now : beforeTick;
         beforeTick = now;
         transport.drain((data, length, from) -> datagram(data, length, from, stamp));
+        // lock-step: what was queued before this tick reaches the listeners before it goes on (DONE); a listener
+        // known to be slow has its own queue and is not waited for
+        delivery.awaitDelivered(UdpDelivery.TICK_WAIT);
         nodes.checkHealth(now);
         handler.flushRejects();
     }
@@ -145,7 +152,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
 
     @Deactivate
     void deactivate() {
-        stop(ticker, transport); // then removes the bus devices one by one (each leaves the node table), the driver
+        stop(ticker, transport, delivery); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override
@@ -174,6 +181,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
         out.addAll(rejects == null ? List.of() : rejects.parameters());
         out.addAll(gate == null ? List.of() : gate.parameters());
         out.addAll(nodes == null ? List.of() : nodes.parameters());
+        out.addAll(delivery == null ? List.of() : delivery.parameters());
         return RejectTotals.summed(out); // rejected = every rejected.<reason>, the gate's and node_cap included
 
     }

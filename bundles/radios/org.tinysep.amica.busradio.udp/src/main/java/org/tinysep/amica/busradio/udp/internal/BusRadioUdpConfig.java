@@ -35,4 +35,9 @@ public @interface BusRadioUdpConfig {
     @AttributeDefinition(description = "Most nodes this bus radio creates; keep-alives of further new nodes are "
             + "rejected and counted")
     int maxNodes() default 1000;
+
+    @AttributeDefinition(description = "Milliseconds a device may spend on one payload before it is taken out of "
+            + "the ordered delivery and gets its payloads through its own queue until it keeps up (issue 29); "
+            + "100 to 60000")
+    int slowListenerMillis() default 1000;
 }
