@@ -16,7 +16,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
  * Issue 29: a slow consumer never stalls the radio, and the order of payloads across the devices of one radio is

@@ -3,7 +3,7 @@ package org.tinysep.amica.busradio.udp.internal;
 import java.time.Duration;
 import java.util.List;
 import org.tinysep.amica.busradio.base.OrderedDelivery;
-import org.tinysep.device.support.DriverContext;
+import org.tinysep.device.support.lifecycle.DriverContext;
 
 /** The UDP bus radio's ordered delivery (issue 29): its settings and how long a lock-step tick waits for it. */
 final class UdpDelivery {
