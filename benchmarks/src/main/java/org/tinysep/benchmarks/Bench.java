@@ -40,18 +40,18 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
         Files.createDirectories(var);
         int port = Ports.freeUdp();
         int syncPort = Ports.freeUdp();
-        Platform.install(dist, home, port, syncPort);
+        MeasuredPlatform.install(dist, home, port, syncPort);
         return new Installed(home, var, port, syncPort);
     }
 
     record Installed(Path home, Path var, int amicaPort, int syncPort) {
-        Platform start(List<String> options) throws IOException {
-            return Platform.start(home, var, amicaPort, options);
+        MeasuredPlatform start(List<String> options) throws IOException {
+            return MeasuredPlatform.start(home, var, amicaPort, options);
         }
     }
 
     /** @return devices per driver name, from {@code tinysep:drivers} */
-    static java.util.Map<String, Integer> devicesPerDriver(Platform p) {
+    static java.util.Map<String, Integer> devicesPerDriver(MeasuredPlatform p) {
         java.util.Map<String, Integer> out = new java.util.TreeMap<>();
         for (String line : p.command("tinysep:drivers", Duration.ofSeconds(120))) {
             String[] cells = line.split("\\|");
@@ -67,7 +67,7 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
     }
 
     /** Waits (bounded) until the drivers hold at least {@code count} devices of driver {@code name}; @return ms waited */
-    static double awaitDevices(Platform p, String name, int count, Duration timeout) throws InterruptedException {
+    static double awaitDevices(MeasuredPlatform p, String name, int count, Duration timeout) throws InterruptedException {
         long t0 = System.nanoTime();
         long deadline = t0 + timeout.toNanos();
         while (devicesPerDriver(p).getOrDefault(name, 0) < count) {
@@ -84,7 +84,7 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
     record RadioCounters(long received, long rejected) {
     }
 
-    static RadioCounters radio(Platform p) {
+    static RadioCounters radio(MeasuredPlatform p) {
         for (String line : p.command("tinysep:drivers", Duration.ofSeconds(120))) {
             if (line.startsWith("BusRadioAmicaUdp ")) {
                 // a payload the radio's ordered queue had to drop (issue 29, delivery.dropped) is lost like a rejected one

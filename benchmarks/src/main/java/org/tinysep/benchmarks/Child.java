@@ -26,7 +26,7 @@ final class Child implements AutoCloseable {
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), Bare.class.getName()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT);
-        pb.environment().keySet().removeAll(Platform.UNSET); // as the platform's, for a fair comparison
+        pb.environment().keySet().removeAll(MeasuredPlatform.UNSET); // as the platform's, for a fair comparison
         pb.environment().putAll(PlatformLaunch.environment(jvmOptions));
         long t0 = System.nanoTime();
         process = ChildProcesses.track(pb.start());

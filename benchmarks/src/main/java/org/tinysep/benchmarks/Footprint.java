@@ -63,7 +63,7 @@ final class Footprint {
             String bannerText;
             double cpu;
             double web;
-            try (Platform p = inst.start(opts)) {
+            try (MeasuredPlatform p = inst.start(opts)) {
                 ready = p.msSinceStart();
                 banner = p.msToBanner();
                 bannerText = p.banner();
@@ -97,12 +97,12 @@ final class Footprint {
         java.nio.file.Path jsa = cds.home().resolve("tinysep.jsa");
         List<String> dump = new ArrayList<>(b.chosen());
         dump.add("-XX:ArchiveClassesAtExit=" + jsa);
-        try (Platform p = cds.start(dump)) {
+        try (MeasuredPlatform p = cds.start(dump)) {
             Bench.sleep(b.smoke() ? 1 : 5);
         }
         List<String> withCds = new ArrayList<>(b.chosen());
         withCds.add("-XX:SharedArchiveFile=" + jsa);
-        try (Platform p = cds.start(withCds)) {
+        try (MeasuredPlatform p = cds.start(withCds)) {
             double ready = p.msSinceStart();
             double banner = p.msToBanner();
             double cpu = p.cpuMsToBanner();

@@ -30,7 +30,7 @@ final class HotUpdate {
         double seconds = b.smoke() ? 3 : 8;
         List<Swap> out = new ArrayList<>();
         Bench.Installed inst = b.install("hotupdate");
-        try (Platform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort(), Nodes.SENDERS)) {
+        try (MeasuredPlatform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort(), Nodes.SENDERS)) {
             sender.announce(2_000);
             Bench.awaitDevices(p, "AmicaMovement", nodes, Duration.ofMinutes(2));
             String id = bundleId(p);
@@ -83,7 +83,7 @@ final class HotUpdate {
     }
 
     /** @return the bundle id of AmICA Movement, from the shell's {@code lb -s} */
-    private static String bundleId(Platform p) {
+    private static String bundleId(MeasuredPlatform p) {
         for (String line : p.command("felix:lb -s", Duration.ofSeconds(60))) {
             if (line.contains(MOVEMENT_BSN + " ") || line.strip().endsWith(MOVEMENT_BSN)
                     || line.contains(MOVEMENT_BSN + "(")) {

@@ -88,7 +88,7 @@ final class Latency {
         double[] platformLoaded;
         Bench.Installed inst = b.install("reaction");
         Reaction.prepare(inst, rooms);
-        try (Platform p = inst.start(b.chosen()); Reaction reaction = new Reaction(rooms, inst.amicaPort());
+        try (MeasuredPlatform p = inst.start(b.chosen()); Reaction reaction = new Reaction(rooms, inst.amicaPort());
                 Nodes background = new Nodes(10, inst.amicaPort())) {
             reaction.announce(p);
             background.announce(100);

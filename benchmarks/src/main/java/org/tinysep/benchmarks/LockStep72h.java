@@ -27,7 +27,7 @@ final class LockStep72h {
         long rssEnd;
         double wall;
         long frames = 0;
-        try (Platform p = inst.start(b.chosen()); Nodes nodes = new Nodes(50, inst.amicaPort())) {
+        try (MeasuredPlatform p = inst.start(b.chosen()); Nodes nodes = new Nodes(50, inst.amicaPort())) {
             nodes.announce(500);
             Bench.awaitDevices(p, "AmicaMovement", 50, Duration.ofMinutes(2));
             byte[] key = SyncClient.readKey(inst.var().resolve("sync.key"));

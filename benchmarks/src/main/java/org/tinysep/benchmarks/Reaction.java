@@ -74,7 +74,7 @@ final class Reaction implements AutoCloseable {
     }
 
     /** Announces the K sensors and K lights (lights report off) and waits for their devices. */
-    void announce(Platform p) throws Exception {
+    void announce(MeasuredPlatform p) throws Exception {
         int movement = AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT));
         int light = AmicaNodeType.productId(List.of(AmicaNodeType.SIMPLE_LIGHT));
         for (int r = 1; r <= rooms; r++) {

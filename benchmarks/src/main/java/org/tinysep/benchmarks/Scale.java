@@ -41,7 +41,7 @@ final class Scale {
      * the kernel dropped at the radio's full socket (creation is slower than 1,000/s) are sent again. Bounded: 20
      * rounds, 30 min. @return ms from {@code t0} until all N movement devices exist
      */
-    private static double announceAll(Platform p, Nodes nodes, int n, long t0) throws Exception {
+    private static double announceAll(MeasuredPlatform p, Nodes nodes, int n, long t0) throws Exception {
         long deadline = t0 + Duration.ofMinutes(30).toNanos();
         for (int round = 0; round < 20 && System.nanoTime() < deadline; round++) {
             nodes.announce(1_000);
@@ -93,8 +93,8 @@ final class Scale {
         long rss;
         long heap;
         double devicesMs;
-        Platform first = inst.start(options(b));
-        try (Platform p = first; Nodes nodes = new Nodes(n, inst.amicaPort())) {
+        MeasuredPlatform first = inst.start(options(b));
+        try (MeasuredPlatform p = first; Nodes nodes = new Nodes(n, inst.amicaPort())) {
             long t0 = System.nanoTime();
             create = announceAll(p, nodes, n, t0);
             long d0 = System.nanoTime();
@@ -114,7 +114,7 @@ final class Scale {
         double banner;
         double restored;
         long restartRss;
-        try (Platform p = inst.start(options(b))) {
+        try (MeasuredPlatform p = inst.start(options(b))) {
             banner = p.msToBanner();
             Bench.awaitDevices(p, "AmicaMovement", n, Duration.ofMinutes(30));
             restored = p.msSinceStart();

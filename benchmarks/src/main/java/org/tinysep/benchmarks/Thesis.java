@@ -24,7 +24,7 @@ final class Thesis {
         Bench.Installed inst = b.install("thesis");
         List<List<String>> rows = new ArrayList<>();
         List<Double> cpu = new ArrayList<>();
-        try (Platform p = inst.start(b.chosen()); Nodes all = new Nodes(50, inst.amicaPort())) {
+        try (MeasuredPlatform p = inst.start(b.chosen()); Nodes all = new Nodes(50, inst.amicaPort())) {
             all.announce(500);
             Bench.awaitDevices(p, "AmicaMovement", 50, Duration.ofMinutes(2));
             Bench.sleep(b.smoke() ? 1 : 10);

@@ -47,7 +47,7 @@ final class Throughput {
         }
         List<Step> platform = new ArrayList<>();
         Bench.Installed inst = b.install("throughput");
-        try (Platform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort(), Nodes.SENDERS)) {
+        try (MeasuredPlatform p = inst.start(b.chosen()); Nodes sender = new Nodes(nodes, inst.amicaPort(), Nodes.SENDERS)) {
             sender.announce(2_000);
             Bench.awaitDevices(p, "AmicaMovement", nodes, Duration.ofMinutes(2));
             for (int rate : rates) {

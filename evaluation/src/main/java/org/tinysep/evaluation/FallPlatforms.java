@@ -69,7 +69,7 @@ public final class FallPlatforms {
         LateFrames late = new LateFrames();
         Instant end;
         try (SmtpSink sink = new SmtpSink().start();
-                Platform platform = Platform.start(dist, dir.resolve("home"), var, sink.port(), "LEARNED", Map.of(
+                HarnessPlatform platform = HarnessPlatform.start(dist, dir.resolve("home"), var, sink.port(), "LEARNED", Map.of(
                         "org.tinysep.sunspot.busradio", "udpPort=" + spotPort + "\nudpBindAddress=127.0.0.1\n",
                         "org.tinysep.falldetection", fallConfig + "\ntimeZone=UTC\n",
                         "org.tinysep.alerts", "contacts=carer@localhost\nsummaryTime=\ntimeZone=UTC\nrepeatMinutes=0\n"

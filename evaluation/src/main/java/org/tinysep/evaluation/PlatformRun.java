@@ -71,7 +71,7 @@ final class PlatformRun {
         }
         long before = LogEntry.lastSequence(var);
         try (SmtpSink smtp = new SmtpSink().start();
-                Platform platform = Platform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
+                HarnessPlatform platform = HarnessPlatform.start(setup.dist(), dir.resolve("home"), var, smtp.port(), detector,
                         Map.of("org.tinysep.houseinformation", "file=" + setup.home().house().toAbsolutePath() + "\n",
                                 "org.tinysep.houseinformation.placement", "placements=" + setup.home().placements()
                                         + "\n", "org.tinysep.inactivity", setup.inactivity()))) {

@@ -16,7 +16,7 @@ import org.tinysep.tools.process.Ports;
  * the helper the launcher's process tests, the integration tests and the evaluation use too), its log in {@code
  * <home>/platform.log}. Its radios listen on free loopback ports.
  */
-final class Platform implements AutoCloseable {
+final class MeasuredPlatform implements AutoCloseable {
 
     /** Not handed down from the shell that runs the benchmarks, to the floors ({@link Child}) nor the platform. */
     static final List<String> UNSET = List.of("MALLOC_ARENA_MAX", "JAVA_TOOL_OPTIONS");
@@ -26,7 +26,7 @@ final class Platform implements AutoCloseable {
     private final PlatformProcess shell;
     private final WebLine web;
 
-    private Platform(Path home, int amicaPort, PlatformProcess shell, WebLine web) {
+    private MeasuredPlatform(Path home, int amicaPort, PlatformProcess shell, WebLine web) {
         this.home = home;
         this.amicaPort = amicaPort;
         this.shell = shell;
@@ -46,7 +46,7 @@ final class Platform implements AutoCloseable {
     }
 
     /** Starts {@code java <jvmOptions> -jar tinysep.jar --var <var>} in {@code home}; waits for the shell. */
-    static Platform start(Path home, Path var, int amicaPort, List<String> jvmOptions) throws IOException {
+    static MeasuredPlatform start(Path home, Path var, int amicaPort, List<String> jvmOptions) throws IOException {
         List<String> options = new ArrayList<>(jvmOptions);
         String extra = System.getenv("BENCH_PLATFORM_JVM"); // e.g. a JFR recording while profiling (README)
         if (extra != null && !extra.isBlank()) {
@@ -56,7 +56,7 @@ final class Platform implements AutoCloseable {
         PlatformProcess p = PlatformProcess.in(home).java(Machine.java()).jvm(options)
                 .unsetEnv(UNSET.toArray(String[]::new)).args("--var", var.toString()).eachLine(web)
                 .stopTimeout(Duration.ofMinutes(5)).start(Duration.ofSeconds(180));
-        return new Platform(home, amicaPort, p, web);
+        return new MeasuredPlatform(home, amicaPort, p, web);
     }
 
     /** Notes when the line "Web console: …" came (the console starts after the banner). */

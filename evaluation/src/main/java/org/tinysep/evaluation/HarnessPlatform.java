@@ -18,7 +18,7 @@ import org.tinysep.tools.process.Ports;
  * the clock in EXTERNAL mode, the Mail Manager on the harness's SMTP sink and Inactivity Recognition on the chosen
  * detector.
  */
-final class Platform implements AutoCloseable {
+final class HarnessPlatform implements AutoCloseable {
 
     /** JVM options: small heap and quick start (the harness runs two platforms at once on 2 CPUs). */
     static final List<String> JVM = List.of("-Xmx256m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1");
@@ -30,7 +30,7 @@ final class Platform implements AutoCloseable {
     private final int syncPort;
     private final Path var;
 
-    private Platform(PlatformProcess process, int amicaPort, int syncPort, Path var) {
+    private HarnessPlatform(PlatformProcess process, int amicaPort, int syncPort, Path var) {
         this.process = process;
         this.amicaPort = amicaPort;
         this.syncPort = syncPort;
@@ -43,7 +43,7 @@ final class Platform implements AutoCloseable {
      *
      * @param extra further {@code <pid>.cfg} files (pid → {@code key=value} lines)
      */
-    static Platform start(Path dist, Path home, Path var, int smtpPort, String detector, Map<String, String> extra)
+    static HarnessPlatform start(Path dist, Path home, Path var, int smtpPort, String detector, Map<String, String> extra)
             throws IOException {
         DistributionCopy.linked(dist, home);
         Files.createDirectories(var);
@@ -76,7 +76,7 @@ final class Platform implements AutoCloseable {
         PlatformProcess p = launch.start(START);
         p.awaitUntil(() -> Ports.udpBound(amica), "its AmICA bus radio bound 127.0.0.1:" + amica,
                 Duration.ofNanos(Math.max(0, deadline - System.nanoTime())));
-        return new Platform(p, amica, sync, var);
+        return new HarnessPlatform(p, amica, sync, var);
     }
 
     int amicaPort() {
