@@ -33,7 +33,6 @@ import org.tinysep.device.support.health.NodeWatch;
 import org.tinysep.device.support.health.ReportRates;
 import org.tinysep.device.support.lifecycle.AbstractDevice;
 import org.tinysep.device.support.lifecycle.DriverContext;
-import org.tinysep.device.support.lifecycle.Listeners;
 import org.tinysep.device.support.lifecycle.Uids;
 
 /**
