@@ -6,10 +6,10 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
+import org.osgi.framework.AllServiceListener;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceEvent;
-import org.osgi.framework.ServiceListener;
 import org.osgi.framework.ServiceReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -30,12 +30,17 @@ final class StartSignals {
 
     private final BundleContext context;
     private final AtomicLong from = new AtomicLong(-1);
-    private final ServiceListener listener;
+    /**
+     * An AllServiceListener: the system bundle does not import the API, and a plain ServiceListener was seen to miss
+     * the event log's first registration (DeafRadioIT: it saw a later one, when 36 entries of this start had already
+     * been recorded, and left them out as history).
+     */
+    private final AllServiceListener listener;
 
     /** Starts watching for the event log; call before the framework starts. */
     StartSignals(BundleContext context) {
         this.context = context;
-        this.listener = event -> {
+        this.listener = (AllServiceListener) event -> {
             if (event.getType() == ServiceEvent.REGISTERED && from.get() < 0) {
                 from.compareAndSet(-1, newest(event.getServiceReference()));
             }
