@@ -87,7 +87,7 @@ record Bench(Path dist, Path work, boolean smoke, List<String> chosen, Report re
     static RadioCounters radio(MeasuredPlatform p) {
         for (String line : p.command("tinysep:drivers", Duration.ofSeconds(120))) {
             if (line.startsWith("BusRadioAmicaUdp ")) {
-                // a payload the radio's ordered queue had to drop (issue 29, delivery.dropped) is lost like a rejected one
+                // a payload the radio's ordered queue had to drop (delivery.dropped) is lost like a rejected one
                 return new RadioCounters(counter(line, "received"),
                         counter(line, "rejected") + Math.max(0, counter(line, "delivery.dropped")));
             }

@@ -62,7 +62,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     private final AmicaAddress address;
     private final Link<R> link;
-    /** The listeners, the handover for replacements, and the way payloads reach them (issue 29). */
+    /** The listeners, the handover for replacements, and the way payloads reach them */
     private final BusLanes listeners;
     private final AtomicLong packets = new AtomicLong();
     private volatile Set<String> nodeTypes;
@@ -207,7 +207,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     }
 
     /**
-     * Payloads reach the listeners through the radio's ordered dispatcher (issue 29: a slow listener never stalls
+     * Payloads reach the listeners through the radio's ordered dispatcher (a slow listener never stalls
      * the radio); without one (null) on the receive thread.
      */
     public void delivery(OrderedDelivery delivery) {

@@ -90,7 +90,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     }
 
     /**
-     * Issue 29: payloads reach the bus devices' listeners through this ordered dispatcher (a slow listener never
+     * Payloads reach the bus devices' listeners through this ordered dispatcher (a slow listener never
      * stalls the radio), for the nodes known and those to come; null = on the receive thread.
      */
     public void delivery(OrderedDelivery delivery) {

@@ -12,7 +12,7 @@ import org.tinysep.api.device.Device;
 
 /**
  * The listeners of one bus device and the way its payloads reach them: through the radio's {@link OrderedDelivery}
- * (one ordered queue for all its devices, issue 29), or on the receive thread when the radio has none. The
+ * (one ordered queue for all its devices), or on the receive thread when the radio has none. The
  * {@link Handover}'s monitor orders the choice of listeners for a payload against listeners connecting and
  * leaving; no listener is ever called while it is held (a slow one must not hold the next payload's choice).
  * A payload is given to a leaving listener or held for its replacement, never neither, in order.

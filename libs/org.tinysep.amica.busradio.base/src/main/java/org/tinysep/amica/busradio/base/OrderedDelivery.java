@@ -19,7 +19,7 @@ import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.lifecycle.DriverContext;
 
 /**
- * Issue 29: a slow consumer never stalls the radio, and the order of payloads across the devices of one radio is
+ * A slow consumer never stalls the radio, and the order of payloads across the devices of one radio is
  * kept. The receive thread only decodes and {@link #submit submits} a {@link Job} per payload to ONE bounded queue;
  * one dispatcher thread takes the jobs in order and calls each job's listeners ({@link GuardedLane}) in turn.
  * <p>
@@ -205,7 +205,7 @@ public final class OrderedDelivery implements AutoCloseable {
     /** @return the counters for the driver's parameters */
     public List<Parameter> parameters() {
         return List.of(Parameter.readOnly("delivery.queued", queue.size(), "payloads waiting for the dispatcher"),
-                Parameter.readOnly("delivery.dropped", dropped.get(), "payloads dropped: a queue was full (issue 29)"),
+                Parameter.readOnly("delivery.dropped", dropped.get(), "payloads dropped: a queue was full"),
                 Parameter.readOnly("delivery.slowListeners", quarantines.get(),
                         "times a listener took over " + slowNanos / 1_000_000 + " ms and got its own queue"));
     }

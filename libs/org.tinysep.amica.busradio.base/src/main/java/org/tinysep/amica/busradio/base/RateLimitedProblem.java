@@ -3,7 +3,7 @@ package org.tinysep.amica.busradio.base;
 import java.time.Instant;
 import java.util.function.BiFunction;
 
-/** Counts losses and says them at most once a minute: the first at once, later ones summed up (issue 29). */
+/** Counts losses and says them at most once a minute: the first at once, later ones summed up */
 final class RateLimitedProblem {
 
     private long unreported;

@@ -38,7 +38,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     private final FrameHandler<SerialPortLink> handler;
     private final SerialPortLink link;
     private final StreamFrames<SerialPortLink> frames;
-    /** One ordered queue and dispatcher for every bus device's listeners: the read thread only decodes (issue 29). */
+    /** One ordered queue and dispatcher for every bus device's listeners: the read thread only decodes */
     private final org.tinysep.amica.busradio.base.OrderedDelivery delivery;
     private volatile long outages;
 

@@ -54,7 +54,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private DatagramLink transport;
     private String listening;
     private PlatformTicker ticker;
-    /** One ordered queue and dispatcher for every bus device's listeners (issue 29). */
+    /** One ordered queue and dispatcher for every bus device's listeners */
     private org.tinysep.amica.busradio.base.OrderedDelivery delivery;
     private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */

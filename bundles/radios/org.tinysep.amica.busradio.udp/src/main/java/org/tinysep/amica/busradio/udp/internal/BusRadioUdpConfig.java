@@ -37,7 +37,7 @@ public @interface BusRadioUdpConfig {
     int maxNodes() default 1000;
 
     @AttributeDefinition(description = "Milliseconds a device may spend on one payload before it is taken out of "
-            + "the ordered delivery and gets its payloads through its own queue until it keeps up (issue 29); "
+            + "the ordered delivery and gets its payloads through its own queue until it keeps up; "
             + "100 to 60000")
     int slowListenerMillis() default 1000;
 }

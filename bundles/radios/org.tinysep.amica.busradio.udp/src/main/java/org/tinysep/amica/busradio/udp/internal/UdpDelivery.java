@@ -5,7 +5,7 @@ import java.util.List;
 import org.tinysep.amica.busradio.base.OrderedDelivery;
 import org.tinysep.device.support.lifecycle.DriverContext;
 
-/** The UDP bus radio's ordered delivery (issue 29): its settings and how long a lock-step tick waits for it. */
+/** The UDP bus radio's ordered delivery: its settings and how long a lock-step tick waits for it. */
 final class UdpDelivery {
 
     /** A tick waits at most this long for what was queued before it (past the slow-listener limit). */
