@@ -31,9 +31,9 @@ final class StartSignals {
     private final BundleContext context;
     private final AtomicLong from = new AtomicLong(-1);
     /**
-     * An AllServiceListener: the system bundle does not import the API, and a plain ServiceListener was seen to miss
-     * the event log's first registration (DeafRadioIT: it saw a later one, when 36 entries of this start had already
-     * been recorded, and left them out as history).
+     * An AllServiceListener (the system bundle does not import the API): a plain ServiceListener was seen to be told
+     * of the event log's registration only once 36 entries of this start had been recorded, which were then left
+     * out as history (DeafRadioIT: no WARNING for a deaf radio); an AllServiceListener is told at the registration.
      */
     private final AllServiceListener listener;
 
