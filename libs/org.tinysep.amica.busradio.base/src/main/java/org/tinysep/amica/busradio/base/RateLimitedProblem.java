@@ -39,11 +39,4 @@ final class RateLimitedProblem {
         lastReport = now;
         return true;
     }
-
-    /** @return losses not yet said, and forgets them */
-    synchronized long takeUnreported() {
-        long n = unreported;
-        unreported = 0;
-        return n;
-    }
 }
