@@ -4,6 +4,8 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.LongSupplier;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.backup.ComponentKind;
@@ -17,7 +19,9 @@ import org.tinysep.api.log.EventKind;
  * runtime state to one per {@link #STATE_INTERVAL_NANOS}. Runtime state is saved only when it changes
  * what a restart needs; the last seen time alone (every frame of a movement sensor moves it) is saved at most once
  * per {@link #LAST_SEEN_INTERVAL_NANOS} (an orderly stop saves the exact one), so a busy sensor no longer costs a
- * JAXB write and an fsync every 10 s.
+ * JAXB write and an fsync every 10 s. A backup equal to the one last saved (or restored), its save time aside, is
+ * not written again: a device restored and activated unchanged, or stopped unchanged, costs no write (issue 29:
+ * stopping and restarting 20,000 devices wrote 20,000 files each time).
  */
 final class DeviceBackup {
 
@@ -30,7 +34,8 @@ final class DeviceBackup {
     private volatile LongSupplier nanos = System::nanoTime;
     private volatile long lastStateSave = System.nanoTime() - STATE_INTERVAL_NANOS;
     private volatile long lastSave = lastStateSave;
-    private volatile ComponentBackup saved;
+    /** The backup last saved or restored (the file's content, save time aside); null when none or it failed. */
+    private final AtomicReference<ComponentBackup> saved = new AtomicReference<>();
     private volatile boolean active;
 
     DeviceBackup(AbstractDevice device) {
@@ -67,10 +72,13 @@ final class DeviceBackup {
                 device.lastSeen(), device.backupState(), c.now());
     }
 
-    /** From now on changes are saved (after the device registered, with its restored settings). */
+    /**
+     * From now on changes are saved (after the device registered, with its restored settings); saved now unless
+     * the backup it was restored from already says the same.
+     */
     void activate() {
         active = true;
-        store(device.backup());
+        storeIfChanged(device.backup());
     }
 
     void deactivate() {
@@ -81,11 +89,19 @@ final class DeviceBackup {
         return active;
     }
 
-    /** Saves now, without waiting for the disk. */
+    /** Saves now, without waiting for the disk, unless nothing changed since the last save. */
     void save() {
         if (active) {
-            store(device.backup());
+            storeIfChanged(device.backup());
         }
+    }
+
+    private void storeIfChanged(ComponentBackup b) {
+        ComponentBackup before = saved.get();
+        if (before != null && sameForRestart(before, b) && Objects.equals(before.lastSeen(), b.lastSeen())) {
+            return; // the file on disk (or queued) already holds this
+        }
+        store(b);
     }
 
     /**
@@ -99,17 +115,22 @@ final class DeviceBackup {
         }
         lastStateSave = now;
         ComponentBackup b = device.backup();
-        ComponentBackup before = saved;
-        if (before != null && sameForRestart(before, b) && now - lastSave < LAST_SEEN_INTERVAL_NANOS) {
+        ComponentBackup before = saved.get();
+        if (before != null && sameForRestart(before, b)
+                && (now - lastSave < LAST_SEEN_INTERVAL_NANOS || Objects.equals(before.lastSeen(), b.lastSeen()))) {
             return; // only the last seen time moved: it waits (an orderly stop saves it exactly)
         }
         store(b);
     }
 
     private void store(ComponentBackup b) {
-        saved = b;
+        saved.set(b);
         lastSave = nanos.getAsLong();
-        device.context.backups().save(b);
+        device.context.backups().save(b).whenComplete((done, failed) -> {
+            if (failed != null) {
+                saved.compareAndSet(b, null); // not on disk: the next save writes again
+            }
+        });
     }
 
     /** @return whether a restart would restore the same device from both (their last seen and saved times aside) */
@@ -122,6 +143,7 @@ final class DeviceBackup {
 
     /** Applies a saved backup to a device that is not registered yet: name, settings, then its own state. */
     void restore(ComponentBackup b, DeviceParameters settings) {
+        saved.set(b); // what the file holds: activating the device unchanged writes nothing
         settings.restoreName(b.name());
         for (Map.Entry<String, String> e : b.parameters().entrySet()) {
             String key = e.getKey();
