@@ -10,6 +10,7 @@ import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementProvider;
 import org.tinysep.api.sensor.presence.PresenceProvider;
 import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.device.support.lifecycle.ServiceUse;
 import org.tinysep.device.support.rooms.TrackedPlacements;
 
 /**
@@ -45,14 +46,15 @@ final class LastSeenWatch implements AutoCloseable {
         return new ServiceTracker<>(context, type, null) {
             @Override
             public Connection addingService(ServiceReference<S> ref) {
-                S service = context.getService(ref);
+                // no use left in the registry per sensor: Felix's per-bundle use array made n sensors cost n²
+                S service = ServiceUse.take(context, ref);
                 if (service == null) {
                     return null;
                 }
                 try {
                     return connect.apply(service, seen);
                 } catch (RuntimeException e) { // a provider going away while connecting
-                    context.ungetService(ref);
+                    ServiceUse.release(context, ref);
                     return null;
                 }
             }
@@ -60,7 +62,7 @@ final class LastSeenWatch implements AutoCloseable {
             @Override
             public void removedService(ServiceReference<S> ref, Connection c) {
                 c.close();
-                context.ungetService(ref);
+                ServiceUse.release(context, ref);
             }
         };
     }
