@@ -11,8 +11,14 @@ import java.util.List;
  */
 final class Scale {
 
-    record Row(int nodes, double createMs, long rssKb, long heapKb, double devicesMs, double stopMs, long backupFiles,
-            double bannerMs, double restoredMs, long restartRssKb, Floor floor) {
+    /**
+     * @param createCpuMs   CPU time (user + system) the platform spent while creating, ms: on a loaded machine the
+     *                      wall time mostly says how long the process waited for a core, its CPU time what it did
+     * @param restoredCpuMs CPU time from {@code java -jar} until every device was restored, ms
+     */
+    record Row(int nodes, double createMs, double createCpuMs, long rssKb, long heapKb, double devicesMs,
+            double stopMs, long backupFiles, double bannerMs, double restoredMs, double restoredCpuMs,
+            long restartRssKb, Floor floor) {
 
         int devices() {
             return 2 * nodes;
@@ -90,13 +96,16 @@ final class Scale {
     private static Row measure(Bench b, int n) throws Exception {
         Bench.Installed inst = b.install("scale-" + n);
         double create;
+        double createCpu;
         long rss;
         long heap;
         double devicesMs;
         MeasuredPlatform first = inst.start(options(b));
         try (MeasuredPlatform p = first; Nodes nodes = new Nodes(n, inst.amicaPort())) {
+            long cpu0 = Proc.cpuTicks(p.pid());
             long t0 = System.nanoTime();
             create = announceAll(p, nodes, n, t0);
+            createCpu = cpuMs(cpu0, Proc.cpuTicks(p.pid()));
             long d0 = System.nanoTime();
             int lines = p.command("tinysep:devices", Duration.ofMinutes(5)).size();
             devicesMs = (System.nanoTime() - d0) / 1e6;
@@ -113,15 +122,22 @@ final class Scale {
         }
         double banner;
         double restored;
+        double restoredCpu;
         long restartRss;
         try (MeasuredPlatform p = inst.start(options(b))) {
             banner = p.msToBanner();
             Bench.awaitDevices(p, "AmicaMovement", n, Duration.ofMinutes(30));
             restored = p.msSinceStart();
+            restoredCpu = cpuMs(0, Proc.cpuTicks(p.pid()));
             restartRss = p.rssKb();
         }
-        return new Row(n, create, rss, heap, devicesMs, stopMs, backupFiles, banner, restored, restartRss,
-                floor(b, 2 * n));
+        return new Row(n, create, createCpu, rss, heap, devicesMs, stopMs, backupFiles, banner, restored,
+                restoredCpu, restartRss, floor(b, 2 * n));
+    }
+
+    /** @return ms of CPU between two readings of {@link Proc#cpuTicks}; NaN if either failed */
+    private static double cpuMs(long from, long to) {
+        return from < 0 || to < 0 ? Double.NaN : (to - from) * 1000.0 / Proc.HZ;
     }
 
     /**
@@ -152,6 +168,8 @@ final class Scale {
             figures.put("scale.create." + x.devices() + ".ms", x.createMs());
             figures.put("scale.stop." + x.devices() + ".ms", x.stopMs());
             figures.put("scale.restored." + x.devices() + ".ms", x.restoredMs());
+            figures.put("scale.cpu.create." + x.devices() + ".ms", x.createCpuMs());
+            figures.put("scale.cpu.restored." + x.devices() + ".ms", x.restoredCpuMs());
             figures.put("scale.floor.create." + x.devices() + ".ms", x.floor().createMs());
             figures.put("scale.floor.stop." + x.devices() + ".ms", x.floor().stopMs());
         }
@@ -162,6 +180,10 @@ final class Scale {
             figures.put("scale.slope.stop", last.perDevice(last.stopMs()) / first.perDevice(first.stopMs()));
             figures.put("scale.slope.restored",
                     last.perDevice(last.restoredMs()) / first.perDevice(first.restoredMs()));
+            figures.put("scale.slope.cpu.create",
+                    last.perDevice(last.createCpuMs()) / first.perDevice(first.createCpuMs()));
+            figures.put("scale.slope.cpu.restored",
+                    last.perDevice(last.restoredCpuMs()) / first.perDevice(first.restoredCpuMs()));
         }
     }
 
@@ -210,6 +232,20 @@ final class Scale {
         r.table(List.of("devices", "creation per device", "slope", "floor: register per device", "× floor",
                 "orderly stop per device", "slope", "floor: unregister per device", "× floor",
                 "restart to all restored, per device", "slope", "× floor (register)"), cost);
+        r.text("CPU time of the platform process (user + system, `/proc/<pid>/stat`) per device: on a loaded machine "
+                + "the wall times above mostly measure waiting for a core; the CPU time is the work done. *Restart* "
+                + "counts from `java -jar` (the start included) to every device restored.");
+        List<List<String>> cpu = new ArrayList<>();
+        prev = null;
+        for (Row x : rows) {
+            cpu.add(List.of(Integer.toString(x.devices()),
+                    Report.f("%.0f µs", x.perDevice(x.createCpuMs())), slope(x, prev, Row::createCpuMs),
+                    Report.ratio(x.createCpuMs(), x.floor().createMs()),
+                    Report.f("%.0f µs", x.perDevice(x.restoredCpuMs())), slope(x, prev, Row::restoredCpuMs)));
+            prev = x;
+        }
+        r.table(List.of("devices", "creation CPU per device", "slope", "× floor (register, wall)",
+                "restart CPU per device", "slope"), cpu);
     }
 
     private static String slope(Row x, Row prev, java.util.function.ToDoubleFunction<Row> ms) {

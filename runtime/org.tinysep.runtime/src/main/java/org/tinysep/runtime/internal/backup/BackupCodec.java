@@ -25,8 +25,16 @@ import org.tinysep.api.backup.ComponentKind;
 final class BackupCodec {
 
     private final JAXBContext jaxb;
+    /**
+     * One StAX factory for every read (DTDs and external entities off): looking one up per file cost a service
+     * loader search each, with 20,000 files read at start.
+     */
+    private final XMLInputFactory xmlInput;
 
     BackupCodec() {
+        xmlInput = XMLInputFactory.newFactory();
+        xmlInput.setProperty(XMLInputFactory.SUPPORT_DTD, false);
+        xmlInput.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
         try {
             jaxb = withBundleLoader(() -> JAXBContext.newInstance(BackupXml.class));
         } catch (Exception | LinkageError e) {
@@ -49,7 +57,13 @@ final class BackupCodec {
         }
     }
 
+    /** @return the backup's file content (written without JAXB: {@link BackupXmlWriter}, the same bytes) */
     byte[] write(ComponentBackup b) {
+        return BackupXmlWriter.write(b);
+    }
+
+    /** @return the file content as JAXB writes it (the reference for {@link BackupXmlWriter}; tests) */
+    byte[] writeWithJaxb(ComponentBackup b) {
         BackupXml x = new BackupXml();
         x.kind = b.kind().name();
         x.uid = b.uid();
@@ -80,10 +94,10 @@ final class BackupCodec {
     ComponentBackup read(byte[] xml) throws BadBackupException {
         BackupXml x;
         try {
-            XMLInputFactory f = XMLInputFactory.newFactory();
-            f.setProperty(XMLInputFactory.SUPPORT_DTD, false);
-            f.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
-            XMLStreamReader reader = f.createXMLStreamReader(new ByteArrayInputStream(xml));
+            XMLStreamReader reader;
+            synchronized (xmlInput) {
+                reader = xmlInput.createXMLStreamReader(new ByteArrayInputStream(xml));
+            }
             x = withBundleLoader(() -> {
                 Unmarshaller u = jaxb.createUnmarshaller();
                 u.setEventHandler(event -> false); // any error ends the read

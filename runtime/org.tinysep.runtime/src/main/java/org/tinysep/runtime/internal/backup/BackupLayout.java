@@ -46,8 +46,20 @@ final class BackupLayout {
         return damagedFolder().resolve(flat + "." + STAMP.format(now));
     }
 
+    /**
+     * Letters A-Z a-z, digits and {@code . _ -} stay, any other character (code point) becomes {@code _}; a name
+     * that would be empty or start with a dot gets a leading {@code _}. A loop, not a regular expression: it runs
+     * once per backup written (20,000 at once when a large platform starts).
+     */
     static String safe(String s) {
-        String out = s.strip().replaceAll("[^A-Za-z0-9._-]", "_");
-        return out.isEmpty() || out.startsWith(".") ? "_" + out : out;
+        String t = s.strip();
+        StringBuilder out = new StringBuilder(t.length() + 1);
+        t.codePoints().forEach(c -> out.append(allowed(c) ? (char) c : '_'));
+        return out.isEmpty() || out.charAt(0) == '.' ? "_" + out : out.toString();
+    }
+
+    private static boolean allowed(int c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '.' || c == '_'
+                || c == '-';
     }
 }
