@@ -36,7 +36,7 @@ class BackupXmlWriterTest {
         return s.toString();
     }
 
-    private static ComponentBackup random(Random r) {
+    static ComponentBackup random(Random r) {
         Map<String, String> parameters = new LinkedHashMap<>();
         Map<String, String> state = new LinkedHashMap<>();
         for (int i = r.nextInt(4); i > 0; i--) {
