@@ -8,8 +8,8 @@ import org.tinysep.api.backup.ComponentBackup;
 /**
  * Writes a backup file without JAXB: the same bytes JAXB's formatted output gives for {@link BackupXml}
  * ({@code BackupXmlWriterTest} compares them), at a fraction of the cost. Every new device is saved once, so a
- * burst of 20,000 devices meant 20,000 marshals on the backup writer's thread, its largest cost (JFR, issue 29).
- * Reading stays with JAXB, which checks what it reads.
+ * burst of 20,000 devices meant 20,000 marshals on the backup writer's thread, its largest cost (JFR).
+ * Files of exactly this shape are read back by {@link BackupXmlReader}; anything else by JAXB.
  */
 final class BackupXmlWriter {
 
