@@ -3,7 +3,7 @@ package org.tinysep.amica.busradio.base;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
@@ -11,6 +11,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -31,6 +32,11 @@ import org.tinysep.device.support.lifecycle.DriverContext;
  * a {@code PROBLEM} at most once a minute. {@link #awaitDelivered} lets a lock-step tick wait until what was
  * submitted before it reached its listeners (handed to a quarantined one's queue counts as reached).
  * <p>
+ * The hand-off is cheap for the receive thread: a lock-free queue, and a wake-up only when the dispatcher sleeps.
+ * A dispatcher that finds the queue empty first yields its core for up to {@link #SPIN} (the next payload of a
+ * burst usually comes within it) and only then parks: under load the receive thread wakes it once per burst rather
+ * than once per payload ({@link #wakeups()}).
+ * <p>
  * The executor and the watchdog are this object's; {@link #close()} (the driver's deactivate) shuts them down.
  */
 public final class OrderedDelivery implements AutoCloseable {
@@ -42,6 +48,8 @@ public final class OrderedDelivery implements AutoCloseable {
     /** Default capacity of a quarantined listener's own queue. */
     public static final int LANE_CAPACITY = 1_024;
     static final long REPORT_NANOS = 60_000_000_000L;
+    /** How long an idle dispatcher yields and looks again before it parks. */
+    static final Duration SPIN = Duration.ofNanos(30_000);
 
     private static final Logger LOG = LoggerFactory.getLogger(OrderedDelivery.class);
 
@@ -50,7 +58,12 @@ public final class OrderedDelivery implements AutoCloseable {
     private final long slowNanos;
     private final int laneCapacity;
     private final int capacity;
-    private final ArrayBlockingQueue<Job<?>> queue;
+    private final ConcurrentLinkedQueue<Job<?>> queue = new ConcurrentLinkedQueue<>();
+    private final AtomicInteger queued = new AtomicInteger();
+    /** The dispatcher's thread while it parks (or is about to); the submitter that takes it out wakes it. */
+    private final AtomicReference<Thread> sleeper = new AtomicReference<>();
+    private final AtomicLong wakeups = new AtomicLong();
+    private volatile long spinNanos = SPIN.toNanos();
     private final ExecutorService pool;
     private final ScheduledExecutorService watchdog;
     private final AtomicLong submitted = new AtomicLong();
@@ -73,7 +86,6 @@ public final class OrderedDelivery implements AutoCloseable {
         this.radio = radio;
         this.slowNanos = slowCall.toNanos();
         this.laneCapacity = laneCapacity;
-        this.queue = new ArrayBlockingQueue<>(capacity);
         AtomicInteger n = new AtomicInteger();
         String threads = context.driverName() + "-deliver-";
         this.pool = Executors.newCachedThreadPool(r -> daemon(r, threads + n.incrementAndGet()));
@@ -97,10 +109,17 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** Queues a job in order; never blocks. @return false when the queue was full (dropped, counted, said) */
     public boolean submit(Job<?> job) {
-        if (queue.offer(job)) {
-            submitted.incrementAndGet();
+        if (queued.incrementAndGet() <= capacity) {
+            submitted.incrementAndGet(); // before it can be completed (awaitDelivered compares the two)
+            queue.offer(job);
+            Thread s = sleeper.get();
+            if (s != null && sleeper.compareAndSet(s, null)) {
+                wakeups.incrementAndGet();
+                LockSupport.unpark(s);
+            }
             return true;
         }
+        queued.decrementAndGet();
         dropped.incrementAndGet();
         String words = full.drop(Instant.now(), (count, since) -> radio + " cannot hand payloads to its devices fast"
                 + " enough: " + count + " payload" + (count == 1 ? "" : "s") + " dropped since " + since + " (its"
@@ -164,8 +183,50 @@ public final class OrderedDelivery implements AutoCloseable {
         return closed;
     }
 
+    /** The dispatcher: the next job, waiting for one (yielding for {@link #SPIN}, then parked). */
     Job<?> take() throws InterruptedException {
-        return queue.take();
+        Job<?> j = poll();
+        if (j != null) {
+            return j;
+        }
+        long end = System.nanoTime() + spinNanos;
+        while (System.nanoTime() - end < 0) {
+            Thread.yield();
+            if ((j = poll()) != null) {
+                return j;
+            }
+        }
+        Thread me = Thread.currentThread();
+        while (true) {
+            sleeper.set(me); // then look again: a job offered before this is seen, one offered after it wakes us
+            if ((j = poll()) != null) {
+                sleeper.compareAndSet(me, null);
+                return j;
+            }
+            LockSupport.park(this);
+            if (Thread.interrupted() || closed) {
+                sleeper.compareAndSet(me, null);
+                throw new InterruptedException("closed");
+            }
+        }
+    }
+
+    private Job<?> poll() {
+        Job<?> j = queue.poll();
+        if (j != null) {
+            queued.decrementAndGet();
+        }
+        return j;
+    }
+
+    /** For tests: how long an idle dispatcher yields before it parks (0: parks at once). */
+    void spin(Duration d) {
+        spinNanos = d.toNanos();
+    }
+
+    /** @return how often a submitter woke a parked dispatcher */
+    public long wakeups() {
+        return wakeups.get();
     }
 
     void done() {
@@ -204,7 +265,7 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** @return the counters for the driver's parameters */
     public List<Parameter> parameters() {
-        return List.of(Parameter.readOnly("delivery.queued", queue.size(), "payloads waiting for the dispatcher"),
+        return List.of(Parameter.readOnly("delivery.queued", queued.get(), "payloads waiting for the dispatcher"),
                 Parameter.readOnly("delivery.dropped", dropped.get(), "payloads dropped: a queue was full"),
                 Parameter.readOnly("delivery.slowListeners", quarantines.get(),
                         "times a listener took over " + slowNanos / 1_000_000 + " ms and got its own queue"));
