@@ -1,12 +1,16 @@
-package org.tinysep.amica.busradio.base;
+package org.tinysep.device.support.delivery;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.tinysep.device.support.lifecycle.DriverContext;
+import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * What the ordered hand-off costs per payload (issue 29, item 1): in a burst, the receive thread wakes the
@@ -16,7 +20,9 @@ import org.junit.jupiter.api.Test;
 class HandOffCostTest {
 
     private static final int PAYLOADS = 20_000;
-    private final TestRadio radio = new TestRadio();
+    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    private final DriverContext context = new DriverContext(null, "driver-uid", "TestRadio",
+            new RecordingLogs(() -> T0).reporter(), new PlatformClock(() -> T0));
 
     /** One listener recording what it got. */
     private static final class Recorder extends GuardedLane<Integer> {
@@ -54,7 +60,7 @@ class HandOffCostTest {
 
     @Test
     void aBurstCostsFewWakeUpsAndKeepsItsOrder() {
-        try (OrderedDelivery d = new OrderedDelivery(radio.context, "The test radio")) {
+        try (OrderedDelivery d = new OrderedDelivery(context, "The test radio")) {
             Recorder r = new Recorder();
             // a payload every ~3 µs, as a 2-core gateway receives them at its loss-free limit
             for (int i = 0; i < PAYLOADS; i++) {

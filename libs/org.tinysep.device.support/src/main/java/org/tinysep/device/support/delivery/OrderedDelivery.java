@@ -1,4 +1,4 @@
-package org.tinysep.amica.busradio.base;
+package org.tinysep.device.support.delivery;
 
 import java.time.Duration;
 import java.time.Instant;
