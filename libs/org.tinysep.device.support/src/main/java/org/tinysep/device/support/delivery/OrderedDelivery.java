@@ -33,9 +33,10 @@ import org.tinysep.device.support.lifecycle.DriverContext;
  * submitted before it reached its listeners (handed to a quarantined one's queue counts as reached).
  * <p>
  * The hand-off is cheap for the receive thread: a lock-free queue, and a wake-up only when the dispatcher sleeps.
- * A dispatcher that finds the queue empty first yields its core for up to {@link #SPIN} (the next payload of a
- * burst usually comes within it) and only then parks: under load the receive thread wakes it once per burst rather
- * than once per payload ({@link #wakeups()}).
+ * While payloads come faster than {@link #SPIN} apart, a dispatcher that finds the queue empty first yields its
+ * core for up to that long (the next payload of a burst usually comes within it) and only then parks: under load
+ * the receive thread wakes it once per burst rather than once per payload ({@link #wakeups()}); at a slower pace
+ * it parks at once.
  * <p>
  * The executor and the watchdog are this object's; {@link #close()} (the driver's deactivate) shuts them down.
  */
@@ -64,6 +65,8 @@ public final class OrderedDelivery implements AutoCloseable {
     private final AtomicReference<Thread> sleeper = new AtomicReference<>();
     private final AtomicLong wakeups = new AtomicLong();
     private volatile long spinNanos = SPIN.toNanos();
+    private long lastWait; // the dispatcher's: how long its last take() waited for a job
+    private final AtomicLong spinsInVain = new AtomicLong();
     private final ExecutorService pool;
     private final ScheduledExecutorService watchdog;
     private final AtomicLong submitted = new AtomicLong();
@@ -183,24 +186,35 @@ public final class OrderedDelivery implements AutoCloseable {
         return closed;
     }
 
-    /** The dispatcher: the next job, waiting for one (yielding for {@link #SPIN}, then parked). */
+    /**
+     * The dispatcher: the next job, waiting for one. It yields and looks again for up to {@link #SPIN} only while
+     * payloads come that fast (its last wait was shorter than that), else it parks at once: at a slower pace a
+     * spin would only burn a core the receive thread may need.
+     */
     Job<?> take() throws InterruptedException {
         Job<?> j = poll();
         if (j != null) {
+            lastWait = 0;
             return j;
         }
-        long end = System.nanoTime() + spinNanos;
-        while (System.nanoTime() - end < 0) {
-            Thread.yield();
-            if ((j = poll()) != null) {
-                return j;
+        long start = System.nanoTime();
+        long spin = spinNanos;
+        if (lastWait < spin) {
+            while (System.nanoTime() - start < spin) {
+                Thread.yield();
+                if ((j = poll()) != null) {
+                    lastWait = System.nanoTime() - start;
+                    return j;
+                }
             }
+            spinsInVain.incrementAndGet();
         }
         Thread me = Thread.currentThread();
         while (true) {
             sleeper.set(me); // then look again: a job offered before this is seen, one offered after it wakes us
             if ((j = poll()) != null) {
                 sleeper.compareAndSet(me, null);
+                lastWait = System.nanoTime() - start;
                 return j;
             }
             LockSupport.park(this);
@@ -222,6 +236,11 @@ public final class OrderedDelivery implements AutoCloseable {
     /** For tests: how long an idle dispatcher yields before it parks (0: parks at once). */
     void spin(Duration d) {
         spinNanos = d.toNanos();
+    }
+
+    /** @return how often an idle dispatcher yielded for {@link #SPIN} and then parked all the same */
+    long spinsInVain() {
+        return spinsInVain.get();
     }
 
     /** @return how often a submitter woke a parked dispatcher */

@@ -16,6 +16,7 @@ import org.tinysep.device.support.time.PlatformClock;
  * What the ordered hand-off costs per payload (issue 29, item 1): in a burst, the receive thread wakes the
  * dispatcher once per burst, not once per payload (a dispatcher that parked as soon as the queue was empty cost a
  * wake-up, a system call on the receive thread and a scheduling delay, for nearly every payload); order is kept.
+ * At a slow pace the dispatcher does not spin in vain (on a 2-core gateway that core is the receive thread's).
  */
 class HandOffCostTest {
 
@@ -55,6 +56,20 @@ class HandOffCostTest {
         @Override
         protected List<Recorder> missed(GuardedLane<Integer> lane) {
             return List.of();
+        }
+    }
+
+    @Test
+    void atASlowPaceTheDispatcherParksAtOnce() throws InterruptedException {
+        try (OrderedDelivery d = new OrderedDelivery(context, "The test radio")) {
+            Recorder r = new Recorder();
+            for (int i = 0; i < 200; i++) { // a payload every 2 ms, far apart from the next
+                assertTrue(d.submit(new Payload(i, r)));
+                Thread.sleep(2);
+            }
+            assertTrue(d.awaitDelivered(Duration.ofSeconds(10)));
+            assertEquals(200, r.got.size());
+            assertTrue(d.spinsInVain() <= 20, "spins in vain for 200 payloads 2 ms apart: " + d.spinsInVain());
         }
     }
 
