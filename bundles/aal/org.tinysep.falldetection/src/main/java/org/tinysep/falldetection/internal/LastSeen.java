@@ -21,10 +21,13 @@ import org.tinysep.device.support.rooms.Placements;
 
 /**
  * Where the person was last seen, for the FALL alert's words: the room of the newest activity the room sensors
- * reported (motion INSIDE, a door opened or closed, a mat, seat or appliance turning on or off). The room is the
- * reporting device's {@code tinysep.room} at that moment and its name comes from House Information, as Inactivity
- * Recognition finds it. First reports after a start (a door's resting state) are no sighting. The room sensors see
- * anyone, so in a flat with two people this is where someone was last seen.
+ * reported (motion INSIDE, a door opened or closed, a mat, seat or appliance turning on or off). A report only notes
+ * the device, the time and the words; the room (the device's {@code tinysep.room}) and its name from House
+ * Information are looked up when a fall alert asks ({@link #last()}), as Inactivity Recognition finds them: motion
+ * reports come on the radio's delivery thread many times a second, a fall alert seldom (looking the room and the
+ * device's name up per report was a third of that thread's time at 50k frames/s). First reports after a start (a
+ * door's resting state) are no sighting. The room sensors see anyone, so in a flat with two people this is where
+ * someone was last seen.
  */
 final class LastSeen implements MovementListener, DoorListener, PresenceListener {
 
@@ -34,7 +37,11 @@ final class LastSeen implements MovementListener, DoorListener, PresenceListener
 
     private final Placements directory;
     private volatile Map<String, Room> rooms = Map.of();
-    private volatile Sighting last;
+    /** The newest report, as noted: the room is looked up when asked. */
+    private record Noted(String deviceUid, Instant at, String by) {
+    }
+
+    private volatile Noted last;
 
     LastSeen(Placements directory) {
         this.directory = directory;
@@ -42,7 +49,8 @@ final class LastSeen implements MovementListener, DoorListener, PresenceListener
 
     /** @return the newest sighting, empty when no room sensor has reported activity since the start */
     Optional<Sighting> last() {
-        return Optional.ofNullable(last);
+        Noted n = last;
+        return n == null ? Optional.empty() : Optional.of(new Sighting(room(n.deviceUid()), n.at(), n.by()));
     }
 
     /** The house plan changed (or became known). */
@@ -78,11 +86,11 @@ final class LastSeen implements MovementListener, DoorListener, PresenceListener
     }
 
     private synchronized void seen(String deviceUid, Instant at, String by) {
-        Sighting before = last;
+        Noted before = last;
         if (before != null && at.isBefore(before.at())) {
             return; // a late report does not move the person back
         }
-        last = new Sighting(room(deviceUid), at, by);
+        last = new Noted(deviceUid, at, by);
     }
 
     /** @return the room's name, "room &lt;uid&gt;" when House Information does not know it, or the device's words */

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.sensor.DoorListener;
@@ -28,14 +29,17 @@ class LastSeenTest {
     private final Map<String, String> placed = Map.of("kitchen-pir", "r-kitchen", "hall-door", "r-hall",
             "garden-pir", "r-garden", "odd-pir", "r-gone");
 
+    private final AtomicInteger lookups = new AtomicInteger();
     private final LastSeen seen = new LastSeen(new Placements() {
         @Override
         public Optional<String> roomOf(String deviceUid) {
+            lookups.incrementAndGet();
             return Optional.ofNullable(placed.get(deviceUid));
         }
 
         @Override
         public String nameOf(String deviceUid) {
+            lookups.incrementAndGet();
             return "Sensor " + deviceUid;
         }
     });
@@ -75,6 +79,17 @@ class LastSeenTest {
         assertEquals("an unknown room (device Sensor loose-pir is not placed in a room)", seen.last().orElseThrow().room());
         seen.movementReported(pir("odd-pir", MovementLocation.INSIDE), new MovementEvent(true, T.plusSeconds(1)));
         assertEquals("room r-gone", seen.last().orElseThrow().room());
+    }
+
+    @Test
+    void aReportLooksNothingUpOnlyTheAlertDoes() {
+        for (int i = 0; i < 1_000; i++) { // on the radio's delivery thread: no placement or name lookup per report
+            seen.movementReported(pir(i % 2 == 0 ? "loose-pir" : "kitchen-pir", MovementLocation.INSIDE),
+                    new MovementEvent(true, T.plusMillis(i)));
+        }
+        assertEquals(0, lookups.get(), "lookups for 1,000 motion reports");
+        assertEquals("the Kitchen", seen.last().orElseThrow().room());
+        assertTrue(lookups.get() <= 2, "lookups when the alert asks: " + lookups.get());
     }
 
     static MovementProvider pir(String uid, MovementLocation where) {

@@ -27,6 +27,7 @@ import org.tinysep.api.device.Parameter;
 import org.tinysep.api.health.NodeHealth;
 import org.tinysep.api.health.NodeHealthSource;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 import org.tinysep.device.support.health.HealthWords;
 import org.tinysep.device.support.health.NodePolicy;
 import org.tinysep.device.support.health.NodeWatch;

@@ -15,6 +15,7 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.Direction;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 import org.tinysep.device.support.health.NodePolicy;
 import org.tinysep.device.support.lifecycle.AbstractDevice;
 import org.tinysep.device.support.lifecycle.Backups;

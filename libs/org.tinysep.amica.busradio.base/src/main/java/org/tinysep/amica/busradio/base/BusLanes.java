@@ -9,6 +9,8 @@ import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.Device;
+import org.tinysep.device.support.delivery.GuardedLane;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 
 /**
  * The listeners of one bus device and the way its payloads reach them: through the radio's {@link OrderedDelivery}
@@ -85,7 +87,7 @@ final class BusLanes {
     /** The bus device goes: every listener is disconnected, nothing is held. */
     void closeAll() {
         synchronized (handover) {
-            lanes.forEach(Lane::shut);
+            lanes.forEach(Lane::disconnect);
             lanes = List.of();
         }
     }
@@ -101,7 +103,7 @@ final class BusLanes {
         @Override
         protected List<Lane> begin() {
             synchronized (handover) {
-                recorded = handover.record(item.payload(), item.at());
+                recorded = handover.record(item().payload(), item().at());
                 seq = connects;
                 return lanes;
             }
@@ -114,7 +116,7 @@ final class BusLanes {
                     return List.of(); // its replacement gets it from the handover
                 }
                 if (handover.awaitingReplacement()) {
-                    handover.hold(item);
+                    handover.hold(item());
                     return List.of();
                 }
                 return lanes.stream().filter(l -> l.seq > seq).toList(); // the replacement came already
@@ -167,6 +169,11 @@ final class BusLanes {
         @Override
         public boolean isOpen() {
             return !isClosed();
+        }
+
+        /** The bus device goes: nothing more for this listener, nothing held. */
+        void disconnect() {
+            shut();
         }
     }
 }

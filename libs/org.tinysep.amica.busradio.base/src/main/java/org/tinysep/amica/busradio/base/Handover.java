@@ -64,7 +64,7 @@ final class Handover {
     }
 
     /**
-     * A listener disconnected with payloads still queued for it ({@link GuardedLane}): they were never
+     * A listener disconnected with payloads still queued for it ({@link org.tinysep.device.support.delivery.GuardedLane}): they were never
      * given to it and are older than anything held from now on, so they come first.
      */
     void listenerLeft(List<Held> undelivered) {

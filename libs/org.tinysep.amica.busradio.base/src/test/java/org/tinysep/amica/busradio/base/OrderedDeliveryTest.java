@@ -18,11 +18,12 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaNodeType;
-import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.AmicaPayload;
+import org.tinysep.amica.protocol.AmicaPayloads;
 import org.tinysep.amica.protocol.HeaterControl;
 import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 
 /**
  * Issue 29: a slow consumer must never stall the radio, and the order of payloads across the devices of one radio

@@ -11,8 +11,20 @@ final class Escaping {
     }
 
     static String escape(String s) {
+        int i = 0;
+        int n = s.length();
+        while (i < n) { // most text needs no escape: look for the first character that does
+            char c = s.charAt(i);
+            if (c < 0x20 || c == '\\' || c == 0x7F) {
+                break;
+            }
+            i++;
+        }
+        if (i == n) {
+            return s;
+        }
         StringBuilder sb = null;
-        for (int i = 0; i < s.length(); i++) {
+        for (; i < s.length(); i++) {
             char c = s.charAt(i);
             String rep = switch (c) {
                 case '\\' -> "\\\\";
@@ -71,13 +83,18 @@ final class Escaping {
 
     /** @return upper-case hexadecimal, two digits per byte, no separators; empty for no bytes */
     static String hex(byte[] bytes) {
-        char[] out = new char[bytes.length * 2];
-        for (int i = 0; i < bytes.length; i++) {
-            out[2 * i] = Character.toUpperCase(Character.forDigit((bytes[i] >> 4) & 0xF, 16));
-            out[2 * i + 1] = Character.toUpperCase(Character.forDigit(bytes[i] & 0xF, 16));
-        }
-        return new String(out);
+        return hex(new StringBuilder(bytes.length * 2), bytes).toString();
     }
+
+    /** Appends {@link #hex(byte[])} of {@code bytes} to {@code out}. */
+    static StringBuilder hex(StringBuilder out, byte[] bytes) {
+        for (byte b : bytes) {
+            out.append(HEX[(b >> 4) & 0xF]).append(HEX[b & 0xF]);
+        }
+        return out;
+    }
+
+    private static final char[] HEX = "0123456789ABCDEF".toCharArray();
 
     /** @throws IllegalArgumentException on an odd length or a non-hex digit */
     static byte[] unhex(String s) {

@@ -9,14 +9,19 @@ import org.tinysep.api.log.EventKind;
  */
 final class EventLines extends LineCodec<EventEntry> {
 
+    private final LogTime times = new LogTime();
+
     EventLines() {
         super(EventEntry::sequence, EventEntry::time, EventEntry::origin);
     }
 
     @Override
     String encode(EventEntry e) {
-        return e.time() + "\t" + e.sequence() + "\t" + e.kind().name() + "\t" + Escaping.escape(e.origin()) + "\t"
-                + Escaping.escape(e.message());
+        String origin = Escaping.escape(e.origin());
+        String message = Escaping.escape(e.message());
+        StringBuilder out = new StringBuilder(48 + origin.length() + message.length());
+        return times.append(out, e.time()).append('\t').append(e.sequence()).append('\t').append(e.kind().name())
+                .append('\t').append(origin).append('\t').append(message).toString();
     }
 
     @Override

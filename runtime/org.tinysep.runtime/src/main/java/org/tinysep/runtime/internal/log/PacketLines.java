@@ -10,14 +10,20 @@ import org.tinysep.api.log.PacketEntry;
  */
 final class PacketLines extends LineCodec<PacketEntry> {
 
+    private final LogTime times = new LogTime();
+
     PacketLines() {
         super(PacketEntry::sequence, PacketEntry::time, PacketEntry::origin);
     }
 
     @Override
     String encode(PacketEntry p) {
-        return p.time() + "\t" + p.sequence() + "\t" + p.direction().name() + "\t" + Escaping.escape(p.origin())
-                + "\t" + Escaping.hex(p.bytes()) + "\t" + Escaping.escape(p.note());
+        String origin = Escaping.escape(p.origin());
+        String note = Escaping.escape(p.note());
+        StringBuilder out = new StringBuilder(48 + origin.length() + 2 * p.bytes().length + note.length());
+        times.append(out, p.time()).append('\t').append(p.sequence()).append('\t').append(p.direction().name())
+                .append('\t').append(origin).append('\t');
+        return Escaping.hex(out, p.bytes()).append('\t').append(note).toString();
     }
 
     @Override

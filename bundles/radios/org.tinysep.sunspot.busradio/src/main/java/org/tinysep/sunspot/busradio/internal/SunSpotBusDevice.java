@@ -21,7 +21,6 @@ import org.tinysep.device.support.health.NodeWatch;
 import org.tinysep.device.support.health.ReportRates;
 import org.tinysep.device.support.lifecycle.AbstractDevice;
 import org.tinysep.device.support.lifecycle.DriverContext;
-import org.tinysep.device.support.lifecycle.Listeners;
 import org.tinysep.device.support.lifecycle.Uids;
 import org.tinysep.sunspot.protocol.SunSpotAddress;
 import org.tinysep.sunspot.protocol.SunSpotFrame;
@@ -31,8 +30,9 @@ import org.tinysep.sunspot.protocol.SunSpotSensorType;
  * One Sun SPOT as seen through the bus radio (thesis 4.4.1.3, A.2). Its node types are the sensor types seen from
  * it so far: a new one is added to the {@code tinysep.node.type} service property before the packet that revealed
  * it is delivered, so an abstraction driver that attaches because of it gets that packet too. Forwards every
- * valid payload to its listeners without analysing it, each listener getting its own copy. Thread-safe: packets
- * may arrive on several links at once.
+ * valid payload to its listeners without analysing it, each listener getting its own copy, through the radio's
+ * ordered delivery ({@link SunSpotLanes}: a slow listener never stalls a link). Thread-safe: packets may arrive on
+ * several links at once.
  */
 final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotProvider, NodeHealthSource {
 
@@ -47,7 +47,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
 
     private final SunSpotAddress address;
     private final SunSpotNodes table;
-    private final Listeners<BusRadioSunSpotListener> listeners;
+    private final SunSpotLanes listeners;
     private final AtomicLong packets = new AtomicLong();
     private volatile Set<String> nodeTypes;
     private volatile String link;
@@ -66,7 +66,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         this.address = address;
         this.link = link;
         this.table = table;
-        this.listeners = new Listeners<>(uid());
+        this.listeners = new SunSpotLanes(this, "Sun SPOT " + address);
         this.nodeTypes = Set.of(first.typeName());
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {first.typeName()});
@@ -120,8 +120,8 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
         status(DeviceStatus.State.ONLINE, "");
         byte[] bytes = frame.payload();
         int sensorType = frame.sensorType();
-        listeners.fire(l -> l.payloadReceived(this, sensorType, bytes.clone(), at));
-        packets.incrementAndGet(); // counted once delivered
+        listeners.received(table.delivery(), sensorType, bytes, at); // queued in order for the radio's dispatcher
+        packets.incrementAndGet(); // counted once handed on
         stateChanged(); // last seen, saved at most every 10 s, never on this thread
     }
 
@@ -182,7 +182,7 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
 
     @Override
     public Connection connect(BusRadioSunSpotListener listener) {
-        return listeners.add(listener);
+        return listeners.connect(listener);
     }
 
     @Override

@@ -13,6 +13,7 @@ import org.osgi.service.metatype.annotations.Designate;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
 import org.tinysep.device.support.health.NodePolicy;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 import org.tinysep.device.support.intake.RejectCounter;
 import org.tinysep.device.support.intake.RejectTotals;
 import org.tinysep.device.support.intake.SourceGate;
@@ -35,6 +36,8 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
     public static final String PORT_PROPERTY = "tinysep.udp.port";
     /** Pause between attempts to open a missing serial port or SDK radiogram port. */
     static final Duration REOPEN_EVERY = Duration.ofSeconds(5);
+    /** A tick waits at most this long for the packets queued before it (past the slow-listener limit). */
+    static final Duration TICK_WAIT = Duration.ofSeconds(2);
 
     private volatile SunSpotLinks links;
     private volatile SunSpotNodes nodes;
@@ -42,6 +45,8 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
     private volatile RejectCounter<RejectReason> rejects;
     private volatile SourceGate gate;
     private volatile PlatformTicker ticker;
+    /** One ordered queue and dispatcher for every bus device's listeners: a slow listener never stalls a link */
+    private volatile OrderedDelivery delivery;
 
     public SunSpotBusRadioDriver() {
         super(NAME);
@@ -67,17 +72,23 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
                 "packets (or serial byte runs) rejected in total");
         nodes = new SunSpotNodes(context(), NAME, this::addDevice);
         nodes.policy(policy);
+        delivery = new OrderedDelivery(context(), "The Sun SPOT radio");
+        nodes.delivery(delivery);
         handler = new PacketHandler(context(), nodes, rejects);
         nodes.restore(savedDevices()); // known nodes as they were, before the links open (docs/backup.md)
         links.gate(gate, p -> context().event(EventKind.PROBLEM, p));
         links.start(handler, nodes, context());
         PacketHandler h = handler;
-        ticker = new PlatformTicker(bundleContext, NAME, h::tick); // sensor health in platform time
+        OrderedDelivery d = delivery;
+        ticker = new PlatformTicker(bundleContext, NAME, now -> { // sensor health in platform time
+            d.awaitDelivered(TICK_WAIT); // what was queued before the tick reached its listeners (a stuck one aside)
+            h.tick(now);
+        });
     }
 
     @Deactivate
     void deactivate() {
-        stop(ticker, links); // then removes the bus devices one by one (each leaves the node table), the driver
+        stop(ticker, links, delivery); // then removes the bus devices one by one (each leaves the node table), the driver
     }
 
     @Override
@@ -92,6 +103,7 @@ public final class SunSpotBusRadioDriver extends AbstractDriver {
         out.addAll(rejects == null ? List.of() : rejects.parameters());
         out.addAll(gate == null ? List.of() : gate.parameters());
         out.addAll(nodes == null ? List.of() : nodes.parameters());
+        out.addAll(delivery == null ? List.of() : delivery.parameters());
         return RejectTotals.summed(out); // rejected = every rejected.<reason>, the gate's and node_cap included
 
     }

@@ -9,6 +9,7 @@ import java.util.function.UnaryOperator;
 import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 import org.tinysep.device.support.health.NodePolicy;
 import org.tinysep.device.support.lifecycle.AbstractDevice;
 import org.tinysep.device.support.lifecycle.Backups;
@@ -30,6 +31,7 @@ final class SunSpotNodes {
     private final UnaryOperator<SunSpotBusDevice> register;
     private final AtomicLong overCap = new AtomicLong();
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
+    private volatile OrderedDelivery delivery;
 
     /**
      * @param deviceType the type of the bus devices, {@code BusRadioSunSpot}
@@ -40,6 +42,15 @@ final class SunSpotNodes {
         this.context = context;
         this.deviceType = deviceType;
         this.register = register;
+    }
+
+    /** The radio's ordered delivery for every bus device's listeners (null: on the receive thread, in tests). */
+    void delivery(OrderedDelivery d) {
+        this.delivery = d;
+    }
+
+    OrderedDelivery delivery() {
+        return delivery;
     }
 
     /** Sets the health and capacity settings (silence, maxNodes; Sun SPOTs report no battery). */

@@ -39,7 +39,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
     private final SerialPortLink link;
     private final StreamFrames<SerialPortLink> frames;
     /** One ordered queue and dispatcher for every bus device's listeners: the read thread only decodes */
-    private final org.tinysep.amica.busradio.base.OrderedDelivery delivery;
+    private final org.tinysep.device.support.delivery.OrderedDelivery delivery;
     private volatile long outages;
 
     /**
@@ -52,7 +52,7 @@ final class SerialRadio implements SerialPortLink.Listener, AmicaNodes.Transport
         this.rejects = new RejectCounter<>(context, RejectReason.class, r -> r.description(), "input",
                 "skipped byte runs and frames rejected in total");
         this.nodes = new AmicaNodes<>(context, DEVICE_TYPE, this, register);
-        this.delivery = new org.tinysep.amica.busradio.base.OrderedDelivery(context, "The AmICA serial radio on "
+        this.delivery = new org.tinysep.device.support.delivery.OrderedDelivery(context, "The AmICA serial radio on "
                 + settings.port());
         nodes.delivery(delivery);
         this.handler = new FrameHandler<>(context, nodes, rejects);

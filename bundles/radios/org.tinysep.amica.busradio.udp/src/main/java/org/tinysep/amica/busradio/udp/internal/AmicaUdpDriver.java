@@ -55,7 +55,7 @@ public final class AmicaUdpDriver extends AbstractDriver implements AmicaNodes.T
     private String listening;
     private PlatformTicker ticker;
     /** One ordered queue and dispatcher for every bus device's listeners */
-    private org.tinysep.amica.busradio.base.OrderedDelivery delivery;
+    private org.tinysep.device.support.delivery.OrderedDelivery delivery;
     private SourceGate gate;
     /** The platform time of the last tick: what a frame arriving before the next tick is stamped. */
     private Instant beforeTick;

@@ -2,7 +2,7 @@ package org.tinysep.amica.busradio.udp.internal;
 
 import java.time.Duration;
 import java.util.List;
-import org.tinysep.amica.busradio.base.OrderedDelivery;
+import org.tinysep.device.support.delivery.OrderedDelivery;
 import org.tinysep.device.support.lifecycle.DriverContext;
 
 /** The UDP bus radio's ordered delivery: its settings and how long a lock-step tick waits for it. */

@@ -1,4 +1,4 @@
-package org.tinysep.amica.busradio.base;
+package org.tinysep.device.support.delivery;
 
 /**
  * A dispatcher of {@link OrderedDelivery}: drains the ordered queue, one job after the other and each job's

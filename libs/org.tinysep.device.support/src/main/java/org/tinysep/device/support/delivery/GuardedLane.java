@@ -1,4 +1,4 @@
-package org.tinysep.amica.busradio.base;
+package org.tinysep.device.support.delivery;
 
 import java.time.Duration;
 import java.time.Instant;
@@ -150,14 +150,14 @@ public abstract class GuardedLane<T> {
     }
 
     /** The listener left: it gets nothing more. @return what was queued for it and not given yet, oldest first */
-    final synchronized List<OrderedDelivery.Job<T>> shut() {
+    protected final synchronized List<OrderedDelivery.Job<T>> shut() {
         closed = true;
         List<OrderedDelivery.Job<T>> left = new ArrayList<>(backlog);
         backlog.clear();
         return left;
     }
 
-    final synchronized boolean isClosed() {
+    protected final synchronized boolean isClosed() {
         return closed;
     }
 }

@@ -1,10 +1,10 @@
-package org.tinysep.amica.busradio.base;
+package org.tinysep.device.support.delivery;
 
 import java.time.Instant;
 import java.util.function.BiFunction;
 
 /** Counts losses and says them at most once a minute: the first at once, later ones summed up */
-final class RateLimitedProblem {
+public final class RateLimitedProblem {
 
     private long unreported;
     private Instant since;
@@ -16,7 +16,7 @@ final class RateLimitedProblem {
      * @param words the text for (count since the last report, time of the first of them)
      * @return the text to say now, or null while the last report is less than a minute old
      */
-    synchronized String drop(Instant at, BiFunction<Long, Instant, String> words) {
+    public synchronized String drop(Instant at, BiFunction<Long, Instant, String> words) {
         if (unreported++ == 0) {
             since = at;
         }
@@ -31,7 +31,7 @@ final class RateLimitedProblem {
     }
 
     /** @return whether a report may be said now (a minute since the last); counts it as said */
-    synchronized boolean mayReport() {
+    public synchronized boolean mayReport() {
         long now = System.nanoTime();
         if (now - lastReport < OrderedDelivery.REPORT_NANOS) {
             return false;
