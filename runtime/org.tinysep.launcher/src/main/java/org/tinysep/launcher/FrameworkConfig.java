@@ -22,8 +22,6 @@ public final class FrameworkConfig {
     public static final String VAR = "tinysep.var";
     /** Felix's hook for its own log output: an {@code org.apache.felix.framework.Logger} instance ({@link FelixLog}). */
     static final String FELIX_LOGGER = "felix.log.logger";
-    /** Felix's number of resolver threads (default: one per core). */
-    static final String RESOLVER_PARALLELISM = "felix.resolver.parallelism";
     /**
      * Felix HTTP's key for headers on Jetty's own error pages (a malformed request line or header answers 400 before
      * any servlet filter runs): the same security headers as the web API's filter sets on every answer
@@ -64,11 +62,6 @@ public final class FrameworkConfig {
         p.put(Constants.FRAMEWORK_BEGINNING_STARTLEVEL, Integer.toString(startLevel));
         p.put("felix.startlevel.bundle", Integer.toString(startLevel)); // bundles installed later: deploy/, shell
         p.put("felix.log.level", "2");
-        // the resolver on the thread that asks for it, not on a pool of one thread per core: measured on the 2-core
-        // gateway (issue 29, docs/footprint.md) 12 % less CPU to the banner and two idle threads fewer; the
-        // resolutions of a start are small and one at a time, so the pool's hand-offs cost more than they save.
-        // -Dfelix.resolver.parallelism=N (a system property) still wins.
-        p.put(RESOLVER_PARALLELISM, System.getProperty(RESOLVER_PARALLELISM, "1"));
         // SLF4J is the launcher's (lib/slf4j-api + lib/slf4j-simple): the system bundle exports its packages, so
         // every bundle logs through the one logger the launcher configured. slf4j-api finds slf4j-simple with
         // java.util.ServiceLoader on the class path, as outside OSGi: no Service Loader Mediator (SPI Fly) and no

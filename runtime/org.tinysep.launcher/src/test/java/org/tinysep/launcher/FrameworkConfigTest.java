@@ -25,8 +25,6 @@ class FrameworkConfigTest {
                 p.get("felix.fileinstall.tmpdir"));
         assertEquals("/opt/tinysep", p.get("tinysep.home"));
         assertEquals("false", p.get("felix.bootdelegation.implicit"));
-        // issue 29: the resolver runs on the calling thread (less CPU to the banner, two threads fewer)
-        assertEquals("1", p.get("felix.resolver.parallelism"));
         assertFalse(p.containsKey("gosh.args"));
         assertEquals("/opt/tinysep/var", p.get("tinysep.var"));
     }
