@@ -82,8 +82,8 @@ public final class FrameworkConfig {
         p.put("felix.fileinstall.tmpdir", var.resolve("tmp/fileinstall-etc").toString());
         p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
         // the web console's HTTP service: this machine only, from its first moment; the host and port of
-        // etc/org.apache.felix.http.cfg when it names them (docs/web-api.md), so Jetty binds once, where configured,
-        // instead of binding the default first and again when FileInstall hands it the file (issue 29)
+        // etc/org.apache.felix.http.cfg when it names them (docs/web-api.md), so Jetty binds where configured from
+        // the first moment, not at 8080 until FileInstall hands it the file (issue 29)
         Properties http = HttpCfg.read(home.resolve("etc").resolve(HttpCfg.FILE));
         p.put(HttpCfg.HOST, http.getProperty(HttpCfg.HOST, "127.0.0.1"));
         p.put(HttpCfg.PORT, http.getProperty(HttpCfg.PORT, "8080"));
