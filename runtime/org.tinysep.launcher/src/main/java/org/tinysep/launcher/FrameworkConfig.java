@@ -3,6 +3,7 @@ package org.tinysep.launcher;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.Properties;
 import org.osgi.framework.Constants;
 
 /**
@@ -80,10 +81,12 @@ public final class FrameworkConfig {
         // left behind by every start; deploy/'s watcher: etc/org.apache.felix.fileinstall-deploy.cfg
         p.put("felix.fileinstall.tmpdir", var.resolve("tmp/fileinstall-etc").toString());
         p.put("gosh.home", home.toString()); // the interactive shell reads etc/gosh_profile there ('exit')
-        // the web console's HTTP service: this machine only, from its first moment (etc/org.apache.felix.http.cfg
-        // changes it once FileInstall has read it; docs/web-api.md)
-        p.put("org.apache.felix.http.host", "127.0.0.1");
-        p.put("org.osgi.service.http.port", "8080");
+        // the web console's HTTP service: this machine only, from its first moment; the host and port of
+        // etc/org.apache.felix.http.cfg when it names them (docs/web-api.md), so Jetty binds where configured from
+        // the first moment, not at 8080 until FileInstall hands it the file (issue 29)
+        Properties http = HttpCfg.read(home.resolve("etc").resolve(HttpCfg.FILE));
+        p.put(HttpCfg.HOST, http.getProperty(HttpCfg.HOST, "127.0.0.1"));
+        p.put(HttpCfg.PORT, http.getProperty(HttpCfg.PORT, "8080"));
         p.put(ERROR_PAGE_HEADERS, ERROR_PAGE_HEADER_VALUES); // etc/org.apache.felix.http.cfg may override it
         if (daemon) {
             p.put("gosh.args", "--nointeractive");

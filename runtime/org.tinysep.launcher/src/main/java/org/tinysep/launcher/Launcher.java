@@ -74,6 +74,7 @@ public final class Launcher {
      */
     public StartReport start() throws IOException, BundleException, InterruptedException {
         long t0 = System.nanoTime();
+        StartTrace trace = new StartTrace(t0);
         Path home = options.home();
         List<BundleGroup> groups = BundleLayout.scan(home.resolve("bundles"));
         int level = BundleLayout.maxStartLevel(groups);
@@ -92,6 +93,8 @@ public final class Launcher {
                 .newFramework(launchProperties);
         fw.init();
         framework = fw;
+        trace.mark("framework initialised");
+        trace.watch(fw.getBundleContext());
         StartSignals signals = new StartSignals(fw.getBundleContext()); // before anything of this start is logged
 
         CountDownLatch started = new CountDownLatch(1);
@@ -119,12 +122,15 @@ public final class Launcher {
         if (!driversList) {
             LOG.warn("No {} bundle: the launcher installs bundles/*-{} itself", DRIVERS_BSN, APPS_GROUP);
         }
+        trace.mark("bundles installed");
         fw.start();
         if (!started.await(START_TIMEOUT.toSeconds(), TimeUnit.SECONDS)) {
             LOG.warn("Framework did not report STARTED within {} s", START_TIMEOUT.toSeconds());
         }
-        Readiness.await(fw.getBundleContext(), home.resolve("etc")); // the radios listen as configured
+        Readiness.await(fw.getBundleContext(), home.resolve("etc"), trace); // the radios listen as configured
         StartReport report = report(Duration.ofNanos(System.nanoTime() - t0), level);
+        trace.mark("banner");
+        trace.log();
         return report.withWarnings(signals.warnings());
     }
 

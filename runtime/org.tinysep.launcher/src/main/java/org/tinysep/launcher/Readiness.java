@@ -41,9 +41,13 @@ final class Readiness {
     private Readiness() {
     }
 
-    static void await(BundleContext context, Path etc) throws InterruptedException {
+    static void await(BundleContext context, Path etc, StartTrace trace) throws InterruptedException {
         AtomicLong lastChange = new AtomicLong(System.nanoTime());
-        ServiceListener listener = event -> lastChange.set(System.nanoTime());
+        String[] last = {"none"};
+        ServiceListener listener = event -> {
+            lastChange.set(System.nanoTime());
+            last[0] = String.valueOf(event.getServiceReference().getProperty("component.name"));
+        };
         context.addServiceListener(listener);
         try {
             Set<String> missing = cfgFiles(etc);
@@ -59,10 +63,12 @@ final class Readiness {
                 LOG.warn("ConfigAdmin has not taken {} from {} within {} s (a broken file?)", missing, etc,
                         CONFIG_WAIT.toSeconds());
             }
+            trace.mark("every etc/*.cfg in ConfigAdmin");
             long quietEnd = System.nanoTime() + QUIET_WAIT.toNanos();
             while (System.nanoTime() - lastChange.get() < QUIET_MILLIS * 1_000_000 && System.nanoTime() < quietEnd) {
                 Thread.sleep(20);
             }
+            trace.mark("service registry quiet for " + QUIET_MILLIS + " ms (last change: component " + last[0] + ")");
         } finally {
             context.removeServiceListener(listener);
         }

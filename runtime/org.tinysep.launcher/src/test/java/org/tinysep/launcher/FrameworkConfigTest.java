@@ -38,6 +38,25 @@ class FrameworkConfigTest {
         assertEquals("/opt/tinysep", p.get("tinysep.home"));
     }
 
+    /** Issue 29: Jetty binds once, where etc/org.apache.felix.http.cfg says, not at 8080 first. */
+    @Test
+    void theWebConsolesAddressComesFromItsCfgFile(@org.junit.jupiter.api.io.TempDir Path home) throws Exception {
+        Map<String, String> none = FrameworkConfig.properties(home, false, 5);
+        assertEquals("127.0.0.1", none.get("org.apache.felix.http.host"));
+        assertEquals("8080", none.get("org.osgi.service.http.port"));
+        java.nio.file.Files.createDirectories(home.resolve("etc"));
+        java.nio.file.Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
+                "# comment\norg.apache.felix.http.host=192.168.1.20\norg.osgi.service.http.port=18080\n");
+        Map<String, String> p = FrameworkConfig.properties(home, false, 5);
+        assertEquals("192.168.1.20", p.get("org.apache.felix.http.host"));
+        assertEquals("18080", p.get("org.osgi.service.http.port"));
+        java.nio.file.Files.writeString(home.resolve("etc/org.apache.felix.http.cfg"),
+                "org.apache.felix.http.host=${my.host}\norg.osgi.service.http.port=eighty\n");
+        Map<String, String> substituted = FrameworkConfig.properties(home, false, 5);
+        assertEquals("127.0.0.1", substituted.get("org.apache.felix.http.host"), "left to FileInstall");
+        assertEquals("8080", substituted.get("org.osgi.service.http.port"));
+    }
+
     /** Issue 25, item 8: Jetty's own 400 pages carry the console's security headers (WebErrorPagesTest sees them). */
     @Test
     void jettysOwnErrorPagesGetTheSecurityHeaders() {

@@ -1,0 +1,53 @@
+package org.tinysep.launcher;
+
+import java.io.IOException;
+import java.io.Reader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Properties;
+
+/**
+ * The web console's address as {@code etc/org.apache.felix.http.cfg} sets it, for the framework properties: Felix
+ * HTTP then binds Jetty at the configured address from its first moment, never at the default port 8080 (which may
+ * belong to another program, e.g. a second TinySEP) when the file says otherwise. (Felix HTTP still restarts Jetty
+ * once when FileInstall delivers the file, at the same address: it restarts on every configuration update, ~20 ms
+ * measured.) Only plain values are taken: a value with {@code ${…}} (FileInstall substitutes those) or a port that is
+ * no number is left to FileInstall, and the default stands until then.
+ */
+final class HttpCfg {
+
+    static final String FILE = "org.apache.felix.http.cfg";
+    static final String HOST = "org.apache.felix.http.host";
+    static final String PORT = "org.osgi.service.http.port";
+
+    private HttpCfg() {
+    }
+
+    /** @return the host and port the file sets with plain values (none when it is missing or unreadable) */
+    static Properties read(Path cfg) {
+        Properties out = new Properties();
+        if (!Files.isRegularFile(cfg)) {
+            return out;
+        }
+        Properties file = new Properties();
+        try (Reader r = Files.newBufferedReader(cfg, StandardCharsets.ISO_8859_1)) {
+            file.load(r);
+        } catch (IOException | IllegalArgumentException e) {
+            return out; // FileInstall reports a broken file; the defaults stand
+        }
+        String host = plain(file.getProperty(HOST));
+        if (host != null) {
+            out.setProperty(HOST, host);
+        }
+        String port = plain(file.getProperty(PORT));
+        if (port != null && port.matches("\\d{1,5}")) {
+            out.setProperty(PORT, port);
+        }
+        return out;
+    }
+
+    private static String plain(String value) {
+        return value == null || value.isBlank() || value.contains("${") ? null : value.strip();
+    }
+}
