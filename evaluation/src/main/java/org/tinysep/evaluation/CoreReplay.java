@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Predicate;
+import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.LearningSettings;
@@ -36,6 +37,12 @@ final class CoreReplay {
 
     /** {@code -DupFromBed=false}: a bed mat turning OFF does not end sleep, to compare the detector without it. */
     static final boolean UP_FROM_BED = !"false".equals(System.getProperty("upFromBed"));
+
+    /**
+     * {@code -DdeviceOff=true}: a flush or appliance turning OFF counts as activity also when the last activity was
+     * in another room (the detector before issue 28's session 32), for comparison.
+     */
+    static final boolean FINISHED_BY_ITSELF = !Boolean.getBoolean("deviceOff");
 
     /** An activity as the detector sees it. */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
@@ -73,10 +80,19 @@ final class CoreReplay {
             if (n == null || (n.isMotion() && !e.on())) {
                 continue;
             }
+            if (FINISHED_BY_ITSELF && !e.on() && !out.isEmpty() && isDevice(n)
+                    && !out.get(out.size() - 1).room().equals(n.room())) {
+                continue; // the device finishing by itself: the person was last seen elsewhere (ActivityFactory)
+            }
             boolean outer = "OUTER".equals(n.doorKind());
             out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer));
         }
         return out;
+    }
+
+    /** A flush or an appliance: its OFF can be the device finishing by itself. */
+    static boolean isDevice(NodeSpec n) {
+        return n.type() == AmicaNodeType.PRESENCE_FLUSH || n.type() == AmicaNodeType.PRESENCE_APPLIANCE;
     }
 
     static Duration fixed(String roomType) {

@@ -43,6 +43,8 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private final Consumer<Activity> sink;
     private volatile Map<String, Room> rooms = Map.of();
     private final UnplacedNames unplaced;
+    /** The room (UID, empty if unplaced) of the last activity, null before the first. */
+    private volatile String lastRoom;
 
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
@@ -106,7 +108,25 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         boolean inBed = present && source.kind() == PresenceKind.BED;
         boolean seated = present && source.kind() == PresenceKind.SEAT;
         boolean up = !present && source.kind() == PresenceKind.BED;
-        sink.accept(of(source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated, up));
+        Placed p = placed(source.deviceUid());
+        if (finishedByItself(source.kind(), present, p.uid(), lastRoom)) {
+            return;
+        }
+        sink.accept(of(p, source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated,
+                up));
+    }
+
+    /**
+     * A flush or an appliance turning OFF while the last activity was in another room is the device finishing by
+     * itself (the cistern full, the kettle done), not the person: they were last seen elsewhere. Counting it would
+     * start the quiet period in the device's room with that room's limit (a night flush that ends 18 s after the
+     * person lay down in bed would be watched with the bathroom's 20 min instead of the night's).
+     *
+     * @param lastRoom the room of the last activity, null before the first
+     */
+    static boolean finishedByItself(PresenceKind kind, boolean present, String room, String lastRoom) {
+        return !present && (kind == PresenceKind.FLUSH || kind == PresenceKind.APPLIANCE) && lastRoom != null
+                && !lastRoom.equals(room);
     }
 
     private static String lower(OpenState s) {
@@ -128,7 +148,12 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
 
     private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated,
             boolean upFromBed) {
-        Placed p = placed(deviceUid);
+        return of(placed(deviceUid), deviceUid, what, at, inBed, seated, upFromBed);
+    }
+
+    private Activity of(Placed p, String deviceUid, Function<String, String> what, Instant at, boolean inBed,
+            boolean seated, boolean upFromBed) {
+        lastRoom = p.uid();
         Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated, upFromBed), p.fixed(),
                 clock.get());
         // the device's name is a registry look-up: made when the description is read, not per activity
