@@ -18,13 +18,17 @@ import org.tinysep.api.backup.ComponentBackup;
 import org.tinysep.api.backup.ComponentKind;
 
 /**
- * Converts backups to and from XML with JAXB. Inside OSGi the JAXB implementation is found through this bundle's
- * class loader (thread context class loader around the JAXB calls). DTDs and external entities are refused; a
- * file that is not a complete, valid backup is rejected with a {@link BadBackupException}.
+ * Converts backups to and from XML. Files are written by {@link BackupXmlWriter} and files of that shape read by
+ * {@link BackupXmlReader}; JAXB reads any other shape, and its context is made only when such a file comes (or a test
+ * asks), so an ordinary start loads none of JAXB's classes (issue 29: start time and idle memory). Inside OSGi the
+ * JAXB implementation is found through this bundle's class loader (thread context class loader around the JAXB
+ * calls). DTDs and external entities are refused; a file that is not a complete, valid backup is rejected with a
+ * {@link BadBackupException}.
  */
 final class BackupCodec {
 
-    private final JAXBContext jaxb;
+    /** Made on first use: {@link #jaxb()}. */
+    private volatile JAXBContext jaxb;
     /**
      * One StAX factory for every read (DTDs and external entities off): looking one up per file cost a service
      * loader search each, with 20,000 files read at start.
@@ -35,26 +39,30 @@ final class BackupCodec {
         xmlInput = XMLInputFactory.newFactory();
         xmlInput.setProperty(XMLInputFactory.SUPPORT_DTD, false);
         xmlInput.setProperty(XMLInputFactory.IS_SUPPORTING_EXTERNAL_ENTITIES, false);
-        try {
-            jaxb = withBundleLoader(() -> JAXBContext.newInstance(BackupXml.class));
-        } catch (Exception | LinkageError e) {
-            throw new IllegalStateException("JAXB is not available: " + e, e);
-        }
-        warmUp();
     }
 
-    /**
-     * One write and read now, on activation: JAXB's first use costs hundreds of milliseconds of CPU, which must not
-     * fall into the first minutes of traffic (when devices are created and saved).
-     */
-    private void warmUp() {
-        ComponentBackup sample = new ComponentBackup("warm-up", ComponentKind.DEVICE, "", "", "", "",
-                Map.of("k", "v"), "", List.of("t"), Instant.EPOCH, Map.of("k", "v"), Instant.EPOCH);
-        try {
-            read(write(sample));
-        } catch (BadBackupException e) {
-            throw new IllegalStateException("JAXB cannot read its own backup: " + e.getMessage(), e);
+    /** @return JAXB's context for {@link BackupXml}, made on the first call */
+    private JAXBContext jaxb() {
+        JAXBContext c = jaxb;
+        if (c == null) {
+            synchronized (this) {
+                c = jaxb;
+                if (c == null) {
+                    try {
+                        c = withBundleLoader(() -> JAXBContext.newInstance(BackupXml.class));
+                    } catch (Exception | LinkageError e) {
+                        throw new IllegalStateException("JAXB is not available: " + e, e);
+                    }
+                    jaxb = c;
+                }
+            }
         }
+        return c;
+    }
+
+    /** @return whether JAXB's context has been made (tests: an ordinary start and restore make none) */
+    boolean jaxbMade() {
+        return jaxb != null;
     }
 
     /** @return the backup's file content (written without JAXB: {@link BackupXmlWriter}, the same bytes) */
@@ -79,7 +87,7 @@ final class BackupCodec {
         b.state().forEach((k, v) -> x.state.add(new BackupXml.Entry(k, v)));
         try {
             return withBundleLoader(() -> {
-                Marshaller m = jaxb.createMarshaller();
+                Marshaller m = jaxb().createMarshaller();
                 m.setProperty(Marshaller.JAXB_FORMATTED_OUTPUT, true);
                 m.setProperty(Marshaller.JAXB_ENCODING, "UTF-8");
                 ByteArrayOutputStream out = new ByteArrayOutputStream();
@@ -109,7 +117,7 @@ final class BackupCodec {
                 reader = xmlInput.createXMLStreamReader(new ByteArrayInputStream(xml));
             }
             x = withBundleLoader(() -> {
-                Unmarshaller u = jaxb.createUnmarshaller();
+                Unmarshaller u = jaxb().createUnmarshaller();
                 u.setEventHandler(event -> false); // any error ends the read
                 return u.unmarshal(reader, BackupXml.class).getValue();
             });
