@@ -72,6 +72,26 @@ class TrackedPlacementsTest {
         }
     }
 
+    @Test
+    void aLookupReadsNoServicePropertiesOnlyAChangeDoes() {
+        for (int i = 0; i < 40; i++) {
+            register("light-" + i, "room-" + i);
+        }
+        ServiceRegistration<?> lamp = register("lamp", "kitchen");
+        try (TrackedPlacements placements = new TrackedPlacements(context)) {
+            long before = placements.propertyReads();
+            for (int motion = 0; motion < 1_000; motion++) { // Follow Me Light: the room of every light per motion
+                for (int i = 0; i < 40; i++) {
+                    assertEquals(Optional.of("room-" + i), placements.roomOf("light-" + i));
+                }
+            }
+            assertEquals(0, placements.propertyReads() - before, "property reads for 40,000 room lookups");
+            lamp.setProperties(props("lamp", "hall"));
+            assertEquals(Optional.of("hall"), placements.roomOf("lamp"));
+            assertEquals(1, placements.propertyReads() - before, "property reads for one room change");
+        }
+    }
+
     private ServiceRegistration<?> register(String uid, String room) {
         Device d = (Device) Proxy.newProxyInstance(Device.class.getClassLoader(), new Class<?>[] {Device.class},
                 (proxy, method, args) -> switch (method.getName()) {
