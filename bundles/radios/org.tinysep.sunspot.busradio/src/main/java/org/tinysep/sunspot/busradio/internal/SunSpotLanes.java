@@ -34,7 +34,7 @@ final class SunSpotLanes {
 
     /** On a link's receive thread: queues the packet for the listeners (or gives it to them now, without one). */
     void received(OrderedDelivery delivery, int sensorType, byte[] payload, Instant at) {
-        PacketJob job = new PacketJob(new Packet(sensorType, payload, at));
+        PacketJob job = new PacketJob(new Packet(sensorType, payload, at), lanes); // the listeners connected now
         if (delivery == null) {
             OrderedDelivery.inline(job);
         } else {
@@ -65,14 +65,22 @@ final class SunSpotLanes {
         lanes = List.copyOf(rest);
     }
 
-    private final class PacketJob extends OrderedDelivery.Job<Packet> {
-        PacketJob(Packet item) {
+    /**
+     * A packet for the listeners connected when it was received (as on the receive thread before the ordered
+     * queue): one that connects while the packet waits in the queue does not get it, so "packets" (counted when
+     * handed on) and what a listener connected after that count hears agree.
+     */
+    private static final class PacketJob extends OrderedDelivery.Job<Packet> {
+        private final List<Lane> targets;
+
+        PacketJob(Packet item, List<Lane> targets) {
             super(item);
+            this.targets = targets;
         }
 
         @Override
         protected List<Lane> begin() {
-            return lanes;
+            return targets;
         }
 
         @Override
