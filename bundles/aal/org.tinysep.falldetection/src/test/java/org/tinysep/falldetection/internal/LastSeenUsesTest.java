@@ -3,26 +3,22 @@ package org.tinysep.falldetection.internal;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.lang.reflect.Field;
 import java.lang.reflect.Proxy;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Hashtable;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.apache.felix.framework.FrameworkFactory;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.osgi.framework.BundleContext;
-import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceRegistration;
-import org.osgi.framework.launch.Framework;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.DeviceProperties;
 import org.tinysep.api.sensor.MovementProvider;
+import org.tinysep.device.support.testing.RealFelix;
 
 /**
  * Issue 29, item 4: Fall Detection connects to every movement sensor. Felix keeps each bundle's service uses in
@@ -34,36 +30,20 @@ class LastSeenUsesTest {
 
     @TempDir
     Path storage;
-    private Framework fw;
+    private RealFelix fw;
     private BundleContext context;
 
     @BeforeEach
     void start() throws Exception {
-        fw = new FrameworkFactory().newFramework(Map.of(Constants.FRAMEWORK_STORAGE, storage.toString(),
-                Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT));
-        fw.start();
-        context = fw.getBundleContext();
+        fw = new RealFelix(storage);
+        context = fw.context();
     }
 
     @AfterEach
     void stop() throws Exception {
-        fw.stop();
-        fw.waitForStop(30_000);
+        fw.close();
     }
 
-    /** @return the service uses Felix holds for all bundles: the entries its registry searches per use */
-    private int usesInRegistry() throws ReflectiveOperationException {
-        Field registryField = fw.getClass().getDeclaredField("m_registry");
-        registryField.setAccessible(true);
-        Object registry = registryField.get(fw);
-        Field inUse = registry.getClass().getDeclaredField("m_inUseMap");
-        inUse.setAccessible(true);
-        int total = 0;
-        for (Object usages : ((Map<?, ?>) inUse.get(registry)).values()) {
-            total += ((Object[]) usages).length;
-        }
-        return total;
-    }
 
     private final AtomicInteger connected = new AtomicInteger();
 
@@ -106,15 +86,15 @@ class LastSeenUsesTest {
         int n = 500;
         List<ServiceRegistration<?>> regs = new ArrayList<>();
         try (LastSeenWatch watch = new LastSeenWatch(context)) {
-            int base = usesInRegistry();
+            int base = fw.usesInRegistry();
             for (int i = 0; i < n; i++) {
                 regs.add(sensor(i));
             }
-            int atN = usesInRegistry();
+            int atN = fw.usesInRegistry();
             for (int i = n; i < 2 * n; i++) {
                 regs.add(sensor(i));
             }
-            int at2N = usesInRegistry();
+            int at2N = fw.usesInRegistry();
             assertEquals(2 * n, connected.get(), "every sensor is connected");
             assertTrue(atN - base <= 2, "uses held after " + n + " sensors: " + (atN - base) + " (base " + base + ")");
             assertEquals(atN, at2N, "uses held after " + 2 * n + " sensors vs after " + n);

@@ -3,22 +3,19 @@ package org.tinysep.houseinformation.internal;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.lang.reflect.Field;
 import java.lang.reflect.Proxy;
 import java.nio.file.Path;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Map;
-import org.apache.felix.framework.FrameworkFactory;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.osgi.framework.BundleContext;
-import org.osgi.framework.Constants;
-import org.osgi.framework.launch.Framework;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.DeviceProperties;
+import org.tinysep.device.support.testing.RealFelix;
 
 /**
  * Issue 29, item 4: {@code tinysep:rooms} reads every placed device's name. A use given back with
@@ -30,36 +27,20 @@ class RoomsCommandUsesTest {
 
     @TempDir
     Path storage;
-    private Framework fw;
+    private RealFelix fw;
     private BundleContext context;
 
     @BeforeEach
     void start() throws Exception {
-        fw = new FrameworkFactory().newFramework(Map.of(Constants.FRAMEWORK_STORAGE, storage.toString(),
-                Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT));
-        fw.start();
-        context = fw.getBundleContext();
+        fw = new RealFelix(storage);
+        context = fw.context();
     }
 
     @AfterEach
     void stop() throws Exception {
-        fw.stop();
-        fw.waitForStop(30_000);
+        fw.close();
     }
 
-    /** @return the service uses Felix holds for all bundles (count 0 included): what each unregistration scans */
-    private int usesInRegistry() throws ReflectiveOperationException {
-        Field registryField = fw.getClass().getDeclaredField("m_registry");
-        registryField.setAccessible(true);
-        Object registry = registryField.get(fw);
-        Field inUse = registry.getClass().getDeclaredField("m_inUseMap");
-        inUse.setAccessible(true);
-        int total = 0;
-        for (Object usages : ((Map<?, ?>) inUse.get(registry)).values()) {
-            total += ((Object[]) usages).length;
-        }
-        return total;
-    }
 
     private void device(int i, String room) {
         Device d = (Device) Proxy.newProxyInstance(getClass().getClassLoader(), new Class<?>[] {Device.class},
@@ -81,10 +62,10 @@ class RoomsCommandUsesTest {
         for (int i = 0; i < n; i++) {
             device(i, i % 2 == 0 ? "kitchen" : "bath");
         }
-        int base = usesInRegistry();
+        int base = fw.usesInRegistry();
         Map<String, List<String>> byRoom = ShellFunctions.devicesByRoom(context);
         assertEquals(n / 2, byRoom.get("kitchen").size());
         assertTrue(byRoom.get("bath").contains("Sensor 1"), byRoom.get("bath").toString());
-        assertEquals(base, usesInRegistry(), "uses left in the registry by reading " + n + " devices' names");
+        assertEquals(base, fw.usesInRegistry(), "uses left in the registry by reading " + n + " devices' names");
     }
 }

@@ -3,20 +3,16 @@ package org.tinysep.device.support.lifecycle;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.lang.reflect.Field;
 import java.nio.file.Path;
-import java.util.Map;
-import org.apache.felix.framework.FrameworkFactory;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.osgi.framework.BundleContext;
-import org.osgi.framework.Constants;
-import org.osgi.framework.launch.Framework;
 import org.tinysep.api.device.Connection;
 import org.tinysep.api.device.Provider;
 import org.tinysep.device.support.rooms.TrackedPlacements;
+import org.tinysep.device.support.testing.RealFelix;
 
 /**
  * Issue 29, item 4: creating n devices must cost the same per device at n and 2n. In a real Felix, n bus devices
@@ -30,21 +26,18 @@ class RegistryUsesTest {
 
     @TempDir
     Path storage;
-    private Framework fw;
+    private RealFelix fw;
     private BundleContext context;
 
     @BeforeEach
     void start() throws Exception {
-        fw = new FrameworkFactory().newFramework(Map.of(Constants.FRAMEWORK_STORAGE, storage.toString(),
-                Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT));
-        fw.start();
-        context = fw.getBundleContext();
+        fw = new RealFelix(storage);
+        context = fw.context();
     }
 
     @AfterEach
     void stop() throws Exception {
-        fw.stop();
-        fw.waitForStop(30_000);
+        fw.close();
     }
 
     /** A provider interface of the test: a beacon tells its listeners "seen". */
@@ -154,19 +147,6 @@ class RegistryUsesTest {
         return java.lang.management.ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime();
     }
 
-    /** @return the service uses Felix holds for all bundles: the entries its registry searches per use */
-    private int usesInRegistry() throws ReflectiveOperationException {
-        Field registryField = fw.getClass().getDeclaredField("m_registry");
-        registryField.setAccessible(true);
-        Object registry = registryField.get(fw);
-        Field inUse = registry.getClass().getDeclaredField("m_inUseMap");
-        inUse.setAccessible(true);
-        int total = 0;
-        for (Object usages : ((Map<?, ?>) inUse.get(registry)).values()) {
-            total += ((Object[]) usages).length;
-        }
-        return total;
-    }
 
     /** Creates {@code n} bus devices (and so n followers and n connections of the watcher); @return uses after */
     private int usesAfterCreating(BusDriver bus, TrackedPlacements names, int from, int n)
@@ -175,7 +155,7 @@ class RegistryUsesTest {
             bus.add("bus-" + i);
             assertEquals("Bus bus-" + i, names.nameOf("bus-" + i));
         }
-        return usesInRegistry();
+        return fw.usesInRegistry();
     }
 
     @Test
@@ -185,7 +165,7 @@ class RegistryUsesTest {
         FollowerDriver followers = new FollowerDriver(context);
         WatcherDriver watcher = new WatcherDriver(context);
         try (TrackedPlacements names = new TrackedPlacements(context)) {
-            int base = usesInRegistry();
+            int base = fw.usesInRegistry();
             long c0 = cpuNanos();
             int atN = usesAfterCreating(bus, names, 0, n);
             long c1 = cpuNanos();
@@ -226,7 +206,7 @@ class RegistryUsesTest {
             followers.shut();
             bus.close();
         }
-        assertEquals(0, usesInRegistry(), "every use is given back after the stop");
+        assertEquals(0, fw.usesInRegistry(), "every use is given back after the stop");
     }
 
     @Test
