@@ -80,6 +80,37 @@ class SlowListenerTest {
         assertTrue(delivery.quarantines() >= 1);
     }
 
+    /**
+     * A packet goes to the listeners connected when it was received, as it did on the receive thread before the
+     * ordered queue: a listener that connects while the packet waits in the queue (already counted in "packets")
+     * does not get it. Integration test {@code SunSpotBusRadioTest} connects right after the count and expects
+     * exactly what was sent afterwards.
+     */
+    @Test
+    void aListenerConnectedWhileAPacketWaitsInTheQueueDoesNotGetIt() throws Exception {
+        try (OrderedDelivery patient = new OrderedDelivery(bus.context, "The Sun SPOT radio", Duration.ofSeconds(30),
+                64, 64)) {
+            bus.nodes.delivery(patient);
+            bus.feed(frame(SPOT_A, new TemperatureStatus(20.0)), UDP);
+            bus.feed(frame(SPOT_B, new TemperatureStatus(20.0)), UDP);
+            assertTrue(patient.awaitDelivered(TestBus.TIMEOUT));
+            CountDownLatch busy = new CountDownLatch(1);
+            bus.node(SPOT_A).connect((src, type, payload, at) -> { // holds the dispatcher while B's packet waits
+                busy.countDown();
+                awaitRelease();
+            });
+            bus.feed(frame(SPOT_A, new TemperatureStatus(21.0)), UDP);
+            assertTrue(busy.await(10, TimeUnit.SECONDS), "the dispatcher is inside A's listener");
+            bus.feed(frame(SPOT_B, TemperatureStatus.ofTenths(1)), UDP); // received, counted, waiting in the queue
+            List<Integer> heard = new CopyOnWriteArrayList<>();
+            bus.node(SPOT_B).connect((src, type, payload, at) -> heard.add(tenths(payload)));
+            release.countDown();
+            bus.feed(frame(SPOT_B, TemperatureStatus.ofTenths(2)), UDP); // received after the listener connected
+            assertTrue(patient.awaitDelivered(TestBus.TIMEOUT));
+            assertEquals(List.of(2), heard, "what a listener connected after packet 1 was received hears");
+        }
+    }
+
     private static int tenths(byte[] payload) {
         try {
             return ((TemperatureStatus) SunSpotPayloads.decode(payload)).tenths();
