@@ -8,7 +8,6 @@ import org.slf4j.LoggerFactory;
 import org.tinysep.api.bus.BusRadioAmicaListener;
 import org.tinysep.api.bus.BusRadioAmicaProvider;
 import org.tinysep.api.device.Connection;
-import org.tinysep.api.device.Device;
 import org.tinysep.device.support.delivery.GuardedLane;
 import org.tinysep.device.support.delivery.OrderedDelivery;
 
@@ -140,10 +139,7 @@ final class BusLanes {
 
         @Override
         protected String describe() {
-            String name = listener instanceof Device d ? "'" + d.name() + "'" : listener.getClass().getName();
-            int lambda = name.indexOf("$$");
-            return "The listener " + (lambda > 0 ? name.substring(name.lastIndexOf('.', lambda) + 1, lambda) : name)
-                    + " of " + node;
+            return listenerWords(listener, node);
         }
 
         /** The listener leaves: what was queued for it and not yet given is held for its replacement, first. */

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import org.tinysep.api.device.Device;
 import org.tinysep.api.log.EventKind;
 
 /**
@@ -155,6 +156,17 @@ public abstract class GuardedLane<T> {
         List<OrderedDelivery.Job<T>> left = new ArrayList<>(backlog);
         backlog.clear();
         return left;
+    }
+
+    /**
+     * @return a listener in plain words for the lane's {@link #describe()}: a device by its name, anything else by
+     *         its class (a lambda by the class that made it), e.g. {@code "The listener 'Movement 1.17' of AmICA node 1.17"}
+     */
+    protected static String listenerWords(Object listener, String node) {
+        String name = listener instanceof Device d ? "'" + d.name() + "'" : listener.getClass().getName();
+        int lambda = name.indexOf("$$");
+        return "The listener " + (lambda > 0 ? name.substring(name.lastIndexOf('.', lambda) + 1, lambda) : name)
+                + " of " + node;
     }
 
     protected final synchronized boolean isClosed() {

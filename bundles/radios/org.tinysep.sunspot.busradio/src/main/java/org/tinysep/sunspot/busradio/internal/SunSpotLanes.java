@@ -6,7 +6,6 @@ import java.util.List;
 import org.tinysep.api.bus.BusRadioSunSpotListener;
 import org.tinysep.api.bus.BusRadioSunSpotProvider;
 import org.tinysep.api.device.Connection;
-import org.tinysep.api.device.Device;
 import org.tinysep.device.support.delivery.GuardedLane;
 import org.tinysep.device.support.delivery.OrderedDelivery;
 
@@ -103,10 +102,7 @@ final class SunSpotLanes {
 
         @Override
         protected String describe() {
-            String name = listener instanceof Device d ? "'" + d.name() + "'" : listener.getClass().getName();
-            int lambda = name.indexOf("$$");
-            return "The listener " + (lambda > 0 ? name.substring(name.lastIndexOf('.', lambda) + 1, lambda) : name)
-                    + " of " + node;
+            return listenerWords(listener, node);
         }
 
         @Override
