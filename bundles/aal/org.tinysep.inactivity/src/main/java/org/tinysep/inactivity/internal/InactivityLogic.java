@@ -56,11 +56,14 @@ final class InactivityLogic {
     /**
      * An activity happened. A report older than the last activity is a late delivery (a bus device's hand-over,
      * lock-step frames stamped a tick late) and tells nothing new: ignored. Fresh activity is never older, since
-     * the caller re-bases on the platform's {@code now} first ({@link #rebase}). @return the new state if it
-     * changed (an alert clears)
+     * the caller re-bases on the platform's {@code now} first ({@link #rebase}). An activity without a room (a
+     * pendant whose wearer has not been seen in a room yet, an unplaced sensor) at the same instant as a last
+     * activity with one tells nothing new either, and less about where: the room's stays, so two reports of one
+     * moment give the same last activity in either order. @return the new state if it changed (an alert clears)
      */
     Optional<InactivityState> activity(Activity a) {
-        if (last != null && a.at().isBefore(last.at())) {
+        if (last != null && (a.at().isBefore(last.at())
+                || a.at().equals(last.at()) && a.roomUid().isEmpty() && !last.roomUid().isEmpty())) {
             return Optional.empty();
         }
         last = a;

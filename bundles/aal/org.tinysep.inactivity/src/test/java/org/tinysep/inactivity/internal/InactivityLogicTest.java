@@ -141,6 +141,26 @@ class InactivityLogicTest {
     }
 
     @Test
+    void anActivityWithoutARoomAtTheSameInstantKeepsTheRoomsInEitherOrder() {
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        Activity pendant = new Activity("", "unknown room", "Anna's pendant moved", at(8, 0), Duration.ofHours(2));
+        logic.activity(in(KITCHEN, at(8, 0)));
+        logic.activity(pendant); // the pendant's report of the same moment, taken second
+        assertEquals("Kitchen", logic.lastActivity().orElseThrow().roomName());
+        assertEquals(at(8, 0).plus(LIMITS.limitFor(KITCHEN)), logic.deadline().orElseThrow(), "the kitchen's limit");
+
+        InactivityLogic other = new InactivityLogic(Duration.ofMinutes(120), T0);
+        other.occupancy(Occupancy.OCCUPIED, T0);
+        other.activity(pendant); // taken first
+        other.activity(in(KITCHEN, at(8, 0)));
+        assertEquals(logic.lastActivity(), other.lastActivity(), "the same last activity in either order");
+
+        Activity later = new Activity("", "unknown room", "Anna's pendant moved", at(8, 1), Duration.ofHours(2));
+        logic.activity(later); // a later one without a room still counts
+        assertEquals(later, logic.lastActivity().orElseThrow());
+    }
+
+    @Test
     void aClockThatWentBackIsRebasedAndTheOlderReportCounts() {
         logic.occupancy(Occupancy.OCCUPIED, T0);
         logic.activity(in(BEDROOM, at(20, 0)));
