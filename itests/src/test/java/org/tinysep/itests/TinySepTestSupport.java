@@ -350,16 +350,21 @@ public abstract class TinySepTestSupport {
      * @throws AssertionError after {@code timeout}
      */
     protected void await(Duration timeout, BooleanSupplier condition, String what) {
+        await(timeout, condition, () -> what);
+    }
+
+    /** As {@link #await(Duration, BooleanSupplier, String)}; {@code what} is asked at the timeout (what was seen). */
+    protected void await(Duration timeout, BooleanSupplier condition, java.util.function.Supplier<String> what) {
         long deadline = System.nanoTime() + timeout.toNanos();
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() - deadline > 0) {
-                fail("Timed out after " + timeout.toMillis() + " ms waiting for " + what);
+                fail("Timed out after " + timeout.toMillis() + " ms waiting for " + what.get());
             }
             try {
                 Thread.sleep(20);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
-                fail("Interrupted waiting for " + what);
+                fail("Interrupted waiting for " + what.get());
             }
         }
     }
