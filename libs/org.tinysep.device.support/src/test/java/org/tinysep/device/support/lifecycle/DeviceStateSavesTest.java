@@ -3,21 +3,8 @@ package org.tinysep.device.support.lifecycle;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.time.Duration;
 import java.time.Instant;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Map;
-import java.util.Optional;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CompletionStage;
 import org.junit.jupiter.api.Test;
-import org.tinysep.api.backup.BackupStore;
-import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.device.support.logs.RecordingLogs;
-import org.tinysep.device.support.rooms.RoomDirectory;
-import org.tinysep.device.support.testing.FakeHouse;
-import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * Issue 29, item 1: a busy sensor's runtime state is saved only when it changes what a restart needs; the last
@@ -25,69 +12,13 @@ import org.tinysep.device.support.time.PlatformClock;
  */
 class DeviceStateSavesTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    private static final Instant T0 = SavedSensor.T0;
 
-    /** A node's device: every frame moves its last seen time; {@code battery} is state a restart needs. */
-    private static final class Sensor extends AbstractDevice {
-        volatile Instant lastSeen = T0;
-        volatile String battery = "3000";
-
-        Sensor(DriverContext c) {
-            super(c, "dev-1", "Sensor", "Sensor 1");
-        }
-
-        @Override
-        protected Instant lastSeen() {
-            return lastSeen;
-        }
-
-        @Override
-        protected Map<String, String> backupState() {
-            return Map.of("batteryMillivolts", battery);
-        }
-
-        void frame(Instant at) {
-            lastSeen = at;
-            stateChanged();
-        }
-    }
-
-    /** Counts the saves (each one a JAXB write and an fsync in the real store). */
-    private static final class Store implements BackupStore {
-        final List<ComponentBackup> saved = new ArrayList<>();
-
-        @Override
-        public CompletionStage<Void> save(ComponentBackup backup) {
-            saved.add(backup);
-            return CompletableFuture.completedFuture(null);
-        }
-
-        @Override
-        public boolean flush(Duration timeout) {
-            return true;
-        }
-
-        @Override
-        public Optional<ComponentBackup> find(String uid) {
-            return Optional.empty();
-        }
-
-        @Override
-        public List<ComponentBackup> devicesOf(String driverUid) {
-            return List.of();
-        }
-
-        @Override
-        public void delete(String uid) {
-        }
-    }
-
-    private final Store store = new Store();
+    private final CountingStore store = new CountingStore();
     private long nanos;
 
-    private Sensor sensor() {
-        Sensor s = new Sensor(new DriverContext(null, "drv", "AmicaMovement", new RecordingLogs(() -> T0).reporter(),
-                new PlatformClock(() -> T0), RoomDirectory.of(new FakeHouse()), Backups.of(store)));
+    private SavedSensor sensor() {
+        SavedSensor s = new SavedSensor(SavedSensor.context(store), 1);
         s.backupSide().nanos(() -> nanos);
         s.backupSide().activate();
         return s;
@@ -95,7 +26,7 @@ class DeviceStateSavesTest {
 
     @Test
     void framesThatMoveOnlyTheLastSeenTimeAreSavedOncePerMinute() {
-        Sensor s = sensor();
+        SavedSensor s = sensor();
         for (int i = 1; i <= 300; i++) { // 10 minutes, one frame every 2 s
             nanos += 2_000_000_000L;
             s.frame(T0.plusSeconds(2L * i));
@@ -110,7 +41,7 @@ class DeviceStateSavesTest {
 
     @Test
     void stateARestartNeedsIsSavedWithinTenSeconds() {
-        Sensor s = sensor();
+        SavedSensor s = sensor();
         nanos += 11_000_000_000L;
         s.frame(T0.plusSeconds(11));
         int before = store.saved.size();

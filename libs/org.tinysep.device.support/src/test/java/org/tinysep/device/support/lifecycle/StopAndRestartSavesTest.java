@@ -2,23 +2,13 @@ package org.tinysep.device.support.lifecycle;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.Optional;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CompletionStage;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.tinysep.api.backup.BackupStore;
 import org.tinysep.api.backup.ComponentBackup;
-import org.tinysep.device.support.logs.RecordingLogs;
-import org.tinysep.device.support.rooms.RoomDirectory;
-import org.tinysep.device.support.testing.FakeHouse;
-import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * Issue 29, item 4: an orderly stop and a restart write only the backups that changed. Stopping 20,000 unchanged
@@ -27,76 +17,17 @@ import org.tinysep.device.support.time.PlatformClock;
  */
 class StopAndRestartSavesTest {
 
-    private static final Instant T0 = Instant.parse("2026-11-22T10:00:00Z");
+    private static final Instant T0 = SavedSensor.T0;
 
-    /** A node's device with a last seen time and state a restart needs, both restored from its backup. */
-    private static final class Sensor extends AbstractDevice {
-        volatile Instant lastSeen = T0;
-        volatile String battery = "3000";
-
-        Sensor(DriverContext c, int i) {
-            super(c, "dev-" + i, "Sensor", "Sensor " + i);
-        }
-
-        @Override
-        protected Instant lastSeen() {
-            return lastSeen;
-        }
-
-        @Override
-        protected Map<String, String> backupState() {
-            return Map.of("batteryMillivolts", battery);
-        }
-
-        @Override
-        protected void onRestore(ComponentBackup saved) {
-            lastSeen = saved.lastSeen();
-            battery = saved.state().get("batteryMillivolts");
-        }
-    }
-
-    /** The store: counts the saves (each one a JAXB write and part of an fsync batch in the real one). */
-    private static final class Store implements BackupStore {
-        final List<ComponentBackup> saved = new ArrayList<>();
-        volatile boolean failing;
-
-        @Override
-        public CompletionStage<Void> save(ComponentBackup backup) {
-            saved.add(backup);
-            return failing ? CompletableFuture.failedFuture(new IllegalStateException("disk full"))
-                    : CompletableFuture.completedFuture(null);
-        }
-
-        @Override
-        public boolean flush(Duration timeout) {
-            return true;
-        }
-
-        @Override
-        public Optional<ComponentBackup> find(String uid) {
-            return saved.stream().filter(b -> b.uid().equals(uid)).reduce((a, b) -> b);
-        }
-
-        @Override
-        public List<ComponentBackup> devicesOf(String driverUid) {
-            return List.of();
-        }
-
-        @Override
-        public void delete(String uid) {
-        }
-    }
-
-    private final Store store = new Store();
+    private final CountingStore store = new CountingStore();
 
     private DriverContext context() {
-        return new DriverContext(null, "drv", "AmicaMovement", new RecordingLogs(() -> T0).reporter(),
-                new PlatformClock(() -> T0), RoomDirectory.of(new FakeHouse()), Backups.of(store));
+        return SavedSensor.context(store);
     }
 
     /** A device as its driver makes it: restored from its backup if there is one, then activated. */
-    private Sensor start(DriverContext c, int i) {
-        Sensor s = new Sensor(c, i);
+    private SavedSensor start(DriverContext c, int i) {
+        SavedSensor s = new SavedSensor(c, i);
         store.find(s.uid()).ifPresent(s::restore);
         s.backupSide().activate();
         return s;
@@ -106,14 +37,14 @@ class StopAndRestartSavesTest {
     @ValueSource(ints = {1_000, 2_000})
     void aStopAndARestartOfUnchangedDevicesWriteNothing(int n) {
         DriverContext c = context();
-        List<Sensor> first = new ArrayList<>();
+        List<SavedSensor> first = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             first.add(start(c, i));
         }
         assertEquals(n, store.saved.size(), "each new device is saved once");
         first.forEach(AbstractDevice::dispose); // the orderly stop
         assertEquals(n, store.saved.size(), "saves by the stop of " + n + " unchanged devices");
-        List<Sensor> again = new ArrayList<>();
+        List<SavedSensor> again = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             again.add(start(c, i)); // the restart: each restored from its backup
         }
@@ -126,7 +57,7 @@ class StopAndRestartSavesTest {
     @ValueSource(ints = {1_000, 2_000})
     void theStopSavesExactlyTheDevicesThatChanged(int n) {
         DriverContext c = context();
-        List<Sensor> all = new ArrayList<>();
+        List<SavedSensor> all = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             all.add(start(c, i));
         }
@@ -145,7 +76,7 @@ class StopAndRestartSavesTest {
     @Test
     void aSaveThatFailedIsWrittenAgainAtTheStop() {
         store.failing = true;
-        Sensor s = start(context(), 0);
+        SavedSensor s = start(context(), 0);
         store.failing = false;
         s.dispose();
         assertEquals(2, store.saved.size(), "the failed save is not taken for one on disk");
