@@ -73,5 +73,8 @@ class JvmOptionsTest {
         // session 33: malloc's freed memory goes back to the system (about 2.5 MB idle)
         long trim = Long.parseLong(set.getOrDefault("TrimNativeHeapInterval", "0"));
         assertTrue(trim > 0 && trim <= 60_000, "the native heap is trimmed periodically: TrimNativeHeapInterval=" + trim);
+        // session 33: C1 compiles later (once-used start code stays interpreted: a smaller code cache)
+        double scaling = Double.parseDouble(set.getOrDefault("CompileThresholdScaling", "1.0"));
+        assertTrue(scaling > 1.0, "C1 compiles later than the JDK's default: CompileThresholdScaling=" + scaling);
     }
 }
