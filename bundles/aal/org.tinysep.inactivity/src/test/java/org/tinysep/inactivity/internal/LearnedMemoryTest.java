@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import org.tinysep.api.sensor.presence.PresenceKind;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
@@ -163,6 +164,19 @@ class LearnedMemoryTest {
         LearnedMemory.Content c = memory.load();
         assertEquals(List.of(up), c.memory().sightings());
         assertEquals(List.of(waiting), c.pending());
+        assertEquals(0, c.damaged());
+    }
+
+    /** Issue 28, session 33: a waiting flush OFF keeps the device of the activity before it across the memory. */
+    @Test
+    void aWaitingFlushOffKeepsTheDeviceBeforeIt() throws IOException {
+        LearnedMemory memory = new LearnedMemory(dir.resolve("learned-history.txt"));
+        HistoryFromLog.Raw flushOff = new HistoryFromLog.Raw(at(0, 1, 41), "flush", false, false, false,
+                PresenceKind.FLUSH, "bed\tmat");
+        HistoryFromLog.Raw plain = new HistoryFromLog.Raw(at(0, 1, 40), "bed\tmat", true, false);
+        memory.save(new HistoryLearner.Memory(List.of(), List.of(), null), List.of(plain, flushOff), at(0, 4, 0));
+        LearnedMemory.Content c = memory.load();
+        assertEquals(List.of(plain, flushOff), c.pending());
         assertEquals(0, c.damaged());
     }
 }
