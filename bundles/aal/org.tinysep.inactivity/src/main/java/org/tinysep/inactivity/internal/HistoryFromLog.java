@@ -97,7 +97,7 @@ final class HistoryFromLog {
                     synchronized (this) {
                         pending.addAll(c.pending());
                     }
-                    from = c.covered() == null ? from : c.covered().plusNanos(1);
+                    from = c.covered() == null ? from : latest(c.covered(), c.memory(), c.pending()).plusNanos(1);
                     remembered = "learning from its own memory (" + c.memory().sightings().size() + " activities, "
                             + (c.damaged() > 0 ? c.damaged() + " damaged lines skipped, " : "") + "saved at "
                             + c.covered() + ") and ";
@@ -129,8 +129,31 @@ final class HistoryFromLog {
             }
             waiting = List.copyOf(pending);
         }
-        memory.save(learner.memory(), waiting, now);
+        HistoryLearner.Memory m = learner.memory();
+        memory.save(m, waiting, latest(now, m, waiting));
         return true;
+    }
+
+    /**
+     * What the memory covers: the later of the clock and the newest time it holds. The clock when saving can be
+     * behind the history (the platform stopping after its Time Controller, which held virtual time, fell back to the
+     * wall clock; a clock that went back): the log read from that clock on would hand the same activities to the
+     * learner a second time (issue 28, session 33: Ordonez B's platform learned its history twice, and the
+     * duplicates, 0 s apart, counted as quiet periods towards shortening a limit).
+     */
+    static Instant latest(Instant clock, HistoryLearner.Memory m, List<Raw> waiting) {
+        Instant t = clock;
+        for (Sighting s : m.sightings()) {
+            t = s.at().isAfter(t) ? s.at() : t;
+        }
+        for (var a : m.away()) {
+            t = a.to().isAfter(t) ? a.to() : t;
+        }
+        t = m.awaySince() != null && m.awaySince().isAfter(t) ? m.awaySince() : t;
+        for (Raw r : waiting) {
+            t = r.at().isAfter(t) ? r.at() : t;
+        }
+        return t;
     }
 
     private String readLog(EventLog log, Instant from) {
