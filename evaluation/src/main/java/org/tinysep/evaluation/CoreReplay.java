@@ -44,13 +44,24 @@ final class CoreReplay {
      */
     static final boolean FINISHED_BY_ITSELF = !Boolean.getBoolean("deviceOff");
 
-    /** An activity as the detector sees it. */
-    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
+    /**
+     * An activity as the detector sees it.
+     *
+     * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
+     *             turning ON "sat down" — by the type, as the platform's {@code ActivityFactory} does (by its name,
+     *             session 33 found, "Bedroom door (PIR)" was a bed: every bedroom movement was sleep, by day too)
+     */
+    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type) {
+        /** An activity of a node that is no bed or seat mat. */
+        Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
+            this(at, room, what, outerClose, outerDoor, AmicaNodeType.MOVEMENT);
+        }
+
         Sighting sighting() {
             boolean on = what.endsWith(" on");
+            boolean bed = type == AmicaNodeType.PRESENCE_BED;
             return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
-                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED,
-                    !on && what.startsWith("Bed") && UP_FROM_BED);
+                    on && bed, on && type == AmicaNodeType.PRESENCE_SEAT && SEATED, !on && bed && UP_FROM_BED);
         }
     }
 
@@ -85,7 +96,8 @@ final class CoreReplay {
                 continue; // the device finishing by itself: the person was last seen elsewhere (ActivityFactory)
             }
             boolean outer = "OUTER".equals(n.doorKind());
-            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer));
+            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
+                    n.type()));
         }
         return out;
     }
