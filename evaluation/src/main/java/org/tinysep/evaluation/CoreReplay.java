@@ -45,6 +45,13 @@ final class CoreReplay {
     static final boolean FINISHED_BY_ITSELF = !Boolean.getBoolean("deviceOff");
 
     /**
+     * {@code -Drepeats=true}: a door, window or mat recorded in the state it already had (Ordonez B: seat ON 12:41:45,
+     * seat ON again 12:56:27, no OFF between) counts as activity, as in the core before session 33. The platform's
+     * devices tell changes only ({@code SensorDevice}: "listeners hear changes only"), so by default it does not.
+     */
+    static final boolean REPEATS_DROPPED = !Boolean.getBoolean("repeats");
+
+    /**
      * An activity as the detector sees it.
      *
      * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
@@ -86,10 +93,14 @@ final class CoreReplay {
     /** @return the events that are activities, in time order */
     List<Act> acts(List<SensorEvent> events) {
         List<Act> out = new ArrayList<>();
+        Map<String, Boolean> state = new HashMap<>();
         for (SensorEvent e : events) {
             NodeSpec n = nodes.get(e.sensor());
             if (n == null || (n.isMotion() && !e.on())) {
                 continue;
+            }
+            if (!n.isMotion() && REPEATS_DROPPED && Boolean.valueOf(e.on()).equals(state.put(e.sensor(), e.on()))) {
+                continue; // the same state again (the recording lost the change between): the device tells changes only
             }
             if (FINISHED_BY_ITSELF && !e.on() && !out.isEmpty() && isDevice(n)
                     && !out.get(out.size() - 1).room().equals(n.room())) {
