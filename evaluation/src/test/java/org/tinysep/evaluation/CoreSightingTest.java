@@ -46,7 +46,8 @@ class CoreSightingTest {
     /**
      * A mat recorded ON twice without an OFF between (Ordonez B, 30 November: seat ON 12:41:45 and again 12:56:27)
      * is one change: the platform's device tells changes only, so the quiet period after the living-room movement at
-     * 12:55:16 is not a sit for the platform and must not be one for the core.
+     * 12:55:16 is not a sit for the platform and must not be one for the core. A sensor's first report in the
+     * recording is its resting state (B's first event, seat ON at 21:14:21, was learned as a 3 h 07 evening sit).
      */
     @Test
     void aMatRecordedInTheStateItHadIsNoActivity() {
@@ -54,15 +55,20 @@ class CoreSightingTest {
                 "Living Room", "", "Seat (Pressure)");
         NodeSpec pir = new NodeSpec("Door Living", NodeSpec.AMICA, AmicaAddress.parse("1.40"), AmicaNodeType.MOVEMENT,
                 "Living Room", "", "Living door (PIR)");
-        Home home = new Home("test", List.of(), List.of(), null, null, List.of(seat, pir));
         LocalDateTime t = LocalDateTime.parse("2012-11-30T12:41:45");
-        List<SensorEvent> events = List.of(new SensorEvent(t, "Seat", "Living", Kind.PRESSURE, true),
+        List<SensorEvent> events = List.of(
+                new SensorEvent(t.minusHours(3), "Seat", "Living", Kind.PRESSURE, false),
+                new SensorEvent(t, "Seat", "Living", Kind.PRESSURE, true),
                 new SensorEvent(t.plusMinutes(13), "Door Living", "Living", Kind.MOTION, true),
-                new SensorEvent(t.plusMinutes(13).plusSeconds(3), "Door Living", "Living", Kind.MOTION,
-                        true),
+                new SensorEvent(t.plusMinutes(13).plusSeconds(3), "Door Living", "Living", Kind.MOTION, true),
                 new SensorEvent(t.plusMinutes(14).plusSeconds(42), "Seat", "Living", Kind.PRESSURE, true));
+        CoreReplay core = new CoreReplay(new Home("test", events, List.of(), null, null, List.of(seat, pir)), true);
         assertEquals(List.of("Seat (Pressure) on", "Living door (PIR) on", "Living door (PIR) on"),
-                new CoreReplay(home, true).acts(events).stream().map(CoreReplay.Act::what).toList(),
-                "a movement sensor's every report counts; the seat's second ON is no change");
+                core.acts(events.subList(1, events.size())).stream().map(CoreReplay.Act::what).toList(),
+                "a stretch starts from the recording's state (seat OFF): its ON counts");
+        assertEquals(List.of("Seat (Pressure) on", "Living door (PIR) on", "Living door (PIR) on"),
+                core.acts(events).stream().map(CoreReplay.Act::what).toList(),
+                "the seat's first report (OFF) is its state; a movement sensor's every report counts; the seat's "
+                        + "second ON is no change");
     }
 }
