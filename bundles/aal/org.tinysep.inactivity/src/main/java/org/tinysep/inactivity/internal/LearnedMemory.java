@@ -20,7 +20,8 @@ import org.tinysep.inactivity.internal.learn.Sighting;
  * UTF-8 lines of tab-separated fields (text escaped: {@code \\ \t \n \r}):
  * <pre>
  * tinysep-learned-history 1
- * covered  &lt;instant&gt;                                 the platform time it was saved: the log is read only after it
+ * covered  &lt;instant&gt;                                 the later of the platform time it was saved and the newest time
+ *                                                   it holds: the log is read only after it
  * S  &lt;at&gt; &lt;room uid&gt; &lt;room name&gt; &lt;room type&gt; &lt;in bed 0|1&gt; &lt;seated 0|1&gt;   a sighting
  * A  &lt;from&gt; &lt;to&gt;                                  a time the flat was empty
  * W  &lt;since&gt;                                        the flat is empty since
