@@ -54,6 +54,14 @@ final class CoreReplay {
     static final boolean REPEATS_DROPPED = !Boolean.getBoolean("repeats");
 
     /**
+     * {@code -DmatState=true} (experiment of session 33, not the detector): an activity (a movement, a door opening)
+     * in a room whose bed or seat mat is ON begins the state that mat gives (asleep, sitting), as if the mat had
+     * just turned ON — the person is on it. The live detector takes the state only from the activity that began the
+     * quiet period.
+     */
+    static final boolean MAT_STATE = Boolean.getBoolean("matState");
+
+    /**
      * An activity as the detector sees it.
      *
      * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
@@ -113,10 +121,26 @@ final class CoreReplay {
                 continue; // the device finishing by itself: the person was last seen elsewhere (ActivityFactory)
             }
             boolean outer = "OUTER".equals(n.doorKind());
+            AmicaNodeType type = MAT_STATE && e.on() && !n.type().isPresence() ? matOn(n.room(), state, n.type())
+                    : n.type();
             out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
-                    n.type()));
+                    type));
         }
         return out;
+    }
+
+    /** @return the type of a bed or seat mat that is ON in {@code room} (the bed first), else {@code otherwise} */
+    private AmicaNodeType matOn(String room, Map<String, Boolean> state, AmicaNodeType otherwise) {
+        AmicaNodeType found = otherwise;
+        for (NodeSpec m : nodes.values()) {
+            if (m.room().equals(room) && Boolean.TRUE.equals(state.get(m.sensor()))) {
+                if (m.type() == AmicaNodeType.PRESENCE_BED) {
+                    return m.type();
+                }
+                found = m.type() == AmicaNodeType.PRESENCE_SEAT ? m.type() : found;
+            }
+        }
+        return found;
     }
 
     /**
