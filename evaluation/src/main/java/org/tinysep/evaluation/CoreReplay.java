@@ -44,13 +44,41 @@ final class CoreReplay {
      */
     static final boolean FINISHED_BY_ITSELF = !Boolean.getBoolean("deviceOff");
 
-    /** An activity as the detector sees it. */
-    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
+    /**
+     * {@code -Drepeats=true}: a door, window or mat recorded in the state it already had (Ordonez B: seat ON 12:41:45,
+     * seat ON again 12:56:27, no OFF between), and its first report in the recording (B: seat ON at 21:14:21, the
+     * recording's first event, was learned as a 3 h 07 evening sit), count as activity, as in the core before session
+     * 33. The platform's devices tell changes only ({@code SensorDevice}: "listeners hear changes only") and their
+     * first report is no activity, so by default neither is.
+     */
+    static final boolean REPEATS_DROPPED = !Boolean.getBoolean("repeats");
+
+    /**
+     * {@code -DmatState=true} (experiment of session 33, not the detector): an activity (a movement, a door opening)
+     * in a room whose bed or seat mat is ON begins the state that mat gives (asleep, sitting), as if the mat had
+     * just turned ON — the person is on it. The live detector takes the state only from the activity that began the
+     * quiet period.
+     */
+    static final boolean MAT_STATE = Boolean.getBoolean("matState");
+
+    /**
+     * An activity as the detector sees it.
+     *
+     * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
+     *             turning ON "sat down" — by the type, as the platform's {@code ActivityFactory} does (by its name,
+     *             session 33 found, "Bedroom door (PIR)" was a bed: every bedroom movement was sleep, by day too)
+     */
+    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type) {
+        /** An activity of a node that is no bed or seat mat. */
+        Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
+            this(at, room, what, outerClose, outerDoor, AmicaNodeType.MOVEMENT);
+        }
+
         Sighting sighting() {
             boolean on = what.endsWith(" on");
+            boolean bed = type == AmicaNodeType.PRESENCE_BED;
             return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
-                    on && what.startsWith("Bed"), on && what.startsWith("Seat") && SEATED,
-                    !on && what.startsWith("Bed") && UP_FROM_BED);
+                    on && bed, on && type == AmicaNodeType.PRESENCE_SEAT && SEATED, !on && bed && UP_FROM_BED);
         }
     }
 
@@ -75,9 +103,17 @@ final class CoreReplay {
     /** @return the events that are activities, in time order */
     List<Act> acts(List<SensorEvent> events) {
         List<Act> out = new ArrayList<>();
+        Map<String, Boolean> state = events.isEmpty() ? new HashMap<>() : stateBefore(events.get(0).time());
         for (SensorEvent e : events) {
             NodeSpec n = nodes.get(e.sensor());
             if (n == null || (n.isMotion() && !e.on())) {
+                continue;
+            }
+            Boolean before = state.put(e.sensor(), e.on());
+            if (!n.isMotion() && REPEATS_DROPPED && (before == null || before == e.on())) {
+                // the recording's first report of a contact or mat is its resting state (the platform's devices say
+                // "first", ActivityFactory ignores it); the same state again (the recording lost the change between)
+                // is no change: the devices tell changes only
                 continue;
             }
             if (FINISHED_BY_ITSELF && !e.on() && !out.isEmpty() && isDevice(n)
@@ -85,9 +121,41 @@ final class CoreReplay {
                 continue; // the device finishing by itself: the person was last seen elsewhere (ActivityFactory)
             }
             boolean outer = "OUTER".equals(n.doorKind());
-            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer));
+            AmicaNodeType type = MAT_STATE && e.on() && !n.type().isPresence() ? matOn(n.room(), state, n.type())
+                    : n.type();
+            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
+                    type));
         }
         return out;
+    }
+
+    /** @return the type of a bed or seat mat that is ON in {@code room} (the bed first), else {@code otherwise} */
+    private AmicaNodeType matOn(String room, Map<String, Boolean> state, AmicaNodeType otherwise) {
+        AmicaNodeType found = otherwise;
+        for (NodeSpec m : nodes.values()) {
+            if (m.room().equals(room) && Boolean.TRUE.equals(state.get(m.sensor()))) {
+                if (m.type() == AmicaNodeType.PRESENCE_BED) {
+                    return m.type();
+                }
+                found = m.type() == AmicaNodeType.PRESENCE_SEAT ? m.type() : found;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * The state of every sensor just before {@code t}, from the whole recording: a stretch replayed later (the test
+     * half, a window) starts with the contacts' state as the platform's does ({@code StateReports}).
+     */
+    private Map<String, Boolean> stateBefore(LocalDateTime t) {
+        Map<String, Boolean> state = new HashMap<>();
+        for (SensorEvent e : home.events()) {
+            if (!e.time().isBefore(t)) {
+                break;
+            }
+            state.put(e.sensor(), e.on());
+        }
+        return state;
     }
 
     /** A flush or an appliance: its OFF can be the device finishing by itself. */

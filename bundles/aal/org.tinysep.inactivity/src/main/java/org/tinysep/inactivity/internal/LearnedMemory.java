@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
+import org.tinysep.api.sensor.presence.PresenceKind;
 import org.tinysep.device.support.files.AtomicFiles;
 import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.QuietGaps;
@@ -19,11 +20,14 @@ import org.tinysep.inactivity.internal.learn.Sighting;
  * UTF-8 lines of tab-separated fields (text escaped: {@code \\ \t \n \r}):
  * <pre>
  * tinysep-learned-history 1
- * covered  &lt;instant&gt;                                 the platform time it was saved: the log is read only after it
+ * covered  &lt;instant&gt;                                 the later of the platform time it was saved and the newest time
+ *                                                   it holds: the log is read only after it
  * S  &lt;at&gt; &lt;room uid&gt; &lt;room name&gt; &lt;room type&gt; &lt;in bed 0|1&gt; &lt;seated 0|1&gt;   a sighting
  * A  &lt;from&gt; &lt;to&gt;                                  a time the flat was empty
  * W  &lt;since&gt;                                        the flat is empty since
- * R  &lt;at&gt; &lt;device uid&gt; &lt;in bed&gt; &lt;seated&gt;           a logged activity of a device not yet a source
+ * R  &lt;at&gt; &lt;device uid&gt; &lt;in bed&gt; &lt;seated&gt; &lt;up&gt; [&lt;OFF kind&gt; &lt;device before&gt;]   a logged activity
+ *                                                   of a device not yet a source (the last two for a flush or
+ *                                                   appliance turning OFF: {@link HistoryFromLog.Raw#after})
  * </pre>
  * A line that cannot be read is skipped and counted. Bounded by the learner's history window ({@code
  * learnHistoryDays}; sightings in one room less than a minute apart are one).
@@ -63,7 +67,11 @@ final class LearnedMemory {
         }
         for (HistoryFromLog.Raw r : pending) {
             b.append("R\t").append(r.at()).append('\t').append(esc(r.device())).append('\t').append(bit(r.inBed()))
-                    .append('\t').append(bit(r.seated())).append('\t').append(bit(r.upFromBed())).append('\n');
+                    .append('\t').append(bit(r.seated())).append('\t').append(bit(r.upFromBed()));
+            if (r.after() != null) {
+                b.append('\t').append(r.off().name()).append('\t').append(esc(r.after()));
+            }
+            b.append('\n');
         }
         AtomicFiles.write(file, b.toString().getBytes(StandardCharsets.UTF_8));
     }
@@ -96,6 +104,9 @@ final class LearnedMemory {
                             unesc(f[4]), "1".equals(f[5]), "1".equals(f[6]), "1".equals(f[7])));
                     case "R/6" -> pending.add(new HistoryFromLog.Raw(Instant.parse(f[1]), unesc(f[2]),
                             "1".equals(f[3]), "1".equals(f[4]), "1".equals(f[5])));
+                    case "R/8" -> pending.add(new HistoryFromLog.Raw(Instant.parse(f[1]), unesc(f[2]),
+                            "1".equals(f[3]), "1".equals(f[4]), "1".equals(f[5]), PresenceKind.valueOf(f[6]),
+                            unesc(f[7])));
                     case "A/3" -> away.add(new QuietGaps.Away(Instant.parse(f[1]), Instant.parse(f[2])));
                     case "W/2" -> since = Instant.parse(f[1]);
                     case "R/5" -> pending.add(new HistoryFromLog.Raw(Instant.parse(f[1]), unesc(f[2]),

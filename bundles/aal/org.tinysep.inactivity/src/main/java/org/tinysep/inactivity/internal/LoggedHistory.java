@@ -39,6 +39,7 @@ final class LoggedHistory {
             return;
         }
         lastResolve = wall;
+        int finished = fromLog.finishedByItself();
         int n = fromLog.resolve(raw -> {
             if (!sources.contains(raw.device())) {
                 return Optional.empty();
@@ -46,8 +47,11 @@ final class LoggedHistory {
             ActivityFactory.Placed p = activities.placed(raw.device());
             return Optional.of(new Sighting(raw.at(), p.uid(), p.name(), p.type(), raw.inBed(), raw.seated()));
         });
-        if (n > 0) {
-            side.event("learning: " + n + " logged activities of connected sensors added to the history");
+        finished = fromLog.finishedByItself() - finished;
+        if (n > 0 || finished > 0) {
+            side.event("learning: " + n + " logged activities of connected sensors added to the history"
+                    + (finished == 0 ? "" : "; " + finished + " flush or appliance OFF entries left out: each came "
+                            + "after the person was seen in another room, so it was the device finishing by itself"));
         }
     }
 }

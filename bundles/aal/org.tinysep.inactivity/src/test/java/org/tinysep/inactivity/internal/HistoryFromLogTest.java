@@ -8,7 +8,11 @@ import java.time.Instant;
 import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Comparator;
+import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
+import java.util.function.Function;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
@@ -101,5 +105,45 @@ class HistoryFromLogTest {
         assertEquals(List.of(true, false, true), read.stream().map(sleep::asleep).toList(),
                 "in bed at 23:00, up at 03:00 (awake), back in bed at 03:20: " + read);
         assertEquals(List.of(false, true, false), read.stream().map(Sighting::upFromBed).toList());
+    }
+
+    /** The rooms of the devices below; a device missing from {@code sources} is not connected yet. */
+    private static Function<HistoryFromLog.Raw, Optional<Sighting>> rooms(Set<String> sources) {
+        Map<String, String> room = Map.of("Flush", "bath", "Basin", "bath", "Bed", "bedroom", "BedroomPIR", "bedroom");
+        return r -> sources.contains(r.device()) ? Optional.of(new Sighting(r.at(), room.get(r.device()),
+                room.get(r.device()), "", r.inBed(), r.seated())) : Optional.empty();
+    }
+
+    /**
+     * Issue 28, session 33: the rule of the live detector ({@code DeviceFinishedTest}) for history read back from the
+     * log. Ordonez B, 30 November: flush ON 01:40:19, bedroom PIR 01:40:31, bed mat ON 01:40:53, flush OFF 01:41:11
+     * — the cistern finishing after the person lay down is no activity (learned, it was a 5 h "quiet period in the
+     * bathroom" at night); the flush at 03:05, with the person in the bathroom, ends at 03:07 and counts. A flush OFF
+     * whose preceding activity's device is not connected yet waits for it.
+     */
+    @Test
+    void aFlushEndingAfterThePersonLeftIsNotLearnedFromTheLog() {
+        Instant t = Instant.parse("2012-11-30T01:40:19Z");
+        List<EventEntry> entries = List.of(new EventEntry(0, t, EventKind.DEVICE_EVENT, "Flush", "flush on"),
+                new EventEntry(1, t.plusSeconds(12), EventKind.DEVICE_EVENT, "BedroomPIR", "movement detected"),
+                new EventEntry(2, t.plusSeconds(34), EventKind.DEVICE_EVENT, "Bed", "bed on"),
+                new EventEntry(3, t.plusSeconds(52), EventKind.DEVICE_EVENT, "Flush", "flush off"),
+                new EventEntry(4, t.plusSeconds(4800), EventKind.DEVICE_EVENT, "Basin", "movement detected"),
+                new EventEntry(5, t.plusSeconds(5100), EventKind.DEVICE_EVENT, "Flush", "flush on"),
+                new EventEntry(6, t.plusSeconds(5220), EventKind.DEVICE_EVENT, "Flush", "flush off"));
+        HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, new SleepRule(21, 7, ZoneOffset.UTC),
+                LearningSettings.defaults());
+        HistoryFromLog fromLog = new HistoryFromLog(learner);
+        fromLog.load(new Log(entries), t, 28);
+
+        assertEquals(4, fromLog.resolve(rooms(Set.of("Flush", "Basin"))), "the first flush OFF waits for the bed");
+        assertEquals(2, fromLog.resolve(rooms(Set.of("Flush", "Basin", "Bed", "BedroomPIR"))));
+
+        assertEquals(List.of("01:40:19 bath", "01:40:31 bedroom", "01:40:53 bedroom", "03:00:19 bath", "03:05:19 bath", "03:07:19 bath"),
+                learner.memory().sightings().stream().sorted(Comparator.comparing(Sighting::at))
+                        .map(s -> s.at().toString().substring(11, 19) + " " + s.room()).toList(),
+                "the night's quiet period must start with the bed mat, not the cistern");
+        assertEquals(1, fromLog.finishedByItself());
+        assertTrue(!fromLog.hasPending());
     }
 }

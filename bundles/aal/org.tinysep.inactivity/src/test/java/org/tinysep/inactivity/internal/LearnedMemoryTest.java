@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
+import org.tinysep.api.sensor.presence.PresenceKind;
 import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.api.log.EventEntry;
 import org.tinysep.api.log.EventKind;
@@ -164,5 +165,51 @@ class LearnedMemoryTest {
         assertEquals(List.of(up), c.memory().sightings());
         assertEquals(List.of(waiting), c.pending());
         assertEquals(0, c.damaged());
+    }
+
+    /** Issue 28, session 33: a waiting flush OFF keeps the device of the activity before it across the memory. */
+    @Test
+    void aWaitingFlushOffKeepsTheDeviceBeforeIt() throws IOException {
+        LearnedMemory memory = new LearnedMemory(dir.resolve("learned-history.txt"));
+        HistoryFromLog.Raw flushOff = new HistoryFromLog.Raw(at(0, 1, 41), "flush", false, false, false,
+                PresenceKind.FLUSH, "bed\tmat");
+        HistoryFromLog.Raw plain = new HistoryFromLog.Raw(at(0, 1, 40), "bed\tmat", true, false);
+        memory.save(new HistoryLearner.Memory(List.of(), List.of(), null), List.of(plain, flushOff), at(0, 4, 0));
+        LearnedMemory.Content c = memory.load();
+        assertEquals(List.of(plain, flushOff), c.pending());
+        assertEquals(0, c.damaged());
+    }
+
+    /**
+     * Issue 28, session 33: the platform stops after its Time Controller, so the clock when the memory is saved is
+     * the wall clock, weeks behind the (virtual) times of the history it holds. Reading the log "after the save"
+     * then handed the whole history to the learner a second time: on Ordonez B the platform's learned limits counted
+     * 106–178 quiet periods where the core counts 84–94 (duplicates 0 s apart are quiet periods too), and shortened
+     * limits the core does not. The memory covers the newest time it holds.
+     */
+    @Test
+    void aMemorySavedWithTheClockBehindItsHistoryIsNotLearnedTwice() throws IOException {
+        RotatingLog log = new RotatingLog(10_000);
+        for (int day = 0; day < 10; day++) {
+            for (int hour = 8; hour <= 18; hour += 2) {
+                log.time = at(day, hour, 0);
+                log.record(EventKind.DEVICE_EVENT, "bath-motion", "movement detected");
+                log.time = at(day, hour, 5);
+                log.record(EventKind.DEVICE_EVENT, "kitchen-motion", "movement detected");
+            }
+        }
+        Instant now = at(10, 14, 0);
+        Instant wallBehind = at(-30, 12, 0);
+        LearnedMemory memory = new LearnedMemory(dir.resolve("learned-history.txt"));
+        List<HistoryFromLog> detectors = new ArrayList<>();
+        Limit first = start(log, memory, now, detectors);
+        assertTrue(detectors.get(0).save(memory, wallBehind));
+        int remembered = memory.load().memory().sightings().size();
+        assertTrue(memory.load().covered().equals(now), "covers the newest it holds: " + memory.load().covered());
+
+        Limit restarted = start(log, memory, now, detectors);
+        assertEquals(first.explanation(), restarted.explanation(), "the same history, learned once");
+        assertTrue(detectors.get(1).save(memory, wallBehind));
+        assertEquals(remembered, memory.load().memory().sightings().size(), "120 logged and the live one, once");
     }
 }
