@@ -51,4 +51,23 @@ class AmicaAddressTest {
         assertTrue(new AmicaAddress(4, 0).isPlatform());
         assertFalse(new AmicaAddress(4, 1).isPlatform());
     }
+
+    @Test
+    void equalAddressesAreEqualAndEveryAddressHashesApart() {
+        java.util.Set<Integer> hashes = new java.util.HashSet<>();
+        for (int ng = 0; ng < 256; ng++) {
+            for (int a = 0; a < 256; a++) {
+                AmicaAddress x = new AmicaAddress(ng, a);
+                assertEquals(x, new AmicaAddress(ng, a));
+                assertEquals(x.hashCode(), new AmicaAddress(ng, a).hashCode());
+                assertEquals(x, AmicaAddress.of(ng, a));
+                hashes.add(x.hashCode());
+            }
+        }
+        assertEquals(65_536, hashes.size());
+        assertFalse(new AmicaAddress(1, 2).equals(new AmicaAddress(2, 1)));
+        assertFalse(new AmicaAddress(1, 2).equals("1.2"));
+        assertThrows(IllegalArgumentException.class, () -> AmicaAddress.of(256, 0));
+        assertThrows(IllegalArgumentException.class, () -> AmicaAddress.of(0, -1));
+    }
 }
