@@ -2,6 +2,7 @@ package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
@@ -103,7 +104,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     /** @return "node 1:17 via 127.0.0.1:5000", formatted at the first frame of that node by that route */
     String originOf(AmicaAddress sender, R from) {
         Origin<R> o = origins.get(sender);
-        if (o == null || !o.route().equals(from)) {
+        if (o == null || !Objects.equals(o.route(), from)) {
             if (origins.size() >= MAX_ORIGINS) {
                 origins.clear();
             }
