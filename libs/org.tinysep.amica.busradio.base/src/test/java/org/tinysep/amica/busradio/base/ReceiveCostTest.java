@@ -34,14 +34,6 @@ class ReceiveCostTest {
                 "another route is named anew");
     }
 
-    @Test
-    void aFramesSenderIsNoNewObjectPerFrame() {
-        AmicaFrame frame = new AmicaFrame(3, 200, 0, 1, new byte[] {1});
-        double bytes = bytesPerCall(20_000, i -> sink += frame.sender().address());
-        assertTrue(bytes < 16, "bytes allocated per frame for its sender's address: " + bytes);
-        assertEquals(new AmicaAddress(3, 200), frame.sender());
-    }
-
     interface Work {
         void run(int i);
     }
