@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
@@ -45,6 +46,10 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private final UnplacedNames unplaced;
     /** The room (UID, empty if unplaced) of the last activity, null before the first. */
     private volatile String lastRoom;
+    /** Each reporting device's room as of its last report (see {@link #spot}). */
+    private final Map<String, Spot> spots = new ConcurrentHashMap<>();
+    /** More reporting devices than a home has: start the spots afresh (bounded memory). */
+    static final int MAX_SPOTS = 4_096;
 
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
@@ -68,7 +73,8 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     @Override
     public void movementReported(MovementProvider source, MovementEvent movement) {
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
-            sink.accept(of(source.deviceUid(), n -> "movement by " + n, movement.at()));
+            Spot s = spot(source.deviceUid());
+            sink.accept(of(s.placed(), s.movement(), movement.at(), false, false, false));
         }
     }
 
@@ -108,7 +114,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         boolean inBed = present && source.kind() == PresenceKind.BED;
         boolean seated = present && source.kind() == PresenceKind.SEAT;
         boolean up = !present && source.kind() == PresenceKind.BED;
-        Placed p = placed(source.deviceUid());
+        Placed p = spot(source.deviceUid()).placed();
         if (finishedByItself(source.kind(), present, p.uid(), lastRoom)) {
             return;
         }
@@ -148,17 +154,47 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
 
     private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated,
             boolean upFromBed) {
-        return of(placed(deviceUid), deviceUid, what, at, inBed, seated, upFromBed);
+        return of(spot(deviceUid).placed(), deviceUid, what, at, inBed, seated, upFromBed);
     }
 
     private Activity of(Placed p, String deviceUid, Function<String, String> what, Instant at, boolean inBed,
             boolean seated, boolean upFromBed) {
+        // the device's name is a registry look-up: made when the description is read, not per activity
+        return of(p, () -> what.apply(directory.nameOf(deviceUid)), at, inBed, seated, upFromBed);
+    }
+
+    private Activity of(Placed p, Supplier<String> describe, Instant at, boolean inBed, boolean seated,
+            boolean upFromBed) {
         lastRoom = p.uid();
         Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated, upFromBed), p.fixed(),
                 clock.get());
-        // the device's name is a registry look-up: made when the description is read, not per activity
-        return Activity.described(p.uid(), p.name(), () -> what.apply(directory.nameOf(deviceUid)), at, l.limit(),
-                l.explanation());
+        return Activity.described(p.uid(), p.name(), describe, at, l.limit(), l.explanation());
+    }
+
+    /**
+     * A device's room as found at its last report, with the words of its movement (built when read): reused while
+     * its room ({@link Placements#roomOf}, a map read), the house plan and, without a room, its looked-up name are
+     * the same, so a report does not find the room's limit anew (issue 29, item 1: the limit table's look-up and
+     * the new {@link Placed} per report were a tenth of what a movement report allocated).
+     */
+    private record Spot(Optional<String> roomUid, Map<String, Room> plan, Placed placed, Supplier<String> movement) {
+    }
+
+    private Spot spot(String deviceUid) {
+        Optional<String> roomUid = directory.roomOf(deviceUid);
+        Map<String, Room> plan = rooms;
+        Spot s = spots.get(deviceUid);
+        if (s != null && s.plan() == plan && s.roomUid().equals(roomUid)
+                && (roomUid.isPresent() || s.placed().name().equals(unplaced.nameOf(deviceUid)))) {
+            return s;
+        }
+        s = new Spot(roomUid, plan, placed(deviceUid, roomUid, plan),
+                () -> "movement by " + directory.nameOf(deviceUid));
+        if (spots.size() >= MAX_SPOTS) {
+            spots.clear();
+        }
+        spots.put(deviceUid, s);
+        return s;
     }
 
     /** A device's room now: UID (empty if unplaced), name, type and fixed limit. */
@@ -166,11 +202,14 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     }
 
     Placed placed(String deviceUid) {
-        Optional<String> roomUid = directory.roomOf(deviceUid);
+        return placed(deviceUid, directory.roomOf(deviceUid), rooms);
+    }
+
+    private Placed placed(String deviceUid, Optional<String> roomUid, Map<String, Room> plan) {
         if (roomUid.isEmpty()) {
             return new Placed("", unplaced.nameOf(deviceUid), "", limits.defaultLimit());
         }
-        Room room = rooms.get(roomUid.get());
+        Room room = plan.get(roomUid.get());
         if (room == null) {
             return new Placed(roomUid.get(), "room " + roomUid.get(), "", limits.limitForUnknownRoom(roomUid.get()));
         }

@@ -47,7 +47,9 @@ final class ActivityFeed {
         wentBack.ifPresent(from -> clockWentBack(from, now));
         rooms.seen(a);
         side.changed(); // last activity per room, saved at most every 10 s (docs/backup.md)
-        announcer.announce(change, a.at(), () -> a.description() + " in " + a.roomName()); // built on a change only
+        if (change.isPresent()) { // the reason's closure is built on a change only, not per activity
+            announcer.announce(change, a.at(), () -> a.description() + " in " + a.roomName());
+        }
         List<String> said = persons.get().room(a, now);
         said.forEach(side::event);
         personSave(said);

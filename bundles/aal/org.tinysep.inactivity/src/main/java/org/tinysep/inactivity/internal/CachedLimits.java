@@ -11,6 +11,7 @@ import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.Limit;
 import org.tinysep.inactivity.internal.learn.QuietProfile;
 import org.tinysep.inactivity.internal.learn.Sighting;
+import org.tinysep.inactivity.internal.learn.SleepRule;
 
 /**
  * The LEARNED detector's limits, computed once per room, hour, day type and state until the next learning (issue
@@ -32,8 +33,26 @@ final class CachedLimits {
     /** Answers per room: asleep × seated × weekend × 24 hours. */
     private static final int PER_ROOM = 2 * 2 * 2 * 24;
 
-    /** One room's answers, valid while its type and fixed limit stay these. */
-    private record Slots(String roomType, Duration fixed, Limit[] answers) {
+    /** In bed × up from bed × 24 local hours: whether a sighting there is sleep (0 not yet asked, 1 no, 2 yes). */
+    private static final int SLEEP_KEYS = 2 * 2 * 24;
+
+    /**
+     * One room's answers, valid while its type and fixed limit stay these; and whether a sighting in it is sleep,
+     * which depends only on the room's type, the bed mat's word and the local hour ({@link SleepRule#asleep}):
+     * asked once per hour and bed state, not per activity (it reads the hour through a new zoned date-time and
+     * lower-cases the room's type each time).
+     */
+    private record Slots(String roomType, Duration fixed, Limit[] answers, byte[] asleep) {
+
+        boolean asleep(Sighting s, int hour, SleepRule rule) {
+            int k = ((s.inBed() ? 1 : 0) * 2 + (s.upFromBed() ? 1 : 0)) * 24 + hour;
+            byte known = asleep[k];
+            if (known == 0) {
+                known = rule.asleep(s) ? (byte) 2 : (byte) 1;
+                asleep[k] = known; // a race asks twice at worst: the same answer
+            }
+            return known == 2;
+        }
     }
 
     /** The answers learned from one profile: room UID → room name → slots. */
@@ -66,9 +85,12 @@ final class CachedLimits {
             a = fresh(profile);
             answers = a;
         }
-        boolean asleep = limits.history().sleep().asleep(s);
-        Limit[] slots = slots(a, s, fixed);
-        int i = index(s.at(), rules(limits.history().sleep().zone()), asleep, s.seated() && !asleep);
+        SleepRule rule = limits.history().sleep();
+        Slots room = slots(a, s, fixed);
+        long local = localSeconds(s.at(), rules(rule.zone()));
+        boolean asleep = room.asleep(s, hourOf(local), rule);
+        Limit[] slots = room.answers();
+        int i = index(local, asleep, s.seated() && !asleep);
         Limit cached = slots[i];
         if (cached != null) {
             return cached;
@@ -79,18 +101,18 @@ final class CachedLimits {
         return l;
     }
 
-    private static Limit[] slots(Answers a, Sighting s, Duration fixed) {
+    private static Slots slots(Answers a, Sighting s, Duration fixed) {
         Map<String, Slots> byName = a.rooms().get(s.room());
         if (byName == null) {
             byName = a.rooms().computeIfAbsent(s.room(), r -> new ConcurrentHashMap<>());
         }
         Slots slots = byName.get(s.roomName());
         if (slots == null || !slots.roomType().equals(s.roomType()) || !slots.fixed().equals(fixed)) {
-            slots = new Slots(s.roomType(), fixed, new Limit[PER_ROOM]);
+            slots = new Slots(s.roomType(), fixed, new Limit[PER_ROOM], new byte[SLEEP_KEYS]);
             byName.put(s.roomName(), slots);
             a.size().incrementAndGet();
         }
-        return slots.answers();
+        return slots;
     }
 
     private ZoneRules rules(ZoneId id) {
@@ -104,8 +126,20 @@ final class CachedLimits {
 
     /** @return the answer's place: the state, weekday or weekend, and the local hour of {@code at} */
     static int index(Instant at, ZoneRules zone, boolean asleep, boolean seated) {
-        long local = at.getEpochSecond() + zone.getOffset(at).getTotalSeconds();
-        int hour = (int) (Math.floorMod(local, 86_400L) / 3_600);
+        return index(localSeconds(at, zone), asleep, seated);
+    }
+
+    /** @return {@code at} as seconds of the local time line (the epoch's local midnight is 0) */
+    private static long localSeconds(Instant at, ZoneRules zone) {
+        return at.getEpochSecond() + zone.getOffset(at).getTotalSeconds();
+    }
+
+    private static int hourOf(long local) {
+        return (int) (Math.floorMod(local, 86_400L) / 3_600);
+    }
+
+    private static int index(long local, boolean asleep, boolean seated) {
+        int hour = hourOf(local);
         int dayOfWeek = (int) Math.floorMod(Math.floorDiv(local, 86_400L) + 3, 7L); // day 0 was a Thursday; 0 = Monday
         int weekend = dayOfWeek >= 5 ? 1 : 0;
         return (((asleep ? 1 : 0) * 2 + (seated ? 1 : 0)) * 2 + weekend) * 24 + hour;

@@ -104,6 +104,9 @@ final class PersonWatches {
     /** A room sensor's activity: counted for the wearers it may be. */
     synchronized List<String> room(Activity a, Instant now) {
         Wearers.Attribution who = wearers.room(a.at(), a.roomUid(), a.roomName());
+        if (who.notices().isEmpty() && who.countsFor().isEmpty()) {
+            return List.of(); // nobody's watch to feed (no wearer): nothing built per activity
+        }
         List<String> events = new ArrayList<>();
         who.notices().forEach(n -> events.add(n.words()));
         for (String uid : who.countsFor()) {

@@ -41,6 +41,42 @@ public record AmicaAddress(int netgroup, int address) {
         return address == AmicaCodec.PLATFORM_ADDRESS;
     }
 
+    /**
+     * The same node is the same address: equal fields (as a record's), written out because the node table and the
+     * packet log's origins look a node up by its address for every frame (issue 29, item 1), and a record's own
+     * {@code equals}/{@code hashCode} go through method handles that the gateway's C1-only JIT does not inline.
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o == this || o instanceof AmicaAddress a && a.netgroup == netgroup && a.address == address;
+    }
+
+    /** @return the 16 bits netgroup and address, distinct for every address */
+    @Override
+    public int hashCode() {
+        return netgroup << 8 | address;
+    }
+
+    /** @return the one shared instance for that address (a frame's sender is no new object per frame) */
+    static AmicaAddress of(int netgroup, int address) {
+        checkByte("netgroup", netgroup);
+        checkByte("address", address);
+        AmicaAddress[] row = KNOWN[netgroup];
+        if (row == null) {
+            row = new AmicaAddress[256];
+            KNOWN[netgroup] = row; // a race makes two rows, each with valid addresses: no harm
+        }
+        AmicaAddress a = row[address];
+        if (a == null) {
+            a = new AmicaAddress(netgroup, address);
+            row[address] = a;
+        }
+        return a;
+    }
+
+    /** The addresses seen, per netgroup (a row of 256 made at its first address; immutable values, so racy is safe). */
+    private static final AmicaAddress[][] KNOWN = new AmicaAddress[256][];
+
     /** @return {@code NG.ADDR} in decimal, e.g. {@code 1.17} */
     @Override
     public String toString() {

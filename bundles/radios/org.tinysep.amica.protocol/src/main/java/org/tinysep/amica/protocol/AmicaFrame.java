@@ -69,7 +69,7 @@ public record AmicaFrame(int netgroup, int source, int destination, int sequence
 
     /** @return the sender's identity: (netgroup, source) */
     public AmicaAddress sender() {
-        return new AmicaAddress(netgroup, source);
+        return AmicaAddress.of(netgroup, source); // shared, not one per frame
     }
 
     /** @return the receiver's identity: (netgroup, destination) */

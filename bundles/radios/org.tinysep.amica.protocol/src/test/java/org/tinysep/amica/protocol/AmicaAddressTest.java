@@ -51,4 +51,43 @@ class AmicaAddressTest {
         assertTrue(new AmicaAddress(4, 0).isPlatform());
         assertFalse(new AmicaAddress(4, 1).isPlatform());
     }
+
+    @Test
+    void equalAddressesAreEqualAndEveryAddressHashesApart() {
+        java.util.Set<Integer> hashes = new java.util.HashSet<>();
+        for (int ng = 0; ng < 256; ng++) {
+            for (int a = 0; a < 256; a++) {
+                AmicaAddress x = new AmicaAddress(ng, a);
+                assertEquals(x, new AmicaAddress(ng, a));
+                assertEquals(x.hashCode(), new AmicaAddress(ng, a).hashCode());
+                assertEquals(x, AmicaAddress.of(ng, a));
+                hashes.add(x.hashCode());
+            }
+        }
+        assertEquals(65_536, hashes.size());
+        assertFalse(new AmicaAddress(1, 2).equals(new AmicaAddress(2, 1)));
+        assertFalse(new AmicaAddress(1, 2).equals("1.2"));
+        assertThrows(IllegalArgumentException.class, () -> AmicaAddress.of(256, 0));
+        assertThrows(IllegalArgumentException.class, () -> AmicaAddress.of(0, -1));
+    }
+
+    /** Issue 29, item 1: the receive thread asks each frame for its sender; that is no new object per frame. */
+    @Test
+    void aFramesSenderIsNoNewObjectPerFrame() {
+        AmicaFrame frame = new AmicaFrame(3, 200, 0, 1, new byte[] {1});
+        com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean)
+                java.lang.management.ManagementFactory.getThreadMXBean();
+        long sum = 0;
+        for (int i = 0; i < 20_000; i++) {
+            sum += frame.sender().address();
+        }
+        long before = mx.getThreadAllocatedBytes(Thread.currentThread().getId());
+        for (int i = 0; i < 20_000; i++) {
+            sum += frame.sender().address();
+        }
+        double bytes = (mx.getThreadAllocatedBytes(Thread.currentThread().getId()) - before) / 20_000.0;
+        assertTrue(bytes < 16, "bytes allocated per frame for its sender's address: " + bytes);
+        assertEquals(2 * 20_000L * 200, sum);
+        assertEquals(new AmicaAddress(3, 200), frame.sender());
+    }
 }

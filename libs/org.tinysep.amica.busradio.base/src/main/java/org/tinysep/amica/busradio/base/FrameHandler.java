@@ -2,6 +2,7 @@ package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
@@ -47,7 +48,8 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     /** More node-and-route pairs than any bus holds (nodes moving between routes): start the origins afresh. */
     static final int MAX_ORIGINS = 20_000;
 
-    private record Via<T>(AmicaAddress sender, T route) {
+    /** A node's origin text and the route it names. */
+    private record Origin<T>(T route, String text) {
     }
 
     private final Nodes<R> nodes;
@@ -55,9 +57,9 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     /**
      * The packet log's origin text per node and route ("node 1:17 via 127.0.0.1:5000"), formatted once rather than
      * per frame (formatting the route and the origin was most of the packet log's cost on this
-     * thread).
+     * thread). Keyed by the node alone, its route compared: a frame allocates no key (issue 29, item 1).
      */
-    private final Map<Via<R>, String> origins = new ConcurrentHashMap<>();
+    private final Map<AmicaAddress, Origin<R>> origins = new ConcurrentHashMap<>();
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter<RejectReason> rejects) {
         super(context, CODEC, rejects::reject);
@@ -80,36 +82,36 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
             reject(e.reason(), e.getMessage(), raw, from);
             return;
         }
-        AmicaBusDevice<R> device = nodes.find(frame.sender());
+        AmicaAddress sender = frame.sender(); // once per frame
+        AmicaBusDevice<R> device = nodes.find(sender);
         if (device == null) {
             if (!(payload instanceof KeepAlive keepAlive)) {
                 reject(RejectReason.UNKNOWN_NODE, new AmicaProtocolException(RejectReason.UNKNOWN_NODE, "node "
-                        + frame.sender() + " sent " + payload.getClass().getSimpleName() + " before any keep-alive")
+                        + sender + " sent " + payload.getClass().getSimpleName() + " before any keep-alive")
                         .getMessage(), raw, from);
                 return;
             }
-            device = nodes.create(frame.sender(), keepAlive, from, at);
+            device = nodes.create(sender, keepAlive, from, at);
             if (device == null) { // over the bus radio's node cap: counted by the node table
-                sample(nodes.describe(from), raw, "rejected: node " + frame.sender() + " would exceed maxNodes");
+                sample(nodes.describe(from), raw, "rejected: node " + sender + " would exceed maxNodes");
                 return;
             }
         }
-        context().reporter().packet(Direction.RECEIVED, originOf(frame.sender(), from), raw, "");
+        context().reporter().packet(Direction.RECEIVED, originOf(sender, from), raw, "");
         device.received(frame, payload, from, at);
     }
 
     /** @return "node 1:17 via 127.0.0.1:5000", formatted at the first frame of that node by that route */
-    private String originOf(AmicaAddress sender, R from) {
-        Via<R> via = new Via<>(sender, from);
-        String text = origins.get(via);
-        if (text == null) {
+    String originOf(AmicaAddress sender, R from) {
+        Origin<R> o = origins.get(sender);
+        if (o == null || !Objects.equals(o.route(), from)) {
             if (origins.size() >= MAX_ORIGINS) {
                 origins.clear();
             }
-            text = "node " + sender + " via " + nodes.describe(from);
-            origins.put(via, text);
+            o = new Origin<>(from, "node " + sender + " via " + nodes.describe(from));
+            origins.put(sender, o);
         }
-        return text;
+        return o.text();
     }
 
     @Override

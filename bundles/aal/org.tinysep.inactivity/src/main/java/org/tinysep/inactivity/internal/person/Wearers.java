@@ -122,8 +122,18 @@ public final class Wearers {
                 + "; its movement counts as " + person + "'s activity again"));
     }
 
-    /** A room sensor saw activity in {@code roomName} at {@code at}. */
+    /** No worn node heard: a room activity counts for nobody's own watch and says nothing. */
+    static final Attribution NOBODY = new Attribution(Set.of(), Set.of(), List.of());
+
+    /**
+     * A room sensor saw activity in {@code roomName} at {@code at}. Without any worn node (most homes) the answer
+     * is {@link #NOBODY}, built once: a room activity allocates nothing here (issue 29, item 1: the sets and the
+     * stream built per activity for no wearer were 12 % of the radio's delivery thread).
+     */
     public synchronized Attribution room(Instant at, String roomUid, String roomName) {
+        if (nodes.isEmpty()) {
+            return NOBODY;
+        }
         Set<String> movers = new TreeSet<>();
         nodes.values().stream().filter(w -> w.worn && w.lastMovement != null
                 && !w.lastMovement.isBefore(at.minus(settings.movingWithin()))).forEach(w -> movers.add(w.nodeUid));
