@@ -44,9 +44,12 @@ final class Lights {
         ours.remove(uid);
     }
 
-    /** Switches on the lights of the room that are not on yet. @return the names of those switched */
+    /**
+     * Switches on the lights of the room that are not on yet: every command is sent before any name is looked up
+     * (a name is read through the service registry). @return the names of those switched
+     */
     synchronized List<String> on(String roomUid) {
-        List<String> switched = new ArrayList<>();
+        List<String> uids = new ArrayList<>();
         for (Provider<?> p : all.values()) {
             if (!roomUid.equals(directory.roomOf(p.deviceUid()).orElse(null)) || isOn(p)) {
                 continue;
@@ -57,9 +60,15 @@ final class Lights {
                 s.switchLight(true);
             }
             ours.add(p.deviceUid());
-            switched.add(directory.nameOf(p.deviceUid()));
+            uids.add(p.deviceUid());
         }
-        return switched;
+        return names(uids);
+    }
+
+    private List<String> names(List<String> uids) {
+        List<String> names = new ArrayList<>(uids.size());
+        uids.forEach(uid -> names.add(directory.nameOf(uid)));
+        return names;
     }
 
     /** Switches off the room's lights that this service switched on. @return their names */
@@ -85,9 +94,9 @@ final class Lights {
                 s.switchLight(false);
             }
             ours.remove(uid);
-            switched.add(directory.nameOf(uid));
+            switched.add(uid);
         }
-        return switched;
+        return names(switched);
     }
 
     private static boolean isOn(Provider<?> p) {

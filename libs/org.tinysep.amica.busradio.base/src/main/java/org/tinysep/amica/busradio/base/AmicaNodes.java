@@ -214,8 +214,8 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
             return;
         }
         byte[] frame = AmicaCodec.encode(AmicaFrame.fromPlatform(node, sequence.getAndIncrement() & 0xFF, payload));
-        String where = "node " + node + " via " + transport.describe(route);
-        transport.transmit(frame, route, failure -> {
+        transport.transmit(frame, route, failure -> { // on the wire first, then its packet-log line (issue 29)
+            String where = "node " + node + " via " + transport.describe(route);
             if (failure == null) {
                 sent.incrementAndGet();
                 context.reporter().packet(Direction.SENT, where, frame, "");

@@ -3,7 +3,6 @@ package org.tinysep.device.support.delivery;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.List;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
@@ -11,7 +10,6 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -32,11 +30,8 @@ import org.tinysep.device.support.lifecycle.DriverContext;
  * a {@code PROBLEM} at most once a minute. {@link #awaitDelivered} lets a lock-step tick wait until what was
  * submitted before it reached its listeners (handed to a quarantined one's queue counts as reached).
  * <p>
- * The hand-off is cheap for the receive thread: a lock-free queue, and a wake-up only when the dispatcher sleeps.
- * While payloads come faster than {@link #SPIN} apart, a dispatcher that finds the queue empty first yields its
- * core for up to that long (the next payload of a burst usually comes within it) and only then parks: under load
- * the receive thread wakes it once per burst rather than once per payload ({@link #wakeups()}); at a slower pace
- * it parks at once.
+ * The hand-off is cheap for the receive thread: a lock-free queue, and a wake-up only when the dispatcher sleeps
+ * ({@link HandOff}).
  * <p>
  * The executor and the watchdog are this object's; {@link #close()} (the driver's deactivate) shuts them down.
  */
@@ -49,8 +44,6 @@ public final class OrderedDelivery implements AutoCloseable {
     /** Default capacity of a quarantined listener's own queue. */
     public static final int LANE_CAPACITY = 1_024;
     static final long REPORT_NANOS = 60_000_000_000L;
-    /** How long an idle dispatcher yields and looks again before it parks. */
-    static final Duration SPIN = Duration.ofNanos(30_000);
 
     private static final Logger LOG = LoggerFactory.getLogger(OrderedDelivery.class);
 
@@ -59,14 +52,7 @@ public final class OrderedDelivery implements AutoCloseable {
     private final long slowNanos;
     private final int laneCapacity;
     private final int capacity;
-    private final ConcurrentLinkedQueue<Job<?>> queue = new ConcurrentLinkedQueue<>();
-    private final AtomicInteger queued = new AtomicInteger();
-    /** The dispatcher's thread while it parks (or is about to); the submitter that takes it out wakes it. */
-    private final AtomicReference<Thread> sleeper = new AtomicReference<>();
-    private final AtomicLong wakeups = new AtomicLong();
-    private volatile long spinNanos = SPIN.toNanos();
-    private long lastWait; // the dispatcher's: how long its last take() waited for a job
-    private final AtomicLong spinsInVain = new AtomicLong();
+    private final HandOff handOff;
     private final ExecutorService pool;
     private final ScheduledExecutorService watchdog;
     private final AtomicLong submitted = new AtomicLong();
@@ -96,6 +82,7 @@ public final class OrderedDelivery implements AutoCloseable {
         long period = Math.max(10_000_000L, slowNanos / 4);
         watchdog.scheduleAtFixedRate(this::watch, period, period, TimeUnit.NANOSECONDS);
         this.capacity = capacity;
+        this.handOff = new HandOff(capacity);
         this.worker = new Dispatcher(null, this);
         pool.execute(worker);
     }
@@ -112,17 +99,10 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** Queues a job in order; never blocks. @return false when the queue was full (dropped, counted, said) */
     public boolean submit(Job<?> job) {
-        if (queued.incrementAndGet() <= capacity) {
-            submitted.incrementAndGet(); // before it can be completed (awaitDelivered compares the two)
-            queue.offer(job);
-            Thread s = sleeper.get();
-            if (s != null && sleeper.compareAndSet(s, null)) {
-                wakeups.incrementAndGet();
-                LockSupport.unpark(s);
-            }
+        // counted before it can be completed (awaitDelivered compares the two)
+        if (handOff.offer(job, submitted::incrementAndGet)) {
             return true;
         }
-        queued.decrementAndGet();
         dropped.incrementAndGet();
         String words = full.drop(Instant.now(), (count, since) -> radio + " cannot hand payloads to its devices fast"
                 + " enough: " + count + " payload" + (count == 1 ? "" : "s") + " dropped since " + since + " (its"
@@ -186,66 +166,24 @@ public final class OrderedDelivery implements AutoCloseable {
         return closed;
     }
 
-    /**
-     * The dispatcher: the next job, waiting for one. It yields and looks again for up to {@link #SPIN} only while
-     * payloads come that fast (its last wait was shorter than that), else it parks at once: at a slower pace a
-     * spin would only burn a core the receive thread may need.
-     */
+    /** The dispatcher: the next job, waiting for one ({@link HandOff#take}). */
     Job<?> take() throws InterruptedException {
-        Job<?> j = poll();
-        if (j != null) {
-            lastWait = 0;
-            return j;
-        }
-        long start = System.nanoTime();
-        long spin = spinNanos;
-        if (lastWait < spin) {
-            while (System.nanoTime() - start < spin) {
-                Thread.yield();
-                if ((j = poll()) != null) {
-                    lastWait = System.nanoTime() - start;
-                    return j;
-                }
-            }
-            spinsInVain.incrementAndGet();
-        }
-        Thread me = Thread.currentThread();
-        while (true) {
-            sleeper.set(me); // then look again: a job offered before this is seen, one offered after it wakes us
-            if ((j = poll()) != null) {
-                sleeper.compareAndSet(me, null);
-                lastWait = System.nanoTime() - start;
-                return j;
-            }
-            LockSupport.park(this);
-            if (Thread.interrupted() || closed) {
-                sleeper.compareAndSet(me, null);
-                throw new InterruptedException("closed");
-            }
-        }
-    }
-
-    private Job<?> poll() {
-        Job<?> j = queue.poll();
-        if (j != null) {
-            queued.decrementAndGet();
-        }
-        return j;
+        return handOff.take(this::closed);
     }
 
     /** For tests: how long an idle dispatcher yields before it parks (0: parks at once). */
     void spin(Duration d) {
-        spinNanos = d.toNanos();
+        handOff.spin(d);
     }
 
-    /** @return how often an idle dispatcher yielded for {@link #SPIN} and then parked all the same */
+    /** @return how often an idle dispatcher yielded for {@link HandOff#SPIN} and then parked all the same */
     long spinsInVain() {
-        return spinsInVain.get();
+        return handOff.spinsInVain();
     }
 
     /** @return how often a submitter woke a parked dispatcher */
     public long wakeups() {
-        return wakeups.get();
+        return handOff.wakeups();
     }
 
     void done() {
@@ -284,7 +222,7 @@ public final class OrderedDelivery implements AutoCloseable {
 
     /** @return the counters for the driver's parameters */
     public List<Parameter> parameters() {
-        return List.of(Parameter.readOnly("delivery.queued", queued.get(), "payloads waiting for the dispatcher"),
+        return List.of(Parameter.readOnly("delivery.queued", handOff.queued(), "payloads waiting for the dispatcher"),
                 Parameter.readOnly("delivery.dropped", dropped.get(), "payloads dropped: a queue was full"),
                 Parameter.readOnly("delivery.slowListeners", quarantines.get(),
                         "times a listener took over " + slowNanos / 1_000_000 + " ms and got its own queue"));

@@ -20,6 +20,7 @@ import org.tinysep.amica.protocol.MotionDetection;
 import org.tinysep.api.device.DeviceStatus;
 import org.tinysep.api.device.Parameter;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.device.support.testing.FakeAmicaBus;
 import org.tinysep.device.support.testing.TestPlatform;
 
 /** Light Control status in, on/off out; switching sends Light Control 100/0 and waits for the node to confirm. */
@@ -135,6 +136,25 @@ class AmicaSimpleLightDeviceTest {
         assertTrue(deviceEvents().contains("light on not sent: bus radio is closed"), deviceEvents().toString());
         receive(new LightControl(0), 10);
         assertEquals(DeviceStatus.State.ONLINE, light.status().state(), "the node is heard again");
+    }
+
+    /** Issue 29: the command is on the wire before its "requested" line is written (the log's threads wake then). */
+    @Test
+    void theCommandIsSentBeforeItsRequestIsLogged() {
+        List<Integer> entriesAtSend = new ArrayList<>();
+        FakeAmicaBus wire = new FakeAmicaBus("1.31", "simple-light") {
+            @Override
+            public void send(byte[] payload) {
+                entriesAtSend.add(platform.logs.events().size());
+                super.send(payload);
+            }
+        };
+        AmicaSimpleLightDevice other = new AmicaSimpleLightDevice(platform.context(AmicaSimpleLightDriver.NAME), wire);
+        int before = platform.logs.events().size();
+        other.switchLight(true);
+        assertEquals(List.of(before), entriesAtSend, "event-log entries when the command was sent");
+        assertEquals(before + 1, platform.logs.events().size());
+        assertEquals("light on requested", platform.logs.events().get(before).message());
     }
 
     private List<String> deviceEvents() {
