@@ -99,7 +99,8 @@ class DemoDayIT {
             while (!(Files.exists(log) && Files.readString(log).contains("platform time")) && System.nanoTime() < deadline) {
                 Thread.sleep(200);
             }
-            assertTrue(simulatorRunning(), "the simulator runs during the demo day");
+            assertTrue(simulatorRunning(), () -> "the simulator runs during the demo day; its log: "
+                    + (Files.exists(log) ? readQuietly(log) : "(none)") + "\nthe console: " + tinysep.output());
             tinysep.type("stop 0");
             assertEquals(0, tinysep.waitFor(Duration.ofSeconds(60)), tinysep.output());
             deadline = System.nanoTime() + Duration.ofSeconds(10).toNanos();
@@ -109,6 +110,14 @@ class DemoDayIT {
             assertFalse(simulatorRunning(), "the simulator stopped with the platform");
             Thread.sleep(3_000);
             assertFalse(tinysep.output().contains("FAILED") || tinysep.output().contains("NOT sent"), tinysep.output());
+        }
+    }
+
+    private static String readQuietly(Path file) {
+        try {
+            return Files.readString(file);
+        } catch (java.io.IOException e) {
+            return "(unreadable: " + e.getMessage() + ")";
         }
     }
 
