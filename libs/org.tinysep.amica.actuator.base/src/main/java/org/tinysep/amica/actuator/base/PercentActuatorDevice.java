@@ -2,7 +2,6 @@ package org.tinysep.amica.actuator.base;
 
 import java.time.Duration;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.function.IntFunction;
@@ -65,8 +64,6 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
     private final ToIntFunction<P> percentOf;
     private final IntFunction<P> command;
     private final ConfirmedSetting<Percent> setting;
-    /** Event-log lines said while this thread hands a command to the bus: written once it is sent (issue 29) */
-    private final ThreadLocal<List<String>> sending = new ThreadLocal<>();
 
     /**
      * @param label       name prefix, e.g. {@code Heater}; the device is named {@code <label> <node>}
@@ -88,7 +85,7 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
         this.payloadType = payloadType;
         this.percentOf = percentOf;
         this.command = command;
-        this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::now, this::said);
+        this.setting = new ConfirmedSetting<>(v -> quantity + " " + v, PATIENCE, this::now, this::event);
         serviceProperty(DeviceProperties.NODE_ADDRESS, bus.nodeId());
         serviceProperty(DeviceProperties.NODE_TYPE, new String[] {nodeType});
         this.teller = (listener, value, at) -> call.tell(listener, provides.cast(this), value, at);
@@ -128,26 +125,8 @@ public abstract class PercentActuatorDevice<P extends AmicaPayload, L> extends A
             throw new IllegalArgumentException(quantity + " must not be null");
         }
         byte[] bytes = AmicaPayloads.encode(command.apply(value.value()));
-        List<String> lines = new ArrayList<>(2);
-        sending.set(lines);
-        boolean sent;
-        try {
-            sent = setting.request(value, () -> bus.send(bytes));
-        } finally {
-            sending.remove();
-        }
-        lines.forEach(this::event); // after the send: writing an entry wakes the event log's threads
-        if (!sent) {
+        if (!setting.request(value, () -> bus.send(bytes))) {
             status(DeviceStatus.State.ERROR, "last command not sent, see the event log");
-        }
-    }
-
-    private void said(String line) {
-        List<String> held = sending.get();
-        if (held != null) {
-            held.add(line);
-        } else {
-            event(line);
         }
     }
 

@@ -61,8 +61,8 @@ public final class ConfirmedSetting<T> {
     }
 
     /**
-     * Remembers {@code value} as pending since now, then runs {@code send}. A send that throws is written to the
-     * event log, not propagated, and the request is forgotten.
+     * Remembers {@code value} as pending since now, then runs {@code send}, then writes "… requested" to the event
+     * log. A send that throws is written to the event log after it, not propagated, and the request is forgotten.
      *
      * @return whether the command was handed over
      */
@@ -73,19 +73,25 @@ public final class ConfirmedSetting<T> {
             pending = value;
             requestedAt = now;
         }
-        events.accept(describe.apply(value) + " requested");
+        RuntimeException failed = null;
         try {
             send.run();
-            return true;
         } catch (RuntimeException e) {
+            failed = e;
             synchronized (this) {
                 if (pending == value) {
                     pending = null;
                 }
             }
-            events.accept(describe.apply(value) + " not sent: " + e.getMessage());
+        }
+        // said after the send, in the same order: writing an entry wakes the event log's threads, which on a
+        // 2-core gateway took the CPU from the command on its way (issue 29)
+        events.accept(describe.apply(value) + " requested");
+        if (failed != null) {
+            events.accept(describe.apply(value) + " not sent: " + failed.getMessage());
             return false;
         }
+        return true;
     }
 
     /**

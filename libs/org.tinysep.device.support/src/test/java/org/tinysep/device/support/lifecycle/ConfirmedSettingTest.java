@@ -117,6 +117,14 @@ class ConfirmedSettingTest {
     }
 
     @Test
+    void theCommandIsSentBeforeItsRequestIsWritten() {
+        List<Integer> linesAtSend = new ArrayList<>();
+        assertTrue(level.request(40, () -> linesAtSend.add(events.size())));
+        assertEquals(List.of(0), linesAtSend, "event-log lines written before the command was sent");
+        assertEquals(List.of("level 40 requested"), events);
+    }
+
+    @Test
     void rejectsNonsense() {
         assertThrows(IllegalArgumentException.class,
                 () -> new ConfirmedSetting<Integer>(v -> "", Duration.ZERO, () -> now, e -> { }));

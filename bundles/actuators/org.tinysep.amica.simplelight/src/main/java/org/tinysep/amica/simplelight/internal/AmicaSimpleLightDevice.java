@@ -2,7 +2,6 @@ package org.tinysep.amica.simplelight.internal;
 
 import java.time.Duration;
 import java.time.Instant;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import org.tinysep.amica.protocol.AmicaPayloads;
@@ -29,8 +28,7 @@ import org.tinysep.device.support.lifecycle.Uids;
  * on when A &gt; 0. {@link #switchLight(boolean)} sends Light Control 100 or 0 and returns at once. Thesis actuator
  * model: the state, its listeners and the event log change only when the node's next status report confirms it;
  * until then the request is shown as the read-only parameter {@code pending}. The command goes on the wire before
- * its "light on requested" line is written to the event log (issue 29: writing an entry wakes the event log's
- * threads, which on a 2-core gateway took the CPU from the send); the log's order is the same.
+ * its "light on requested" line is written to the event log ({@link ConfirmedSetting#request}; issue 29).
  */
 final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLightProvider, BusRadioAmicaListener {
 
@@ -44,10 +42,8 @@ final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLight
 
     private final BusRadioAmicaProvider bus;
     private final Listeners<SimpleLightListener> listeners;
-    /** Event-log lines said while this thread hands a command to the bus: written once it is sent */
-    private final ThreadLocal<List<String>> sending = new ThreadLocal<>();
     private final ConfirmedSetting<Boolean> on = new ConfirmedSetting<>(v -> v ? "light on" : "light off",
-            PATIENCE, this::now, this::said);
+            PATIENCE, this::now, this::event);
 
     AmicaSimpleLightDevice(DriverContext context, BusRadioAmicaProvider bus) {
         super(context, Uids.of(context.driverName(), bus.deviceUid()), context.driverName(), "Light " + bus.nodeId());
@@ -81,26 +77,8 @@ final class AmicaSimpleLightDevice extends AbstractDevice implements SimpleLight
     @Override
     public void switchLight(boolean switchOn) {
         byte[] command = AmicaPayloads.encode(new LightControl(switchOn ? 100 : 0));
-        List<String> lines = new ArrayList<>(2);
-        sending.set(lines);
-        boolean sent;
-        try {
-            sent = on.request(switchOn, () -> bus.send(command));
-        } finally {
-            sending.remove();
-        }
-        lines.forEach(this::event);
-        if (!sent) {
+        if (!on.request(switchOn, () -> bus.send(command))) {
             status(DeviceStatus.State.ERROR, "last command not sent, see the event log");
-        }
-    }
-
-    private void said(String line) {
-        List<String> held = sending.get();
-        if (held != null) {
-            held.add(line);
-        } else {
-            event(line);
         }
     }
 
