@@ -88,9 +88,9 @@ class LearnedMemoryTest {
                 Duration.ofMinutes(45), now);
     }
 
-    @Test
-    void aFloodOfEventLogEntriesDoesNotMakeTheDetectorForget() throws IOException {
-        RotatingLog log = new RotatingLog(2000);
+    /** A log of {@code capacity} entries with ten days of movement: bathroom, then kitchen 5 min later, every 2 h. */
+    private static RotatingLog tenDays(int capacity) {
+        RotatingLog log = new RotatingLog(capacity);
         for (int day = 0; day < 10; day++) {
             for (int hour = 8; hour <= 18; hour += 2) {
                 log.time = at(day, hour, 0);
@@ -99,6 +99,12 @@ class LearnedMemoryTest {
                 log.record(EventKind.DEVICE_EVENT, "kitchen-motion", "movement detected");
             }
         }
+        return log;
+    }
+
+    @Test
+    void aFloodOfEventLogEntriesDoesNotMakeTheDetectorForget() throws IOException {
+        RotatingLog log = tenDays(2000);
         Instant now = at(10, 14, 0);
         LearnedMemory memory = new LearnedMemory(dir.resolve("inactivity").resolve("learned-history.txt"));
         List<HistoryFromLog> detectors = new ArrayList<>();
@@ -189,15 +195,7 @@ class LearnedMemoryTest {
      */
     @Test
     void aMemorySavedWithTheClockBehindItsHistoryIsNotLearnedTwice() throws IOException {
-        RotatingLog log = new RotatingLog(10_000);
-        for (int day = 0; day < 10; day++) {
-            for (int hour = 8; hour <= 18; hour += 2) {
-                log.time = at(day, hour, 0);
-                log.record(EventKind.DEVICE_EVENT, "bath-motion", "movement detected");
-                log.time = at(day, hour, 5);
-                log.record(EventKind.DEVICE_EVENT, "kitchen-motion", "movement detected");
-            }
-        }
+        RotatingLog log = tenDays(10_000);
         Instant now = at(10, 14, 0);
         Instant wallBehind = at(-30, 12, 0);
         LearnedMemory memory = new LearnedMemory(dir.resolve("learned-history.txt"));
