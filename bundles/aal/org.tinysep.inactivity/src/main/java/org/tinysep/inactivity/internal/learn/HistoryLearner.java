@@ -27,6 +27,9 @@ public final class HistoryLearner {
     private Instant awaySince;
     private QuietProfile profile;
     private LocalDate builtFor;
+    /** The local day {@link #builtFor} as instants [from, until): a question within it needs no date arithmetic. */
+    private Instant dayFrom = Instant.MAX;
+    private Instant dayUntil = Instant.MIN;
     private boolean dirty = true;
     private volatile Function<String, String> roomTypes = room -> "";
 
@@ -42,7 +45,7 @@ public final class HistoryLearner {
             Sighting last = sightings.get(sightings.size() - 1);
             if (last.room().equals(s.room()) && last.inBed() == s.inBed() && last.seated() == s.seated()
                     && last.upFromBed() == s.upFromBed()
-                    && !s.at().isBefore(last.at()) && Duration.between(last.at(), s.at()).compareTo(MERGE) < 0) {
+                    && !s.at().isBefore(last.at()) && withinMerge(last.at(), s.at())) {
                 sightings.set(sightings.size() - 1, s);
                 return;
             }
@@ -70,8 +73,24 @@ public final class HistoryLearner {
         dirty = true;
     }
 
-    /** @return the profile learned from the history up to {@code now} (at most a day old) */
+    /** @return whether {@code later} is less than {@link #MERGE} after {@code earlier} (no Duration per sighting) */
+    static boolean withinMerge(Instant earlier, Instant later) {
+        long seconds = later.getEpochSecond() - earlier.getEpochSecond();
+        if (later.getNano() < earlier.getNano()) {
+            seconds--; // borrow: the nanoseconds part of the difference is then positive
+        }
+        return seconds < MERGE.getSeconds();
+    }
+
+    /**
+     * @return the profile learned from the history up to {@code now} (at most a day old); asked per activity, so a
+     *         question within the local day it was built for is answered without date arithmetic (issue 29: the
+     *         zoned date per question was a tenth of Inactivity Recognition's time per movement report)
+     */
     public synchronized QuietProfile profile(Instant now) {
+        if (profile != null && !dirty && !now.isBefore(dayFrom) && now.isBefore(dayUntil)) {
+            return profile;
+        }
         LocalDate today = now.atZone(zone).toLocalDate();
         if (profile == null || dirty || !today.equals(builtFor)) {
             Instant oldest = now.minus(Duration.ofDays(settings.historyDays()));
@@ -86,6 +105,8 @@ public final class HistoryLearner {
             List<Sighting> typed = sightings.stream().map(this::typed).toList();
             profile = new QuietProfile(QuietGaps.of(typed, empty, sleep), zone, settings);
             builtFor = today;
+            dayFrom = today.atStartOfDay(zone).toInstant();
+            dayUntil = today.plusDays(1).atStartOfDay(zone).toInstant();
             dirty = false;
         }
         return profile;
