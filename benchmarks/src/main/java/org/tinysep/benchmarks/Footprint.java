@@ -19,6 +19,9 @@ final class Footprint {
     /** the headless gateway profile (--headless: no web console) with the chosen options */
     double headlessIdleRssKb = Double.NaN;
     double headlessStartMs = Double.NaN;
+    /** bare Felix with the chosen options (the goals' floors): RSS and start */
+    double chosenFelixRssKb = Double.NaN;
+    double chosenFelixStartMs = Double.NaN;
     /** ms from the banner to the web console bound (it starts after the banner) */
     double webAfterBannerMs = Double.NaN;
     private double floorsFelixStart = Double.NaN;
@@ -80,6 +83,8 @@ final class Footprint {
                 chosenIdleRssKb = idleRss;
                 chosenStartMs = banner;
                 webAfterBannerMs = web;
+                chosenFelixRssKb = felixRss;
+                chosenFelixStartMs = felixStart;
             }
             rss.add(idleRss / 1024.0);
             floorsJvm.add(jvmRss / 1024.0);

@@ -61,16 +61,33 @@ final class Goals {
 
     /** @return the goals table (Markdown) */
     static String markdown(Report r) {
+        return markdown(r, null);
+    }
+
+    /**
+     * @param before the previous run's figures ({@link Before}), or null for no "before" column
+     * @return the goals table (Markdown)
+     */
+    static String markdown(Report r, Report before) {
         StringBuilder md = new StringBuilder("\n## Issue 29 goals: met or missed (ratio to the floor of the same run)"
                 + "\n\n")
                 .append("Each figure is the median over the runs of its step (min–max beside it: the spread); the "
                         + "ratio is TinySEP ÷ the floor measured in the same run (median of the per-run ratios); "
-                        + "the verdict is on the median.\n\n")
-                .append("| goal | TinySEP: median (min–max, runs) | floor, same run | ratio to floor | verdict |\n")
-                .append("|---|---|---|---|---|\n");
+                        + "the verdict is on the median.")
+                .append(before == null ? "" : " *Before*: the previous run's median and its ratio to its own floor "
+                        + "(RESULTS-before.md; \"–\": that run did not measure it).")
+                .append("\n\n| goal | TinySEP: median (min–max, runs) | floor, same run | ratio to floor | verdict |")
+                .append(before == null ? "\n|---|---|---|---|---|\n" : " before: median (ratio) |\n|---|---|---|---|---|---|\n");
         for (Goal g : ISSUE_29) {
             List<String> row = row(r, g);
-            md.append("| ").append(String.join(" | ", row)).append(" |\n");
+            md.append("| ").append(String.join(" | ", row));
+            if (before != null) {
+                List<String> was = row(before, g);
+                md.append(" | ").append(was.get(1).equals("not measured") ? "–"
+                        : was.get(1).replaceFirst(" \\(.*", "") + (was.get(3).equals("–") ? ""
+                                : " (" + was.get(3).replaceFirst(" \\(.*", "") + ")"));
+            }
+            md.append(" |\n");
         }
         return md.append('\n').toString();
     }

@@ -50,6 +50,9 @@ public final class Main {
             footprint.run(b);
             report.figure("start.bannerMs", footprint.chosenStartMs);
             report.figure("rss.defaultKb", footprint.chosenIdleRssKb);
+            report.figure("start.felixMs", footprint.chosenFelixStartMs);
+            report.figure("rss.felixKb", footprint.chosenFelixRssKb);
+            report.figure("rss.headlessKb", footprint.headlessIdleRssKb);
         });
         step("thesis scenarios", report, () -> Repeat.run(b, repeat, "Thesis scenarios", rb -> {
             Thesis t = new Thesis();
@@ -112,13 +115,25 @@ public final class Main {
         if (note != null && !note.isBlank()) {
             md.append("**The machine during this run:** ").append(note.strip()).append("\n\n");
         }
-        md.append(Goals.markdown(report));
+        Report before = null;
+        if (!smoke && Files.isRegularFile(out)) {
+            // the previous full run stays beside the new one, and its headline figures become the "before" column
+            Path kept = out.resolveSibling("RESULTS-before.md");
+            String previous = Files.readString(out);
+            Files.writeString(kept, previous);
+            before = Before.read(previous);
+            md.append("The previous run's file is kept as [`").append(kept.getFileName()).append("`](")
+                    .append(kept.getFileName()).append(") (its first line says when it ran; its plots were those "
+                            + "now replaced in `docs/images`).\n\n");
+        }
+        md.append(Goals.markdown(report, before));
         md.append(report.markdown());
         if (only.isEmpty()) {
             try (var notes = Main.class.getResourceAsStream("/closing-notes.md")) {
                 md.append(new String(notes.readAllBytes(), java.nio.charset.StandardCharsets.UTF_8));
             }
         }
+        md.append(Before.block(report));
         Files.createDirectories(out.toAbsolutePath().getParent());
         Files.writeString(out, md.toString());
         System.out.println("benchmarks: wrote " + out + (report.problems.isEmpty() ? "" : "; failed: " + report.problems));

@@ -24,6 +24,11 @@ final class Report {
         return figures.getOrDefault(key, List.of());
     }
 
+    /** @return the keys of every recorded figure, in the order first recorded */
+    List<String> keys() {
+        return List.copyOf(figures.keySet());
+    }
+
     /** @return the median of the measured values (NaN when none) */
     static double median(List<Double> values) {
         double[] v = values.stream().mapToDouble(Double::doubleValue).filter(d -> !Double.isNaN(d)).sorted()
