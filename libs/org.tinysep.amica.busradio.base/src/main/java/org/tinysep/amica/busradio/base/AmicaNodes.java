@@ -58,6 +58,8 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private final Transport<R> transport;
     private final UnaryOperator<AmicaBusDevice<R>> register;
     private final AtomicLong overCap = new AtomicLong();
+    /** The packet log's "node 1:17 via 127.0.0.1:5000" of sent commands, formatted once per node and route. */
+    private final Origins<R> origins;
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
     private volatile OrderedDelivery delivery;
     private volatile java.time.Duration realSilenceGuard = java.time.Duration.ZERO;
@@ -72,6 +74,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         this.context = context;
         this.deviceType = deviceType;
         this.transport = transport;
+        this.origins = new Origins<>(transport::describe);
         this.register = register;
     }
 
@@ -215,7 +218,7 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         }
         byte[] frame = AmicaCodec.encode(AmicaFrame.fromPlatform(node, sequence.getAndIncrement() & 0xFF, payload));
         transport.transmit(frame, route, failure -> { // on the wire first, then its packet-log line (issue 29)
-            String where = "node " + node + " via " + transport.describe(route);
+            String where = origins.of(node, route);
             if (failure == null) {
                 sent.incrementAndGet();
                 context.reporter().packet(Direction.SENT, where, frame, "");

@@ -1,9 +1,6 @@
 package org.tinysep.amica.busradio.base;
 
 import java.time.Instant;
-import java.util.Map;
-import java.util.Objects;
-import java.util.concurrent.ConcurrentHashMap;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaCodec;
 import org.tinysep.amica.protocol.AmicaFrame;
@@ -45,25 +42,15 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
     private static final Codec<AmicaFrame, RejectReason, AmicaProtocolException> CODEC = new Codec<>(
             raw -> AmicaCodec.decode(raw, 0, raw.length), AmicaProtocolException.class, e -> e.reason());
 
-    /** More node-and-route pairs than any bus holds (nodes moving between routes): start the origins afresh. */
-    static final int MAX_ORIGINS = 20_000;
-
-    /** A node's origin text and the route it names. */
-    private record Origin<T>(T route, String text) {
-    }
-
     private final Nodes<R> nodes;
     private volatile Instant lastStamp;
-    /**
-     * The packet log's origin text per node and route ("node 1:17 via 127.0.0.1:5000"), formatted once rather than
-     * per frame (formatting the route and the origin was most of the packet log's cost on this
-     * thread). Keyed by the node alone, its route compared: a frame allocates no key (issue 29, item 1).
-     */
-    private final Map<AmicaAddress, Origin<R>> origins = new ConcurrentHashMap<>();
+    /** The packet log's "node 1:17 via 127.0.0.1:5000" of received frames, formatted once per node and route. */
+    private final Origins<R> origins;
 
     public FrameHandler(DriverContext context, Nodes<R> nodes, RejectCounter<RejectReason> rejects) {
         super(context, CODEC, rejects::reject);
         this.nodes = nodes;
+        this.origins = new Origins<>(nodes::describe);
     }
 
     /**
@@ -103,15 +90,7 @@ public final class FrameHandler<R> extends PacketIntake<AmicaFrame, RejectReason
 
     /** @return "node 1:17 via 127.0.0.1:5000", formatted at the first frame of that node by that route */
     String originOf(AmicaAddress sender, R from) {
-        Origin<R> o = origins.get(sender);
-        if (o == null || !Objects.equals(o.route(), from)) {
-            if (origins.size() >= MAX_ORIGINS) {
-                origins.clear();
-            }
-            o = new Origin<>(from, "node " + sender + " via " + nodes.describe(from));
-            origins.put(sender, o);
-        }
-        return o.text();
+        return origins.of(sender, from);
     }
 
     @Override

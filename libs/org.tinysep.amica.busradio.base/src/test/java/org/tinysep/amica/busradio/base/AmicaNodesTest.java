@@ -50,6 +50,25 @@ class AmicaNodesTest {
     }
 
     @Test
+    void aSentCommandsOriginIsFormattedOncePerNodeAndRoute() {
+        radio.feed(frame(1, 20, keepAlive(AmicaNodeType.DIMMABLE_LIGHT)), "first");
+        AmicaBusDevice<String> light = radio.nodes.find(new AmicaAddress(1, 20));
+        int before = radio.describes;
+
+        for (int i = 0; i < 50; i++) {
+            light.send(AmicaPayloads.encode(new LightControl(i)));
+        }
+
+        assertEquals(1, radio.describes - before, "routes formatted for 50 commands to one node by one route");
+        List<PacketEntry> packets = radio.logs.packets();
+        assertSame(packets.get(packets.size() - 1).origin(), packets.get(packets.size() - 2).origin());
+        radio.feed(frame(1, 20, AmicaPayloads.encode(new LightControl(10))), "second");
+        light.send(AmicaPayloads.encode(new LightControl(40)));
+        assertEquals("node 1.20 via route second", radio.logs.packets().get(radio.logs.packets().size() - 1).origin(),
+                "a new route is named anew");
+    }
+
+    @Test
     void aFailedTransmissionIsCountedAndNotedInThePacketLog() {
         radio.feed(frame(1, 20, keepAlive(AmicaNodeType.HEATER)), "tty");
         radio.failure = "not sent: port closed";
