@@ -76,5 +76,7 @@ class JvmOptionsTest {
         // session 33: C1 compiles later (once-used start code stays interpreted: a smaller code cache)
         double scaling = Double.parseDouble(set.getOrDefault("CompileThresholdScaling", "1.0"));
         assertTrue(scaling > 1.0, "C1 compiles later than the JDK's default: CompileThresholdScaling=" + scaling);
+        // session 34: no perf-data sampling (the watcher thread's 20 wake-ups a second at idle)
+        assertEquals("false", set.get("UsePerfData"), "perf data is off: UsePerfData=" + set.get("UsePerfData"));
     }
 }
