@@ -52,9 +52,9 @@ final class LightRooms implements Placements, AutoCloseable {
                 public void removedService(ServiceReference<Object> ref, String uid) {
                     Optional<String> left = null; // another light service of the same device may stay
                     ServiceReference<Object>[] refs = getServiceReferences();
-                    for (ServiceReference<Object> other : refs == null ? emptyRefs() : refs) {
-                        if (!other.equals(ref) && uid.equals(uidOf(other))) {
-                            left = roomOf(other);
+                    for (int i = 0; refs != null && i < refs.length; i++) {
+                        if (!refs[i].equals(ref) && uid.equals(uidOf(refs[i]))) {
+                            left = roomOf(refs[i]);
                         }
                     }
                     if (left == null) {
@@ -69,11 +69,6 @@ final class LightRooms implements Placements, AutoCloseable {
             throw new IllegalStateException(e);
         }
         tracker.open();
-    }
-
-    @SuppressWarnings("unchecked")
-    private static ServiceReference<Object>[] emptyRefs() {
-        return new ServiceReference[0];
     }
 
     private static String uidOf(ServiceReference<?> ref) {

@@ -54,7 +54,7 @@ class MovementReportCostTest {
     @Test
     void theEventStillNamesTheSensor() {
         flat.movementReported(hall, new MovementEvent(true, T0));
-        assertTrue(logs.events().stream().anyMatch(e -> e.message().equals("flat occupied (motion from hall-movement)")),
-                logs.events().toString());
+        assertTrue(logs.events().stream()
+                .anyMatch(e -> e.message().equals("flat occupied (motion from hall-movement)")), logs.events().toString());
     }
 }
