@@ -74,7 +74,7 @@ public final class FollowMeReportBench {
     public static void main(String[] args) {
         int calls = args.length > 0 ? Integer.parseInt(args[0]) : 2_000_000;
         int rounds = args.length > 1 ? Integer.parseInt(args[1]) : 9;
-        int cycles = Math.max(1000, calls / 20);
+        int cycles = Math.max(1000, calls / 200);
         Flat small = Flat.of(40);
         Flat large = Flat.of(400);
         MovementEvent report = new MovementEvent(true, T0.plusSeconds(1));
