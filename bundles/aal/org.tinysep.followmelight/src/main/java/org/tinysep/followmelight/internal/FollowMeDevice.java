@@ -41,12 +41,22 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
     private volatile Map<String, Room> rooms = Map.of();
     private volatile String occupancySource;
 
+    /** A device whose lights' rooms are read from {@code directory} as well (tests). */
     FollowMeDevice(DriverContext context, Placements directory, Duration grace, Percent brightness) {
+        this(context, directory, directory, grace, brightness);
+    }
+
+    /**
+     * @param directory  where sensors are (read per report) and what devices are called
+     * @param lightRooms where lights are, read when a light is connected or {@link #lightMoved moved}
+     */
+    FollowMeDevice(DriverContext context, Placements directory, Placements lightRooms, Duration grace,
+            Percent brightness) {
         super(context, Uids.of(context.driverName(), "follow-me"), context.driverName(), "Follow me light");
         this.directory = directory;
         this.grace = grace;
         this.logic = new FollowMeLogic(grace);
-        this.lights = new Lights(directory, brightness);
+        this.lights = new Lights(directory, lightRooms, brightness);
         status(DeviceStatus.State.ONLINE, "");
     }
 
@@ -91,6 +101,11 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
         rooms(p.rooms());
     }
 
+    /** The placement of light {@code uid} changed (the driver's {@link LightRooms} says so). */
+    void lightMoved(String uid) {
+        lights.moved(uid);
+    }
+
     /** A provider went away (the driver closes the connection). */
     void forget(String providerUid) {
         lights.forget(providerUid);
@@ -115,7 +130,9 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
             }
             return;
         }
-        unplacedReported.remove(sensorUid);
+        if (!unplacedReported.isEmpty()) {
+            unplacedReported.remove(sensorUid); // placed now: a later unplacing is reported again
+        }
         synchronized (logic) {
             apply(pet ? logic.petMotion(room, at) : logic.personMotion(room, at));
         }
@@ -141,6 +158,9 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
     }
 
     private void apply(List<Command> commands) {
+        if (commands.isEmpty()) {
+            return; // most reports: the room is lit already
+        }
         for (Command c : commands) {
             List<String> switched = c.on() ? lights.on(c.roomUid()) : lights.off(c.roomUid());
             event(roomName(c.roomUid()) + (c.on() ? " lit" : " dark") + " (" + c.reason() + ")"
@@ -150,6 +170,7 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
 
     private void rooms(List<Room> plan) {
         rooms = plan.stream().collect(Collectors.toUnmodifiableMap(Room::uid, Function.identity(), (a, b) -> a));
+        lights.movedAll(); // a room removed from the house unplaces its lights
     }
 
     private String roomName(String uid) {

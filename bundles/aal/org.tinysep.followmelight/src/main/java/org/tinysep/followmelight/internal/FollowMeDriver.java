@@ -30,10 +30,11 @@ public final class FollowMeDriver extends AbstractDriver {
     static final String PID = "org.tinysep.followmelight";
     static final String NAME = "FollowMeLight";
 
-    private SingleDeviceWiring<FollowMeDevice> wiring;
+    private volatile SingleDeviceWiring<FollowMeDevice> wiring;
     private Duration grace;
     private Percent brightness;
     private TrackedPlacements directory;
+    private LightRooms lightRooms;
     private PlatformTicker ticker;
 
     public FollowMeDriver() {
@@ -46,8 +47,9 @@ public final class FollowMeDriver extends AbstractDriver {
         brightness = Percent.of(Math.min(100, Math.max(1, config.brightness())));
         start(bundleContext);
         directory = new TrackedPlacements(bundleContext);
+        lightRooms = new LightRooms(bundleContext, directory, this::lightMoved);
         wiring = new SingleDeviceWiring<>(this, FollowMeDevice.class,
-                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDevice::forget);
+                () -> new FollowMeDevice(context(), directory, lightRooms, grace, brightness), FollowMeDevice::forget);
         wiring.optional(bundleContext, FlatOccupancyProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, HouseInformationProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, MovementProvider.class, FollowMeDevice::use);
@@ -63,6 +65,15 @@ public final class FollowMeDriver extends AbstractDriver {
         ticker.close();
         wiring.close();
         stop();
+        lightRooms.close();
         directory.close();
+    }
+
+    /** A light was placed, moved or unplaced: the device (if there is one yet) files it anew. */
+    private void lightMoved(String uid) {
+        SingleDeviceWiring<FollowMeDevice> w = wiring;
+        if (w != null) {
+            w.current().forEach(d -> d.lightMoved(uid));
+        }
     }
 }

@@ -14,29 +14,55 @@ import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.rooms.Placements;
 
 /**
- * The connected lights, found by room through the {@link Placements} at the moment of switching. Remembers
- * which lights this service switched on: only those are ever switched off, so a light a person switched on by
- * hand is left alone; a light a person switched off is forgotten.
+ * The connected lights, found by room in a {@link RoomIndex}: a light's room is read from {@code rooms} when the
+ * light is connected and again when it is said to have moved ({@link #moved}), not per switching, so lighting a
+ * room costs the same with 4 lights in the flat or 400. Remembers which lights this service switched on: only
+ * those are ever switched off, so a light a person switched on by hand is left alone; a light a person switched
+ * off is forgotten.
  */
 final class Lights {
 
     private final Placements directory;
+    private final Placements rooms;
     private final Percent brightness;
+    private final RoomIndex index = new RoomIndex();
     private final Map<String, Provider<?>> all = new LinkedHashMap<>();
     private final Set<String> ours = new HashSet<>();
 
-    Lights(Placements directory, Percent brightness) {
+    /**
+     * @param directory the names of the lights (for the event log)
+     * @param rooms     the rooms of the lights, read when a light is connected or moved
+     */
+    Lights(Placements directory, Placements rooms, Percent brightness) {
         this.directory = directory;
+        this.rooms = rooms;
         this.brightness = brightness;
     }
 
     synchronized void add(Provider<?> light) {
-        all.put(light.deviceUid(), light);
+        String uid = light.deviceUid();
+        all.put(uid, light);
+        index.place(uid, rooms.roomOf(uid).orElse(null));
     }
 
     synchronized void forget(String uid) {
         all.remove(uid);
         ours.remove(uid);
+        index.remove(uid);
+    }
+
+    /** Light {@code uid} may be in another room now (its placement changed): its room is read again. */
+    synchronized void moved(String uid) {
+        if (all.containsKey(uid)) {
+            index.place(uid, rooms.roomOf(uid).orElse(null));
+        }
+    }
+
+    /** Every light may be in another room now (the house plan changed): their rooms are read again. */
+    synchronized void movedAll() {
+        for (String uid : all.keySet()) {
+            index.place(uid, rooms.roomOf(uid).orElse(null));
+        }
     }
 
     /** A light reported it is off (by us or by hand): it is no longer ours to switch off. */
@@ -50,8 +76,9 @@ final class Lights {
      */
     synchronized List<String> on(String roomUid) {
         List<String> uids = new ArrayList<>();
-        for (Provider<?> p : all.values()) {
-            if (!roomUid.equals(directory.roomOf(p.deviceUid()).orElse(null)) || isOn(p)) {
+        for (String uid : index.in(roomUid)) {
+            Provider<?> p = all.get(uid);
+            if (isOn(p)) {
                 continue;
             }
             if (p instanceof DimmableLightProvider d) {
@@ -59,8 +86,8 @@ final class Lights {
             } else if (p instanceof SimpleLightProvider s) {
                 s.switchLight(true);
             }
-            ours.add(p.deviceUid());
-            uids.add(p.deviceUid());
+            ours.add(uid);
+            uids.add(uid);
         }
         return names(uids);
     }
@@ -73,7 +100,7 @@ final class Lights {
 
     /** Switches off the room's lights that this service switched on. @return their names */
     synchronized List<String> off(String roomUid) {
-        return offWhere(uid -> roomUid.equals(directory.roomOf(uid).orElse(null)));
+        return offWhere(uid -> roomUid.equals(index.roomOf(uid)));
     }
 
     /** Switches off every light this service switched on, wherever it is now. @return their names */

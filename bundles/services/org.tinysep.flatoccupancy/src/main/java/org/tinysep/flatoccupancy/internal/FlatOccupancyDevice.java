@@ -52,12 +52,15 @@ final class FlatOccupancyDevice extends WholeFlatDevice
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
+    /** Why a leave check ended in UNOCCUPIED, in the event's words (the same for every leave check). */
+    private final String leaveReason;
     private final Set<String> windows = ConcurrentHashMap.newKeySet();
 
     FlatOccupancyDevice(DriverContext context, Duration leaveTimeout, Duration exitGrace) {
         super(context, Uids.of(context.driverName(), "flat"), context.driverName(), "Flat occupancy");
         this.listeners = new Listeners<>(uid());
         this.leaveTimeout = leaveTimeout;
+        this.leaveReason = "no indoor activity for " + leaveTimeout.toSeconds() + " s after the door closed";
         this.logic = new OccupancyLogic(leaveTimeout, exitGrace, context.now());
         publish(this, FlatOccupancyProvider.class);
     }
@@ -100,7 +103,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
     @Override
     public void windowChanged(WindowProvider source, OpenState state, boolean first, Instant at) {
         if (!first && state != OpenState.UNKNOWN) {
-            activity(at, "window " + source.deviceUid() + " " + state.name().toLowerCase());
+            activity(at, () -> "window " + source.deviceUid() + " " + state.name().toLowerCase());
         }
     }
 
@@ -118,19 +121,37 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         Optional<Occupancy> change = step(now(), l -> source.kind().holdsPerson()
                 ? l.holdsPerson(source.deviceUid(), present, first, at)
                 : first ? Optional.empty() : l.indoorActivity(at));
-        announce(change, at, source.kind().name().toLowerCase() + " " + source.deviceUid() + " "
+        announce(change, at, () -> source.kind().name().toLowerCase() + " " + source.deviceUid() + " "
                 + (present ? "on" : "off"));
     }
 
     /** Indoor activity other than motion (an inner door, a window, a contact). */
-    private void activity(Instant at, String what) {
+    private void activity(Instant at, Supplier<String> what) {
         announce(step(now(), l -> l.indoorActivity(at)), at, what);
     }
 
+    /**
+     * The radio's delivery thread calls this for every report of every movement sensor: one step of the logic and
+     * nothing else (no closure, no time arithmetic); the event's words are built only when the decision changes.
+     */
     @Override
     public void movementReported(MovementProvider source, MovementEvent movement) {
-        if (movement.detected() && source.location() == MovementLocation.INSIDE) {
-            announce(step(now(), l -> l.motion(movement.at())), movement.at(), "motion from " + source.deviceUid());
+        if (!movement.detected() || source.location() != MovementLocation.INSIDE) {
+            return;
+        }
+        Instant now = now();
+        Instant at = movement.at();
+        Optional<Occupancy> change;
+        Optional<Instant> wentBack;
+        synchronized (logic) {
+            wentBack = logic.rebase(now);
+            change = logic.motion(at);
+        }
+        if (wentBack.isPresent()) {
+            clockWentBack(wentBack.get(), now);
+        }
+        if (change.isPresent()) {
+            announce(change.get(), at, "motion from " + source.deviceUid());
         }
     }
 
@@ -145,7 +166,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         }
         if (source.kind() != DoorKind.OUTER) {
             if (!first) {
-                activity(at, "inner door " + source.deviceUid() + " " + state.name().toLowerCase());
+                activity(at, () -> "inner door " + source.deviceUid() + " " + state.name().toLowerCase());
             }
             return;
         }
@@ -154,7 +175,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         if (state == OpenState.CLOSED) {
             saveBackup(); // a pending leave check survives a crash
         }
-        announce(change, at, "outer door " + source.deviceUid() + " " + state.name().toLowerCase());
+        announce(change, at, () -> "outer door " + source.deviceUid() + " " + state.name().toLowerCase());
     }
 
     /** A caller of the sensor API 1.0 call reports a change. */
@@ -165,8 +186,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
 
     /** Advances the algorithm's clock; called every second by the driver. */
     void tick(Instant now) {
-        announce(step(now, l -> l.tick(now)), now,
-                "no indoor activity for " + leaveTimeout.toSeconds() + " s after the door closed");
+        announce(step(now, l -> l.tick(now)), now, () -> leaveReason);
     }
 
     /**
@@ -182,27 +202,32 @@ final class FlatOccupancyDevice extends WholeFlatDevice
             wentBack = logic.rebase(now);
             change = step.apply(logic);
         }
-        clockWentBack(wentBack, now);
+        if (wentBack.isPresent()) {
+            clockWentBack(wentBack.get(), now);
+        }
         return change;
     }
 
-    private void announce(Optional<Occupancy> change, Instant at, String reason) {
-        change.ifPresent(o -> {
-            status(DeviceStatus.State.ONLINE, "");
-            event("flat " + o.name().toLowerCase() + " (" + reason + ")");
-            saveBackup(); // the decision survives a restart
-            listeners.fire(l -> l.occupancyChanged(this, o, at));
-        });
+    /** Announces a change, if any; {@code reason} is asked for its words only then. */
+    private void announce(Optional<Occupancy> change, Instant at, Supplier<String> reason) {
+        if (change.isPresent()) {
+            announce(change.get(), at, reason.get());
+        }
     }
 
-    /** The clock went back: says so (the logic already re-based its times on the new clock). */
-    private void clockWentBack(Optional<Instant> from, Instant now) {
-        from.ifPresent(f -> {
-            event("clock went back from " + f.truncatedTo(ChronoUnit.SECONDS) + " to "
-                    + now.truncatedTo(ChronoUnit.SECONDS) + ": occupancy times and any leave check counted "
-                    + "from now");
-            saveBackup();
-        });
+    private void announce(Occupancy o, Instant at, String reason) {
+        status(DeviceStatus.State.ONLINE, "");
+        event("flat " + o.name().toLowerCase() + " (" + reason + ")");
+        saveBackup(); // the decision survives a restart
+        listeners.fire(l -> l.occupancyChanged(this, o, at));
+    }
+
+    /** The clock went back from {@code from}: says so (the logic already re-based its times on the new clock). */
+    private void clockWentBack(Instant from, Instant now) {
+        event("clock went back from " + from.truncatedTo(ChronoUnit.SECONDS) + " to "
+                + now.truncatedTo(ChronoUnit.SECONDS) + ": occupancy times and any leave check counted "
+                + "from now");
+        saveBackup();
     }
 
     @Override

@@ -39,6 +39,17 @@ final class OccupancyLogic {
     private Instant since;
     private Instant lastClose;
     private Instant leaveDeadline;
+    /**
+     * {@code lastClose + exitGrace}, or null without a close: kept when {@code lastClose} is set, so an activity
+     * is checked against it without time arithmetic per report.
+     */
+    private Instant graceEnd;
+    /**
+     * The earliest {@code now} at which neither {@code since} nor {@code lastClose} lies beyond {@link #CLOCK_SLACK}
+     * after it ({@code max(since, lastClose) - CLOCK_SLACK}): {@link #rebase} has nothing to do from then on, which
+     * it sees with one comparison per report instead of adding the slack to every {@code now}.
+     */
+    private Instant settled;
     /** Sensors that say someone is here right now (a bed or seat mat that is ON). */
     private final Set<String> here = new TreeSet<>();
 
@@ -49,7 +60,23 @@ final class OccupancyLogic {
         }
         this.leaveTimeout = leaveTimeout;
         this.exitGrace = exitGrace;
-        this.since = Objects.requireNonNull(start, "start");
+        since(Objects.requireNonNull(start, "start"));
+    }
+
+    private void since(Instant at) {
+        since = at;
+        settle();
+    }
+
+    private void lastClose(Instant at) {
+        lastClose = at;
+        graceEnd = at == null ? null : at.plus(exitGrace);
+        settle();
+    }
+
+    private void settle() {
+        Instant latest = lastClose != null && lastClose.isAfter(since) ? lastClose : since;
+        settled = latest.minus(CLOCK_SLACK);
     }
 
     /** Indoor motion was reported at {@code at}. */
@@ -63,7 +90,7 @@ final class OccupancyLogic {
      * grace after the outer door closed (the leaving person).
      */
     Optional<Occupancy> indoorActivity(Instant at) {
-        if (lastClose != null && at.isBefore(lastClose.plus(exitGrace))) {
+        if (graceEnd != null && at.isBefore(graceEnd)) {
             return Optional.empty();
         }
         leaveDeadline = null;
@@ -103,7 +130,7 @@ final class OccupancyLogic {
 
     /** An outer door closed at {@code at}: someone may have left. */
     Optional<Occupancy> outerDoorClosed(Instant at) {
-        lastClose = at;
+        lastClose(at);
         leaveDeadline = at.plus(leaveTimeout);
         return Optional.empty();
     }
@@ -115,15 +142,18 @@ final class OccupancyLogic {
      * @return the latest such time (where the clock came back from), empty when the clock did not go back
      */
     Optional<Instant> rebase(Instant now) {
+        if (!now.isBefore(settled)) {
+            return Optional.empty(); // nothing lies beyond the slack after now: the common case, no arithmetic
+        }
         Instant limit = now.plus(CLOCK_SLACK);
         Instant from = null;
         if (since.isAfter(limit)) {
             from = since;
-            since = now;
+            since(now);
         }
         if (lastClose != null && lastClose.isAfter(limit)) {
             from = from == null || lastClose.isAfter(from) ? lastClose : from;
-            lastClose = now;
+            lastClose(now);
             if (leaveDeadline != null) {
                 leaveDeadline = now.plus(leaveTimeout);
             }
@@ -142,8 +172,8 @@ final class OccupancyLogic {
      */
     void restore(Saved saved) {
         state = saved.state() == null ? Occupancy.UNKNOWN : saved.state();
-        since = saved.since() == null ? since : saved.since();
-        lastClose = saved.lastClose();
+        since(saved.since() == null ? since : saved.since());
+        lastClose(saved.lastClose());
         leaveDeadline = saved.leaveDeadline();
     }
 
@@ -165,7 +195,7 @@ final class OccupancyLogic {
             return Optional.empty();
         }
         state = next;
-        since = at;
+        since(at);
         return Optional.of(next);
     }
 

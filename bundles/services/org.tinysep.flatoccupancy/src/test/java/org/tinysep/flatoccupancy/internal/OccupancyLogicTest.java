@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.Optional;
+import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.service.Occupancy;
 
@@ -70,6 +71,33 @@ class OccupancyLogicTest {
         logic.outerDoorClosed(at(20));
         assertEquals(Occupancy.OCCUPIED, logic.state());
         assertEquals(Optional.of(Occupancy.UNOCCUPIED), logic.tick(at(620)));
+    }
+
+    /**
+     * The clock check and the exit grace are answered from times kept when {@code since} or the last close change
+     * (no sums per report): over random times, what they decide is what the sums decided.
+     */
+    @Test
+    void keptTimesDecideAsTheSumsPerReportDid() {
+        Random random = new Random(29);
+        for (int i = 0; i < 100_000; i++) {
+            Instant since = T0.plusMillis(random.nextInt(20_000));
+            Instant close = random.nextBoolean() ? null : T0.plusMillis(random.nextInt(20_000));
+            Instant now = T0.plusMillis(random.nextInt(20_000));
+            OccupancyLogic l = new OccupancyLogic(Duration.ofMinutes(10), Duration.ofSeconds(10), T0);
+            l.restore(new OccupancyLogic.Saved(Occupancy.OCCUPIED, since, close,
+                    close == null ? null : close.plus(Duration.ofMinutes(10))));
+            boolean wentBack = since.isAfter(now.plus(OccupancyLogic.CLOCK_SLACK))
+                    || close != null && close.isAfter(now.plus(OccupancyLogic.CLOCK_SLACK));
+            assertEquals(wentBack, l.rebase(now).isPresent(), since + " " + close + " " + now);
+            if (!wentBack && close != null) {
+                Instant at = T0.plusMillis(random.nextInt(40_000));
+                boolean ignored = at.isBefore(close.plus(Duration.ofSeconds(10)));
+                l.indoorActivity(at);
+                assertEquals(ignored, l.leaveDeadline().isPresent(),
+                        "activity at " + at + " after a close at " + close + " within the exit grace");
+            }
+        }
     }
 
     @Test
