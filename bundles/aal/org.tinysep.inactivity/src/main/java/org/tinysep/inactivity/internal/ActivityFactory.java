@@ -41,7 +41,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     private final LimitTable limits;
     private final LimitPolicy policy;
     private final Supplier<Instant> clock;
-    private final Consumer<Activity> sink;
+    private final Sink sink;
     private volatile Map<String, Room> rooms = Map.of();
     private final UnplacedNames unplaced;
     /** The room (UID, empty if unplaced) of the last activity, null before the first. */
@@ -51,17 +51,27 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     /** More reporting devices than a home has: start the spots afresh (bounded memory). */
     static final int MAX_SPOTS = 4_096;
 
+    /**
+     * Receives every activity with the platform's time it was made at: the clock is read once per report, for the
+     * limit (the learner's day) and for the detector (issue 29, item 1: the platform's time was asked twice per
+     * movement report, each time through the Time Controller's lock).
+     */
+    @FunctionalInterface
+    interface Sink {
+        void accept(Activity activity, Instant now);
+    }
+
     /** @param sink receives every activity: indoor motion, door and window changes (not their first reports) */
     ActivityFactory(Placements directory, LimitTable limits, Consumer<Activity> sink) {
-        this(directory, limits, LimitPolicy.thesis(), Instant::now, sink);
+        this(directory, limits, LimitPolicy.thesis(), Instant::now, (a, now) -> sink.accept(a));
     }
 
     /**
      * @param policy sets each activity's limit (fixed or learned) from the room's fixed limit
-     * @param clock  the platform's time
+     * @param clock  the platform's time, read once per activity
      */
     ActivityFactory(Placements directory, LimitTable limits, LimitPolicy policy, Supplier<Instant> clock,
-            Consumer<Activity> sink) {
+            Sink sink) {
         this.directory = directory;
         this.limits = limits;
         this.policy = policy;
@@ -74,14 +84,14 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     public void movementReported(MovementProvider source, MovementEvent movement) {
         if (movement.detected() && source.location() == MovementLocation.INSIDE) {
             Spot s = spot(source.deviceUid());
-            sink.accept(of(s.placed(), s.movement(), movement.at(), false, false, false));
+            emit(s.placed(), s.movement(), movement.at(), false, false, false);
         }
     }
 
     @Override
     public void doorChanged(DoorProvider source, OpenState state, boolean first, Instant at) {
         if (!first && state != OpenState.UNKNOWN) {
-            sink.accept(of(source.deviceUid(), n -> "door " + n + " " + lower(state), at));
+            emit(source.deviceUid(), n -> "door " + n + " " + lower(state), at);
         }
     }
 
@@ -94,7 +104,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     @Override
     public void windowChanged(WindowProvider source, OpenState state, boolean first, Instant at) {
         if (!first && state != OpenState.UNKNOWN) {
-            sink.accept(of(source.deviceUid(), n -> "window " + n + " " + lower(state), at));
+            emit(source.deviceUid(), n -> "window " + n + " " + lower(state), at);
         }
     }
 
@@ -118,8 +128,7 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         if (finishedByItself(source.kind(), present, p.uid(), lastRoom)) {
             return;
         }
-        sink.accept(of(p, source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated,
-                up));
+        emit(p, source.deviceUid(), n -> what + " " + n + (present ? " on" : " off"), at, inBed, seated, up);
     }
 
     /**
@@ -148,27 +157,26 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
      * @param deviceUid the reporting device
      * @param what      builds the description from the device's name, e.g. {@code n -> "movement by " + n}
      */
-    private Activity of(String deviceUid, Function<String, String> what, Instant at) {
-        return of(deviceUid, what, at, false, false, false);
+    private void emit(String deviceUid, Function<String, String> what, Instant at) {
+        emit(spot(deviceUid).placed(), deviceUid, what, at, false, false, false);
     }
 
-    private Activity of(String deviceUid, Function<String, String> what, Instant at, boolean inBed, boolean seated,
-            boolean upFromBed) {
-        return of(spot(deviceUid).placed(), deviceUid, what, at, inBed, seated, upFromBed);
-    }
-
-    private Activity of(Placed p, String deviceUid, Function<String, String> what, Instant at, boolean inBed,
+    private void emit(Placed p, String deviceUid, Function<String, String> what, Instant at, boolean inBed,
             boolean seated, boolean upFromBed) {
         // the device's name is a registry look-up: made when the description is read, not per activity
-        return of(p, () -> what.apply(directory.nameOf(deviceUid)), at, inBed, seated, upFromBed);
+        emit(p, () -> what.apply(directory.nameOf(deviceUid)), at, inBed, seated, upFromBed);
     }
 
-    private Activity of(Placed p, Supplier<String> describe, Instant at, boolean inBed, boolean seated,
+    /** Makes the activity (its limit from the policy) and hands it on, with the platform's time read once. */
+    private void emit(Placed p, Supplier<String> describe, Instant at, boolean inBed, boolean seated,
             boolean upFromBed) {
-        lastRoom = p.uid();
+        if (!p.uid().equals(lastRoom)) {
+            lastRoom = p.uid(); // a volatile write (a fence) only when the room changes, not per report
+        }
+        Instant now = clock.get();
         Limit l = policy.limitAfter(new Sighting(at, p.uid(), p.name(), p.type(), inBed, seated, upFromBed), p.fixed(),
-                clock.get());
-        return Activity.described(p.uid(), p.name(), describe, at, l.limit(), l.explanation());
+                now);
+        sink.accept(Activity.described(p.uid(), p.name(), describe, at, l.limit(), l.explanation()), now);
     }
 
     /**

@@ -44,15 +44,21 @@ final class ActivityFeed {
             wentBack = logic.rebase(now); // the platform's time, not the report's: a late report is no clock step
             change = logic.activity(a);
         }
-        wentBack.ifPresent(from -> clockWentBack(from, now));
+        if (wentBack.isPresent()) { // no closure per activity
+            clockWentBack(wentBack.get(), now);
+        }
         rooms.seen(a);
-        side.changed(); // last activity per room, saved at most every 10 s (docs/backup.md)
+        // last activity per room (and a wearer's watch), saved at most every 10 s (docs/backup.md): looked at once
+        // per activity, not twice (issue 29, item 1)
+        side.changed();
         if (change.isPresent()) { // the reason's closure is built on a change only, not per activity
             announcer.announce(change, a.at(), () -> a.description() + " in " + a.roomName());
         }
         List<String> said = persons.get().room(a, now);
-        said.forEach(side::event);
-        personSave(said);
+        if (!said.isEmpty()) {
+            said.forEach(side::event);
+            side.save(); // a wearer's watch said something: saved at once
+        }
     }
 
     /** A person node's movement summary: its wearer's activity, and the flat's when someone moved. */

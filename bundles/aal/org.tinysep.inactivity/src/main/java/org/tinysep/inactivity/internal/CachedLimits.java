@@ -3,6 +3,7 @@ package org.tinysep.inactivity.internal;
 import java.time.Duration;
 import java.time.Instant;
 import java.time.ZoneId;
+import java.time.zone.ZoneOffsetTransition;
 import java.time.zone.ZoneRules;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -62,10 +63,15 @@ final class CachedLimits {
     private final LearnedLimits limits;
     private final AtomicLong computed = new AtomicLong();
     private volatile Answers answers = fresh(null);
-    private volatile Zone zone = new Zone(null, null);
+    private volatile Zone zone = new Zone(null, null, 0, 0, 0);
 
-    /** The home's zone and its rules (a fixed offset's rules are a new object per call in Java 17). */
-    private record Zone(ZoneId id, ZoneRules rules) {
+    /**
+     * The home's zone, its rules (a fixed offset's rules are a new object per call in Java 17), and its offset from
+     * UTC, valid from {@code from} until {@code until} (epoch seconds, exclusive: the zone's next transition). A
+     * region's offset asked of its rules per activity cost a local date and a boxed year per question (issue 29,
+     * item 1); it changes twice a year.
+     */
+    private record Zone(ZoneId id, ZoneRules rules, long from, long until, int offset) {
     }
 
     CachedLimits(LearnedLimits limits) {
@@ -87,7 +93,7 @@ final class CachedLimits {
         }
         SleepRule rule = limits.history().sleep();
         Slots room = slots(a, s, fixed);
-        long local = localSeconds(s.at(), rules(rule.zone()));
+        long local = localSeconds(s.at(), rule.zone());
         boolean asleep = room.asleep(s, hourOf(local), rule);
         Limit[] slots = room.answers();
         int i = index(local, asleep, s.seated() && !asleep);
@@ -115,13 +121,18 @@ final class CachedLimits {
         return slots;
     }
 
-    private ZoneRules rules(ZoneId id) {
+    /** @return {@code at} as seconds of the local time line of {@code id} (the epoch's local midnight is 0) */
+    long localSeconds(Instant at, ZoneId id) {
         Zone z = zone;
-        if (z.id() != id) {
-            z = new Zone(id, id.getRules());
+        long sec = at.getEpochSecond();
+        if (z.id() != id || sec < z.from() || sec >= z.until()) {
+            ZoneRules rules = z.id() == id ? z.rules() : id.getRules();
+            ZoneOffsetTransition next = rules.nextTransition(at);
+            z = new Zone(id, rules, sec, next == null ? Long.MAX_VALUE : next.toEpochSecond(),
+                    rules.getOffset(at).getTotalSeconds());
             zone = z;
         }
-        return z.rules();
+        return sec + z.offset();
     }
 
     /** @return the answer's place: the state, weekday or weekend, and the local hour of {@code at} */

@@ -85,7 +85,7 @@ final class InactivityDevice extends WholeFlatDevice
         this.words = words;
         this.announcer = new StateAnnouncer(logic, help, words, () -> persons, side);
         this.feed = new ActivityFeed(logic, rooms, policy, words, () -> persons, announcer, side);
-        this.activities = new ActivityFactory(directory, limits, policy, this::now, a -> feed.activity(a, now()));
+        this.activities = new ActivityFactory(directory, limits, policy, this::now, feed::activity);
         this.history = new LoggedHistory(fromLog, activities);
         watchPersons(WearerSettings.defaults(), java.time.ZoneId.systemDefault(), HelpCall::inFramework);
         limits.problems().forEach(p -> context.reporter().event(EventKind.PROBLEM, uid(), p));

@@ -32,6 +32,7 @@ final class InactivityLogic {
 
     /** Times this much later than {@code now} are threads racing, not a clock that went back. */
     static final Duration CLOCK_SLACK = Duration.ofSeconds(2);
+    private static final long SLACK_SECONDS = CLOCK_SLACK.getSeconds();
 
     private final Duration defaultLimit;
     private Instant start;
@@ -101,27 +102,36 @@ final class InactivityLogic {
      * @return the latest such time (where the clock came back from), empty when the clock did not go back
      */
     Optional<Instant> rebase(Instant now) {
-        Instant limit = now.plus(CLOCK_SLACK);
         Instant from = null;
-        if (last != null && last.at().isAfter(limit)) {
+        if (last != null && ahead(last.at(), now)) {
             from = last.at();
             last = last.at(now);
         }
-        if (watchingFrom != null && watchingFrom.isAfter(limit)) {
+        if (watchingFrom != null && ahead(watchingFrom, now)) {
             from = later(from, watchingFrom);
             watchingFrom = now;
         }
-        if (pausedFrom != null && pausedFrom.isAfter(limit)) {
+        if (pausedFrom != null && ahead(pausedFrom, now)) {
             pausedFrom = now;
         }
-        if (since.isAfter(limit)) {
+        if (ahead(since, now)) {
             from = later(from, since);
             since = now;
         }
-        if (start.isAfter(limit)) {
+        if (ahead(start, now)) {
             start = now;
         }
         return Optional.ofNullable(from);
+    }
+
+    /**
+     * @return whether {@code t} lies more than {@link #CLOCK_SLACK} after {@code now}, i.e.
+     *         {@code t.isAfter(now.plus(CLOCK_SLACK))}, without a new Instant per question (asked per activity:
+     *         issue 29, item 1)
+     */
+    static boolean ahead(Instant t, Instant now) {
+        long seconds = t.getEpochSecond() - now.getEpochSecond() - SLACK_SECONDS;
+        return seconds > 0 || seconds == 0 && t.getNano() > now.getNano();
     }
 
     private static Instant later(Instant a, Instant b) {

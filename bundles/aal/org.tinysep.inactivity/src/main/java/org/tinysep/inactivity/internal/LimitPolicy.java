@@ -5,7 +5,6 @@ import java.time.Instant;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.Limit;
 import org.tinysep.inactivity.internal.learn.Sighting;
-import org.tinysep.inactivity.internal.learn.Amounts;
 
 /** Sets the limit of the quiet period that an activity begins: fixed (THESIS) or learned (LEARNED). */
 interface LimitPolicy {
@@ -25,10 +24,9 @@ interface LimitPolicy {
         return Detector.THESIS.name();
     }
 
-    /** The thesis's fixed per-room limits. */
+    /** The thesis's fixed per-room limits (each room's words made once, {@link FixedLimits}). */
     static LimitPolicy thesis() {
-        return (s, fixed, now) -> new Limit(fixed, false,
-                "fixed limit of " + Amounts.duration(fixed) + " for " + s.roomName() + " (detector THESIS)");
+        return new FixedLimits();
     }
 
     /** Learned limits; every activity is also learned from; answers reused until the next learning. */

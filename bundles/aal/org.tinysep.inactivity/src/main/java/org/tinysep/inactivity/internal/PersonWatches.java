@@ -59,6 +59,12 @@ final class PersonWatches {
     private final Map<String, Watch> watches = new LinkedHashMap<>();
     private final Set<String> unnamed = new HashSet<>();
     private Occupancy occupancy = Occupancy.UNKNOWN;
+    /**
+     * Whether any wearer is watched (written under this object's lock): without one (most homes) a room activity
+     * is nobody's and is answered without taking the lock, so a wearer's alert being handed on (under the lock, to
+     * the alert service or a Mail Manager) never holds up the radio's delivery thread (issue 29, item 1).
+     */
+    private volatile boolean anyone;
 
     PersonWatches(Wearers wearers, PersonAlertWords words, Duration defaultLimit, HelpCall.AlertDesk desk,
             Supplier<Optional<MailManagerProvider>> mailer) {
@@ -85,6 +91,7 @@ final class PersonWatches {
             }
             return n;
         });
+        anyone = true;
         List<String> events = new ArrayList<>();
         wearers.summary(nodeUid, who, s).ifPresent(n -> events.add(n.words()));
         if (!wearers.moving(s)) {
@@ -102,7 +109,16 @@ final class PersonWatches {
     }
 
     /** A room sensor's activity: counted for the wearers it may be. */
-    synchronized List<String> room(Activity a, Instant now) {
+    List<String> room(Activity a, Instant now) {
+        if (!anyone) {
+            return List.of(); // nobody's watch to feed: no lock, nothing built per activity
+        }
+        synchronized (this) {
+            return roomLocked(a, now);
+        }
+    }
+
+    private List<String> roomLocked(Activity a, Instant now) {
         Wearers.Attribution who = wearers.room(a.at(), a.roomUid(), a.roomName());
         if (who.notices().isEmpty() && who.countsFor().isEmpty()) {
             return List.of(); // nobody's watch to feed (no wearer): nothing built per activity
@@ -198,6 +214,7 @@ final class PersonWatches {
     /** The node went away: its wearer is no longer watched (an alert already handed on stays open). */
     synchronized void remove(String nodeUid) {
         watches.remove(nodeUid);
+        anyone = !watches.isEmpty();
         wearers.remove(nodeUid);
         unnamed.remove(nodeUid);
     }
@@ -231,6 +248,7 @@ final class PersonWatches {
             w.handedOver = s.handedOver();
             w.toService = s.toService();
             watches.put(uid, w);
+            anyone = true;
             unnamed.remove(uid);
             Wearers.View v = wearers.view(uid).orElseThrow();
             events.add("restored after a restart: " + v.person() + "'s watch: " + (s.last() == null ? "no activity "

@@ -26,7 +26,7 @@ final class RoomActivity {
     synchronized void seen(Activity a) {
         if (!a.roomUid().isEmpty()) {
             perRoom.merge(a.roomUid(), a.at(), (old, now) -> now.isAfter(old)
-                    || old.isAfter(now.plus(InactivityLogic.CLOCK_SLACK)) ? now : old);
+                    || InactivityLogic.ahead(old, now) ? now : old);
         }
     }
 
