@@ -14,6 +14,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.tinysep.device.support.testing.AllocationMeter;
 import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.LearningSettings;

@@ -25,6 +25,7 @@ import org.tinysep.api.service.Occupancy;
 import org.tinysep.api.service.Room;
 import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.testing.AllocationMeter;
 import org.tinysep.device.support.testing.FakeHouse;
 import org.tinysep.device.support.testing.FakePlacements;
 import org.tinysep.device.support.time.PlatformClock;

@@ -15,6 +15,7 @@ import org.tinysep.api.sensor.OpenState;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.testing.AllocationMeter;
 import org.tinysep.device.support.time.PlatformClock;
 
 /**

@@ -11,7 +11,7 @@ import java.time.ZoneId;
 import java.time.ZonedDateTime;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
-import org.tinysep.inactivity.internal.AllocationMeter;
+import org.tinysep.device.support.testing.AllocationMeter;
 
 /**
  * Issue 29, item 1: the learned profile is asked for per activity; within the local day it was built for the answer

@@ -10,7 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
-import org.tinysep.inactivity.internal.AllocationMeter;
+import org.tinysep.device.support.testing.AllocationMeter;
 
 /**
  * Issue 29, item 1: in a home without a worn node (most homes) every room activity still asked whose it was,
