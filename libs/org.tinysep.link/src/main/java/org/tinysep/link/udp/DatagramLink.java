@@ -46,6 +46,10 @@ public final class DatagramLink implements AutoCloseable {
     private final LinkThread receiveThread;
     private final ByteBuffer buffer = ByteBuffer.allocate(RECEIVE_BUFFER);
     private volatile boolean open = true;
+    // counted by the receive loop only, read by the cost tests
+    private volatile long loopWaits;
+    private volatile long loopEmptyReceives;
+    private volatile long loopDatagrams;
 
     private DatagramLink(DatagramChannel channel, Selector selector, String threadName) {
         this.channel = channel;
@@ -125,8 +129,25 @@ public final class DatagramLink implements AutoCloseable {
                 }
                 continue;
             }
-            drain(receiver);
+            loopWaits++;
+            loopDatagrams += drain(receiver);
+            loopEmptyReceives++; // the drain ends on a receive that found nothing
         }
+    }
+
+    /** How often the receive loop waited for the socket to become readable. */
+    long loopWaits() {
+        return loopWaits;
+    }
+
+    /** How many receives of the receive loop found nothing waiting (a system call spent for nothing). */
+    long loopEmptyReceives() {
+        return loopEmptyReceives;
+    }
+
+    /** How many datagrams the receive loop handed over (not counting those of {@link #drain}). */
+    long loopDatagrams() {
+        return loopDatagrams;
     }
 
     /**
