@@ -30,8 +30,12 @@ import java.util.stream.Stream;
  * {@code rate x seconds} datagrams paced by one sender thread (it parks until each is due, so at high rates a few go
  * at once), at most 5 s more to receive them. As the AmICA radio, the link runs with a tick that drains it every
  * second from another thread. Printed per step: datagrams sent and received, the receive thread's CPU per datagram
- * (ns from {@code /proc/self/task/<tid>/schedstat}, and µs from the clock ticks of {@code stat} as a check),
+ * (ns from {@code /proc/self/task/<tid>/schedstat}, and us from the clock ticks of {@code stat} as a check),
  * voluntary context switches (wake-ups) and bytes allocated per datagram, and the thread's tid.
+ * <p>
+ * {@code -Dcost.tracer='perf stat -e raw_syscalls:sys_enter -t {tid} -o /tmp/{name}.perf'} (or
+ * {@code strace -c -p {tid} -o ...}) runs a tracer on the receive thread for the measured part of each step only, and
+ * stops it with SIGINT ({@code {tid}}: the thread's id, {@code {name}}: the step's).
  */
 public final class DatagramLinkCost {
 
@@ -77,16 +81,36 @@ public final class DatagramLinkCost {
             sender.send(WARM_UP, 50_000);
             awaitCount(received, WARM_UP, 5);
             long tid = tid(name);
+            Process tracer = tracer(tid, name);
             Sample before = Sample.of(tid, javaId.get());
             long got0 = received.get();
             sender.send(count, rate);
             awaitCount(received, got0 + count, 5);
             Sample after = Sample.of(tid, javaId.get());
+            stop(tracer);
             long got = received.get() - got0;
             double n = Math.max(1, got);
             System.out.printf("%-5s %6d %8d %8d %12.0f %13.2f %14.3f %12.1f  %d%n", mode, rate, count, got,
                     (after.cpuNanos - before.cpuNanos) / n, (after.ticks - before.ticks) * 10_000.0 / n,
                     (after.wakeups - before.wakeups) / n, (after.allocated - before.allocated) / n, tid);
+        }
+    }
+
+    private static Process tracer(long tid, String name) throws IOException, InterruptedException {
+        String command = System.getProperty("cost.tracer");
+        if (command == null) {
+            return null;
+        }
+        command = command.replace("{tid}", Long.toString(tid)).replace("{name}", name);
+        Process p = new ProcessBuilder("sh", "-c", "exec " + command).inheritIO().start();
+        Thread.sleep(500); // attached
+        return p;
+    }
+
+    private static void stop(Process tracer) throws IOException, InterruptedException {
+        if (tracer != null) {
+            new ProcessBuilder("kill", "-INT", Long.toString(tracer.pid())).inheritIO().start().waitFor();
+            tracer.waitFor(10, TimeUnit.SECONDS);
         }
     }
 
