@@ -88,9 +88,10 @@ class ReceiveLoopCostTest {
     }
 
     /**
-     * The receive thread allocates nothing per datagram from one sender: no selected-key set entry per wake-up (the
-     * JDK reuses the sender's address while it does not change). Measured on the receive thread itself, over
-     * isolated datagrams (one wake-up each).
+     * The receive thread allocates nothing of its own per datagram from one sender: no selected-key set entry (32
+     * bytes) per wake-up; the JDK reuses the sender's address while it does not change. What remains is the JDK's:
+     * its selector boxes the socket's file descriptor number to find its key, 16 bytes per wake-up once the number is
+     * above 127 (the Integer cache). Measured on the receive thread itself, over isolated datagrams (a wake-up each).
      */
     @Test
     void receivingAllocatesNothingPerDatagram() throws Exception {
@@ -120,7 +121,7 @@ class ReceiveLoopCostTest {
                 LockSupport.parkNanos(TimeUnit.MICROSECONDS.toNanos(200));
             }
             double perDatagram = (to.get() - from.get()) / (double) (last - first);
-            assertTrue(perDatagram < 4, String.format("bytes allocated on the receive thread per datagram: %.2f",
+            assertTrue(perDatagram < 24, String.format("bytes allocated on the receive thread per datagram: %.2f",
                     perDatagram));
         }
     }
