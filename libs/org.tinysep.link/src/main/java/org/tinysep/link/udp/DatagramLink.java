@@ -23,7 +23,8 @@ import org.slf4j.LoggerFactory;
  * sent while the Time Controller handles a TICK is then on the wire before its DONE. A receiver that throws is
  * logged and the loop goes on.
  * <p>
- * The loop costs a datagram that arrives alone one wait (epoll) and its receive; a backlog, one receive a datagram.
+ * The loop costs a datagram that arrives alone one wait (epoll) and its receive, and now and then a probe for a
+ * backlog; a backlog costs one receive a datagram.
  * The socket stays non-blocking so that a drain never blocks: a blocking receive would hold the channel's read
  * lock while it waits, and the drain could neither receive nor know that nothing waits.
  * <p>
