@@ -10,6 +10,7 @@ import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
+import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -21,6 +22,11 @@ import org.slf4j.LoggerFactory;
  * datagram is handled. Sends go out on the caller's thread: a UDP send does not wait for the peer, and a command
  * sent while the Time Controller handles a TICK is then on the wire before its DONE. A receiver that throws is
  * logged and the loop goes on.
+ * <p>
+ * The loop costs a datagram that arrives alone one wait (epoll) and its receive, and now and then a probe for a
+ * backlog; a backlog costs one receive a datagram.
+ * The socket stays non-blocking so that a drain never blocks: a blocking receive would hold the channel's read
+ * lock while it waits, and the drain could neither receive nor know that nothing waits.
  * <p>
  * The AmICA UDP bus radio uses all of it; the Sun SPOT bus radio's UDP link adds its source gate in its receiver,
  * the Time Controller's synchroniser link answers each request from its receiver with {@link #send}.
@@ -40,12 +46,19 @@ public final class DatagramLink implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(DatagramLink.class);
     /** Larger than any valid frame, so an oversize datagram is seen as such rather than cut silently. */
     static final int RECEIVE_BUFFER = 2048;
+    /** While no backlog is found, the receive loop probes for one after every 16th wake-up at most. */
+    static final int MAX_PROBE_INTERVAL = 16;
 
     private final DatagramChannel channel;
     private final Selector selector;
     private final LinkThread receiveThread;
     private final ByteBuffer buffer = ByteBuffer.allocate(RECEIVE_BUFFER);
+    private final Consumer<SelectionKey> ignoreKey = key -> { };
     private volatile boolean open = true;
+    // counted by the receive loop only, read by the cost tests
+    private volatile long loopWaits;
+    private volatile long loopEmptyReceives;
+    private volatile long loopDatagrams;
 
     private DatagramLink(DatagramChannel channel, Selector selector, String threadName) {
         this.channel = channel;
@@ -112,21 +125,59 @@ public final class DatagramLink implements AutoCloseable {
         }
     }
 
+    /**
+     * Waits until the socket is readable and receives one datagram. Only when a backlog has formed (a receive after
+     * the first datagram of a wake-up found another one) does it receive on without waiting, until the socket is
+     * empty; a datagram that arrives alone so costs one wait and its receive, not a third call that finds nothing.
+     * The backlog is probed for after every wake-up while one is found, then after every 2nd, 4th .. 16th.
+     */
     private void receiveLoop(Receiver receiver) {
+        int probeEvery = 1;
+        int sinceProbe = 0;
         while (open) {
-            try {
-                selector.select();
-                selector.selectedKeys().clear();
-            } catch (ClosedSelectorException e) {
+            if (!awaitReadable()) {
                 return;
-            } catch (IOException e) {
-                if (open) {
-                    LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
-                }
+            }
+            if (!receiveOne(receiver, true) || ++sinceProbe < probeEvery) {
                 continue;
             }
-            drain(receiver);
+            sinceProbe = 0;
+            int backlog = 0;
+            while (open && receiveOne(receiver, true)) {
+                backlog++;
+            }
+            probeEvery = backlog > 0 ? 1 : Math.min(2 * probeEvery, MAX_PROBE_INTERVAL);
         }
+    }
+
+    /** @return false once the selector is closed */
+    private boolean awaitReadable() {
+        try {
+            selector.select(ignoreKey); // no selected-key set: nothing allocated per wake-up
+            loopWaits++;
+        } catch (ClosedSelectorException e) {
+            return false;
+        } catch (IOException e) {
+            if (open) {
+                LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
+            }
+        }
+        return true;
+    }
+
+    /** The receive loop's waits for the socket (each a system call and, when it blocks, a wake-up). */
+    long loopWaits() {
+        return loopWaits;
+    }
+
+    /** The receive loop's receives that found nothing (a system call for nothing). */
+    long loopEmptyReceives() {
+        return loopEmptyReceives;
+    }
+
+    /** The datagrams the receive loop handed over (those of {@link #drain} not counted). */
+    long loopDatagrams() {
+        return loopDatagrams;
     }
 
     /**
@@ -138,29 +189,42 @@ public final class DatagramLink implements AutoCloseable {
     public int drain(Receiver receiver) {
         int n = 0;
         synchronized (buffer) {
-            while (open) {
-                buffer.clear();
-                SocketAddress from;
-                try {
-                    from = channel.receive(buffer);
-                } catch (IOException e) {
-                    if (open) {
-                        LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
-                    }
-                    return n;
-                }
-                if (from == null) {
-                    return n;
-                }
+            while (open && receiveOne(receiver, false)) {
                 n++;
-                try {
-                    receiver.datagram(buffer.array(), buffer.position(), (InetSocketAddress) from);
-                } catch (RuntimeException e) {
-                    LOG.error("Datagram handling on {} failed; the receive loop goes on", localAddress(), e);
-                }
             }
         }
         return n;
+    }
+
+    /** Receives one datagram if one waits and hands it over, both under one lock; @return whether it did */
+    private boolean receiveOne(Receiver receiver, boolean loop) {
+        synchronized (buffer) {
+            buffer.clear();
+            SocketAddress from;
+            try {
+                from = channel.receive(buffer);
+            } catch (IOException e) {
+                if (open) {
+                    LOG.warn("UDP receive on {} failed, continuing: {}", localAddress(), e.toString());
+                }
+                return false;
+            }
+            if (from == null) {
+                if (loop) {
+                    loopEmptyReceives++;
+                }
+                return false;
+            }
+            if (loop) {
+                loopDatagrams++;
+            }
+            try {
+                receiver.datagram(buffer.array(), buffer.position(), (InetSocketAddress) from);
+            } catch (RuntimeException e) {
+                LOG.error("Datagram handling on {} failed; the receive loop goes on", localAddress(), e);
+            }
+            return true;
+        }
     }
 
     /** Sends a datagram on the caller's thread and reports the outcome; a closed transport fails at once. */

@@ -5,11 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.net.DatagramPacket;
 import java.net.DatagramSocket;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.ByteBuffer;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
@@ -18,6 +22,7 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 
 /** Real UDP sockets on 127.0.0.1: datagrams in reach the receiver, frames out reach the peer. */
@@ -106,6 +111,40 @@ class DatagramLinkTest {
         }
     }
 
+    /** Drains from another thread amid a stream: every datagram handed over once, in the order sent. */
+    @Test
+    void theLoopAndConcurrentDrainsHandEveryDatagramOverOnceInOrder() throws Exception {
+        List<Integer> seen = Collections.synchronizedList(new ArrayList<>());
+        AtomicInteger drained = new AtomicInteger();
+        int count = 5000;
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
+                DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            DatagramLink.Receiver receiver = (data, length, from) -> seen.add(ByteBuffer.wrap(data).getInt());
+            transport.start(receiver);
+            CompletableFuture<Void> sent = new CompletableFuture<>();
+            CompletableFuture<Void> drains = CompletableFuture.runAsync(() -> {
+                while (!sent.isDone()) {
+                    drained.addAndGet(transport.drain(receiver));
+                }
+            });
+            InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+            for (int i = 0; i < count; i++) {
+                byte[] b = ByteBuffer.allocate(4).putInt(i).array();
+                node.send(new DatagramPacket(b, 4, radio));
+                while (seen.size() < i - 100 && System.nanoTime() < end) { // never more than the socket's buffer
+                    java.util.concurrent.locks.LockSupport.parkNanos(10_000);
+                }
+            }
+            while (seen.size() < count && System.nanoTime() < end) {
+                sleep(1);
+            }
+            sent.complete(null);
+            drains.get(5, TimeUnit.SECONDS);
+            assertEquals(IntStream.range(0, count).boxed().toList(), List.copyOf(seen), drained + " drained");
+        }
+    }
+
     @Test
     void drainHandsOverWaitingDatagramsOnTheCallersThread() throws Exception {
         List<String> threads = new CopyOnWriteArrayList<>();
@@ -130,6 +169,61 @@ class DatagramLinkTest {
             Thread.sleep(millis);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+    }
+
+    /** A datagram longer than the receive buffer arrives cut to the buffer, longer than any valid frame. */
+    @Test
+    void anOversizeDatagramIsSeenLongerThanAnyFrame() throws Exception {
+        BlockingQueue<Integer> lengths = new LinkedBlockingQueue<>();
+        try (DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
+                DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+            transport.start((data, length, from) -> lengths.add(length));
+            InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
+            node.send(new DatagramPacket(new byte[3000], 3000, radio));
+            node.send(new DatagramPacket(new byte[12], 12, radio));
+            assertEquals(DatagramLink.RECEIVE_BUFFER, lengths.poll(5, TimeUnit.SECONDS));
+            assertEquals(12, lengths.poll(5, TimeUnit.SECONDS));
+        }
+    }
+
+    /**
+     * close() ends the receive loop by closing its socket, idle or amid a stream of datagrams: it returns well
+     * before {@link LinkThread#CLOSE_WAIT}, after which it would have had to interrupt the loop.
+     */
+    @Test
+    void closeEndsTheReceiveLoopPromptly() throws Exception {
+        for (boolean streaming : new boolean[] {false, true}) {
+            DatagramLink transport = DatagramLink.open("127.0.0.1", 0, 1 << 20, "test");
+            AtomicInteger seen = new AtomicInteger();
+            CompletableFuture<Void> sender = new CompletableFuture<>();
+            try (DatagramSocket node = new DatagramSocket(0, InetAddress.getLoopbackAddress())) {
+                transport.start((data, length, from) -> seen.incrementAndGet());
+                InetSocketAddress radio = new InetSocketAddress(InetAddress.getLoopbackAddress(), transport.localPort());
+                node.send(new DatagramPacket(new byte[1], 1, radio));
+                long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+                while (seen.get() == 0 && System.nanoTime() < end) {
+                    sleep(1);
+                }
+                if (streaming) {
+                    CompletableFuture.runAsync(() -> {
+                        while (!sender.isDone()) {
+                            try {
+                                node.send(new DatagramPacket(new byte[1], 1, radio));
+                            } catch (IOException e) {
+                                return;
+                            }
+                        }
+                    });
+                    sleep(100);
+                }
+                long t0 = System.nanoTime();
+                transport.close();
+                long millis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
+                sender.complete(null);
+                assertTrue(millis < LinkThread.CLOSE_WAIT.toMillis() / 2,
+                        (streaming ? "streaming" : "idle") + ": close took " + millis + " ms");
+            }
         }
     }
 
