@@ -13,12 +13,14 @@ import org.tinysep.api.sensor.Percent;
 import org.tinysep.api.service.Occupancy;
 import org.tinysep.device.support.lifecycle.DriverContext;
 import org.tinysep.device.support.logs.RecordingLogs;
+import org.tinysep.device.support.testing.FakeHouse;
 import org.tinysep.device.support.time.PlatformClock;
 
 /**
  * The packet → light command path: finding a room's lights is one index read, not a look-up of every light's room
- * per switching, so it costs the same with 4 lights in the flat or 400 ({@link LightIndexFollowsMovesTest}: the
- * index follows lights that move and rooms that leave the house plan).
+ * per switching, so it costs the same with 4 lights in the flat or 400; and the index follows a light that moved
+ * (its placement changed: the driver's {@link LightRooms} says so) and a room that left the house plan (the lights'
+ * placements clear themselves).
  */
 class LightsByRoomTest {
 
@@ -49,7 +51,7 @@ class LightsByRoomTest {
 
     private long lookupsToLightTheRoom() {
         long before = directory.roomLookups;
-        device.movementReported(sensor, new MovementEvent(true, now));
+        motion();
         return directory.roomLookups - before;
     }
 
@@ -60,5 +62,34 @@ class LightsByRoomTest {
         assertEquals(40, lights.stream().filter(l -> l.switchedOn == 1).count(), "the 40 lights of r0");
         assertTrue(lights.stream().filter(l -> l.uid.startsWith("light-0-")).allMatch(l -> l.switchedOn == 1));
         assertEquals(1, lookups, "room look-ups to light a room among 400 lights (the sensor's is the 1)");
+    }
+
+    private void motion() {
+        device.movementReported(sensor, new MovementEvent(true, now));
+    }
+
+    @Test
+    void aLightThatMovedIsSwitchedInItsNewRoomOnly() {
+        flat(2, 1);
+        QuietLight moved = lights.get(1); // light-1-0, in r1
+        directory.place(moved.uid, "r0");
+        device.lightMoved(moved.uid);
+        directory.place("light-0-0", "r1");
+        device.lightMoved("light-0-0");
+        motion();
+        assertEquals(List.of(0, 1), lights.stream().map(l -> l.switchedOn).toList());
+        assertTrue(logs.events().stream().anyMatch(e -> e.message().equals("room r0 lit (motion): on light-1-0")),
+                logs.events().toString());
+    }
+
+    @Test
+    void aRoomRemovedFromTheHousePlanLeavesItsLightsUnplaced() {
+        flat(1, 2);
+        FakeHouse house = new FakeHouse();
+        device.use(house);
+        directory.place("light-0-1", null); // the light's placement cleared itself: its room left the plan
+        house.add("r9", "Attic"); // any change of the plan
+        motion();
+        assertEquals(List.of(1, 0), lights.stream().map(l -> l.switchedOn).toList());
     }
 }
