@@ -8,6 +8,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
@@ -22,8 +23,9 @@ import org.tinysep.device.support.lifecycle.DriverContext;
  * kept. The receive thread only decodes and {@link #submit submits} a {@link Job} per payload to ONE bounded queue;
  * one dispatcher thread takes the jobs in order and calls each job's listeners ({@link GuardedLane}) in turn.
  * <p>
- * A watchdog looks every quarter of the slow-call limit: a listener that has been inside one call longer than the
- * limit is <em>quarantined</em>. The dispatcher thread stays with it (the call goes on), a fresh dispatcher takes
+ * A watchdog looks every quarter of the slow-call limit while a payload is in hand (an idle delivery wakes no
+ * thread for it: the first payload after a pause starts its rounds again): a listener that has been inside one call
+ * longer than the limit is <em>quarantined</em>. The dispatcher thread stays with it (the call goes on), a fresh dispatcher takes
  * over the queue where it was (the rest of that job's listeners, then the next jobs), and the quarantined listener
  * gets its payloads through its own small bounded queue until it keeps up again. The healthy listeners keep their
  * order across devices. A full queue never blocks the receive thread: the payload is dropped, counted and said as
@@ -56,6 +58,10 @@ public final class OrderedDelivery implements AutoCloseable {
     private final ExecutorService pool;
     private final ScheduledExecutorService watchdog;
     private final AtomicLong submitted = new AtomicLong();
+    /** Whether the watchdog's next round is scheduled; rounds stop while nothing is in hand. */
+    private final AtomicBoolean armed = new AtomicBoolean();
+    private final AtomicLong watchRounds = new AtomicLong();
+    private final long watchPeriod;
     private final AtomicLong completed = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
     private final AtomicLong quarantines = new AtomicLong();
@@ -79,8 +85,7 @@ public final class OrderedDelivery implements AutoCloseable {
         String threads = context.driverName() + "-deliver-";
         this.pool = Executors.newCachedThreadPool(r -> daemon(r, threads + n.incrementAndGet()));
         this.watchdog = Executors.newSingleThreadScheduledExecutor(r -> daemon(r, context.driverName() + "-watchdog"));
-        long period = Math.max(10_000_000L, slowNanos / 4);
-        watchdog.scheduleAtFixedRate(this::watch, period, period, TimeUnit.NANOSECONDS);
+        this.watchPeriod = Math.max(10_000_000L, slowNanos / 4);
         this.capacity = capacity;
         this.handOff = new HandOff(capacity);
         this.worker = new Dispatcher(null, this);
@@ -101,6 +106,9 @@ public final class OrderedDelivery implements AutoCloseable {
     public boolean submit(Job<?> job) {
         // counted before it can be completed (awaitDelivered compares the two)
         if (handOff.offer(job, submitted::incrementAndGet)) {
+            if (!armed.get() && armed.compareAndSet(false, true)) {
+                scheduleWatch();
+            }
             return true;
         }
         dropped.incrementAndGet();
@@ -142,6 +150,37 @@ public final class OrderedDelivery implements AutoCloseable {
         } finally {
             waiter = null;
         }
+    }
+
+    private void scheduleWatch() {
+        try {
+            watchdog.schedule(this::watchRound, watchPeriod, TimeUnit.NANOSECONDS);
+        } catch (RejectedExecutionException e) { // closed
+            armed.set(false);
+        }
+    }
+
+    /**
+     * One round of the watchdog; the next follows while a payload submitted is not yet delivered. Otherwise the
+     * rounds stop, and the next {@link #submit} starts them: it counts its payload before it looks whether they
+     * run, and this looks again after it stopped them, so a payload is never left without a watchdog.
+     */
+    private void watchRound() {
+        watchRounds.incrementAndGet();
+        watch();
+        if (completed.get() < submitted.get()) {
+            scheduleWatch();
+            return;
+        }
+        armed.set(false);
+        if (completed.get() < submitted.get() && armed.compareAndSet(false, true)) {
+            scheduleWatch();
+        }
+    }
+
+    /** @return the watchdog's rounds so far (tests: none while the delivery is idle) */
+    long watchRounds() {
+        return watchRounds.get();
     }
 
     /** The watchdog: a listener inside one call longer than the limit leaves the ordered path. */
