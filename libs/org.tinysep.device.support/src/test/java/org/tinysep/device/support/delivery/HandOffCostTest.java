@@ -40,31 +40,12 @@ class HandOffCostTest {
         }
     }
 
-    private static final class Payload extends OrderedDelivery.Job<Integer> {
-        private final List<Recorder> to;
-
-        Payload(int n, Recorder to) {
-            super(n);
-            this.to = List.of(to);
-        }
-
-        @Override
-        protected List<Recorder> begin() {
-            return to;
-        }
-
-        @Override
-        protected List<Recorder> missed(GuardedLane<Integer> lane) {
-            return List.of();
-        }
-    }
-
     @Test
     void atASlowPaceTheDispatcherParksAtOnce() throws InterruptedException {
         try (OrderedDelivery d = new OrderedDelivery(context, "The test radio")) {
             Recorder r = new Recorder();
             for (int i = 0; i < 200; i++) { // a payload every 2 ms, far apart from the next
-                assertTrue(d.submit(new Payload(i, r)));
+                assertTrue(d.submit(new ToLanes<>(i, r)));
                 Thread.sleep(2);
             }
             assertTrue(d.awaitDelivered(Duration.ofSeconds(10)));
@@ -79,7 +60,7 @@ class HandOffCostTest {
             Recorder r = new Recorder();
             // a payload every ~3 µs, as a 2-core gateway receives them at its loss-free limit
             for (int i = 0; i < PAYLOADS; i++) {
-                assertTrue(d.submit(new Payload(i, r)));
+                assertTrue(d.submit(new ToLanes<>(i, r)));
                 long until = System.nanoTime() + 3_000;
                 while (System.nanoTime() - until < 0) {
                     Thread.onSpinWait();

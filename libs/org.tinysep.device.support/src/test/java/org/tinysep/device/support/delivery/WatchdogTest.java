@@ -53,36 +53,17 @@ class WatchdogTest {
         }
     }
 
-    private static final class Payload extends OrderedDelivery.Job<Integer> {
-        private final List<Lane> to;
-
-        Payload(int n, Lane... to) {
-            super(n);
-            this.to = List.of(to);
-        }
-
-        @Override
-        protected List<Lane> begin() {
-            return to;
-        }
-
-        @Override
-        protected List<Lane> missed(GuardedLane<Integer> lane) {
-            return List.of();
-        }
-    }
-
     @Test
     void anIdleDeliveryRunsNoWatchdogRounds() throws InterruptedException {
         try (OrderedDelivery d = new OrderedDelivery(context, "The test radio", SLOW, 64, 16)) {
             Lane lane = new Lane(-1);
-            assertTrue(d.submit(new Payload(1, lane)));
+            assertTrue(d.submit(new ToLanes<>(1, lane)));
             assertTrue(d.awaitDelivered(Duration.ofSeconds(5)));
             Thread.sleep(150); // the round after the delivery stops the rounds
             long before = d.watchRounds();
             Thread.sleep(500); // 20 rounds at a quarter of the limit
             assertEquals(before, d.watchRounds(), "watchdog rounds in 500 ms of an idle delivery");
-            assertTrue(d.submit(new Payload(2, lane)));
+            assertTrue(d.submit(new ToLanes<>(2, lane)));
             assertTrue(d.awaitDelivered(Duration.ofSeconds(5)));
             assertEquals(List.of(1, 2), lane.got);
         }
@@ -93,11 +74,11 @@ class WatchdogTest {
         try (OrderedDelivery d = new OrderedDelivery(context, "The test radio", SLOW, 64, 16)) {
             Lane slow = new Lane(2);
             Lane healthy = new Lane(-1);
-            assertTrue(d.submit(new Payload(1, slow, healthy)));
+            assertTrue(d.submit(new ToLanes<>(1, slow, healthy)));
             assertTrue(d.awaitDelivered(Duration.ofSeconds(5)));
             Thread.sleep(300); // idle: the rounds stopped
-            assertTrue(d.submit(new Payload(2, slow, healthy))); // the slow lane blocks on 2
-            assertTrue(d.submit(new Payload(3, healthy)));
+            assertTrue(d.submit(new ToLanes<>(2, slow, healthy))); // the slow lane blocks on 2
+            assertTrue(d.submit(new ToLanes<>(3, healthy)));
             long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
             while (healthy.got.size() < 3 && System.nanoTime() < end) {
                 Thread.sleep(10);
