@@ -41,22 +41,16 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
     private volatile Map<String, Room> rooms = Map.of();
     private volatile String occupancySource;
 
-    /** A device whose lights' rooms are read from {@code directory} as well (tests). */
-    FollowMeDevice(DriverContext context, Placements directory, Duration grace, Percent brightness) {
-        this(context, directory, directory, grace, brightness);
-    }
-
     /**
-     * @param directory  where sensors are (read per report) and what devices are called
-     * @param lightRooms where lights are, read when a light is connected or {@link #lightMoved moved}
+     * @param directory where sensors are (read per report), where lights are (read when a light is connected or
+     *                  {@link #lightMoved moved}) and what devices are called
      */
-    FollowMeDevice(DriverContext context, Placements directory, Placements lightRooms, Duration grace,
-            Percent brightness) {
+    FollowMeDevice(DriverContext context, Placements directory, Duration grace, Percent brightness) {
         super(context, Uids.of(context.driverName(), "follow-me"), context.driverName(), "Follow me light");
         this.directory = directory;
         this.grace = grace;
         this.logic = new FollowMeLogic(grace);
-        this.lights = new Lights(directory, lightRooms, brightness);
+        this.lights = new Lights(directory, brightness);
         status(DeviceStatus.State.ONLINE, "");
     }
 
@@ -101,7 +95,7 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
         rooms(p.rooms());
     }
 
-    /** The placement of light {@code uid} changed (the driver's {@link LightRooms} says so). */
+    /** The placement of device {@code uid} changed (the driver's {@code TrackedPlacements} says so). */
     void lightMoved(String uid) {
         lights.moved(uid);
     }

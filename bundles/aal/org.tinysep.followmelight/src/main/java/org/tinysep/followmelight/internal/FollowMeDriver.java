@@ -34,7 +34,6 @@ public final class FollowMeDriver extends AbstractDriver {
     private Duration grace;
     private Percent brightness;
     private TrackedPlacements directory;
-    private LightRooms lightRooms;
     private PlatformTicker ticker;
 
     public FollowMeDriver() {
@@ -46,10 +45,9 @@ public final class FollowMeDriver extends AbstractDriver {
         grace = Duration.ofSeconds(Math.min(3600, Math.max(5, config.graceSeconds())));
         brightness = Percent.of(Math.min(100, Math.max(1, config.brightness())));
         start(bundleContext);
-        directory = new TrackedPlacements(bundleContext);
-        lightRooms = new LightRooms(bundleContext, directory, this::lightMoved);
+        directory = new TrackedPlacements(bundleContext, this::lightMoved); // a device's room changed
         wiring = new SingleDeviceWiring<>(this, FollowMeDevice.class,
-                () -> new FollowMeDevice(context(), directory, lightRooms, grace, brightness), FollowMeDevice::forget);
+                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDevice::forget);
         wiring.optional(bundleContext, FlatOccupancyProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, HouseInformationProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, MovementProvider.class, FollowMeDevice::use);
@@ -65,11 +63,10 @@ public final class FollowMeDriver extends AbstractDriver {
         ticker.close();
         wiring.close();
         stop();
-        lightRooms.close();
         directory.close();
     }
 
-    /** A light was placed, moved or unplaced: the device (if there is one yet) files it anew. */
+    /** A device was placed, moved or unplaced: if it is a light, the device (if there is one yet) files it anew. */
     private void lightMoved(String uid) {
         SingleDeviceWiring<FollowMeDevice> w = wiring;
         if (w != null) {

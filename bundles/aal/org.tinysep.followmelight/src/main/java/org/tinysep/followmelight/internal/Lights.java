@@ -14,7 +14,7 @@ import org.tinysep.api.sensor.Percent;
 import org.tinysep.device.support.rooms.Placements;
 
 /**
- * The connected lights, found by room in a {@link RoomIndex}: a light's room is read from {@code rooms} when the
+ * The connected lights, found by room in a {@link RoomIndex}: a light's room is read from the placements when the
  * light is connected and again when it is said to have moved ({@link #moved}), not per switching, so lighting a
  * room costs the same with 4 lights in the flat or 400. Remembers which lights this service switched on: only
  * those are ever switched off, so a light a person switched on by hand is left alone; a light a person switched
@@ -23,26 +23,21 @@ import org.tinysep.device.support.rooms.Placements;
 final class Lights {
 
     private final Placements directory;
-    private final Placements rooms;
     private final Percent brightness;
     private final RoomIndex index = new RoomIndex();
     private final Map<String, Provider<?>> all = new LinkedHashMap<>();
     private final Set<String> ours = new HashSet<>();
 
-    /**
-     * @param directory the names of the lights (for the event log)
-     * @param rooms     the rooms of the lights, read when a light is connected or moved
-     */
-    Lights(Placements directory, Placements rooms, Percent brightness) {
+    /** @param directory the rooms of the lights (read when a light is connected or moved) and their names */
+    Lights(Placements directory, Percent brightness) {
         this.directory = directory;
-        this.rooms = rooms;
         this.brightness = brightness;
     }
 
     synchronized void add(Provider<?> light) {
         String uid = light.deviceUid();
         all.put(uid, light);
-        index.place(uid, rooms.roomOf(uid).orElse(null));
+        index.place(uid, directory.roomOf(uid).orElse(null));
     }
 
     synchronized void forget(String uid) {
@@ -54,14 +49,14 @@ final class Lights {
     /** Light {@code uid} may be in another room now (its placement changed): its room is read again. */
     synchronized void moved(String uid) {
         if (all.containsKey(uid)) {
-            index.place(uid, rooms.roomOf(uid).orElse(null));
+            index.place(uid, directory.roomOf(uid).orElse(null));
         }
     }
 
     /** Every light may be in another room now (the house plan changed): their rooms are read again. */
     synchronized void movedAll() {
         for (String uid : all.keySet()) {
-            index.place(uid, rooms.roomOf(uid).orElse(null));
+            index.place(uid, directory.roomOf(uid).orElse(null));
         }
     }
 

@@ -19,7 +19,7 @@ import org.tinysep.device.support.time.PlatformClock;
 /**
  * The packet → light command path: finding a room's lights is one index read, not a look-up of every light's room
  * per switching, so it costs the same with 4 lights in the flat or 400; and the index follows a light that moved
- * (its placement changed: the driver's {@link LightRooms} says so) and a room that left the house plan (the lights'
+ * (its placement changed: the driver's TrackedPlacements says so) and a room that left the house plan (the lights'
  * placements clear themselves).
  */
 class LightsByRoomTest {

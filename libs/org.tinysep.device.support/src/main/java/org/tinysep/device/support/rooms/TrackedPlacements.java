@@ -2,9 +2,11 @@ package org.tinysep.device.support.rooms;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import java.util.stream.Stream;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
@@ -23,7 +25,8 @@ import org.tinysep.device.support.lifecycle.ServiceUse;
  * light per motion). The room is read from the services' properties only when one of them is registered, modified
  * or unregistered (the tracker's callbacks run before {@code setProperties} returns), and kept per UID: a lookup is a
  * map read, not a walk through Felix's case-insensitive property maps, which was 18 % of the AmICA delivery thread
- * at the throughput limit (issue 29).
+ * at the throughput limit (issue 29). Whoever keeps its own index by room (Follow Me Light's lights by room) is told
+ * each device whose room changed, once the new room is kept here.
  */
 public final class TrackedPlacements implements Placements, AutoCloseable {
 
@@ -33,9 +36,19 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
     private final AtomicLong propertyReads = new AtomicLong();
     private final ServiceTracker<Object, String> tracker;
     private final BundleContext context;
+    private final Consumer<String> roomChanged;
 
     public TrackedPlacements(BundleContext context) {
+        this(context, uid -> { });
+    }
+
+    /**
+     * @param roomChanged told the UID of a device that was placed, moved, unplaced or left, after its room is kept
+     *                    here (on the registry's thread, also while this constructor opens the tracker)
+     */
+    public TrackedPlacements(BundleContext context, Consumer<String> roomChanged) {
         this.context = context;
+        this.roomChanged = roomChanged;
         try {
             tracker = new ServiceTracker<>(context,
                     FrameworkUtil.createFilter("(" + DeviceProperties.DEVICE_UID + "=*)"), null) {
@@ -79,7 +92,8 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
 
     /** The room of {@code uid} read again from its services' properties (the first that names one). */
     private void reindex(String uid) {
-        roomByUid.compute(uid, (k, old) -> {
+        Optional<String> before = roomByUid.get(uid);
+        Optional<String> after = roomByUid.compute(uid, (k, old) -> {
             for (ServiceReference<Object> ref : byUid.getOrDefault(k, List.of())) {
                 propertyReads.incrementAndGet();
                 Object room = ref.getProperty(DeviceProperties.ROOM);
@@ -89,6 +103,9 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
             }
             return null; // no service of it names a room: nothing kept
         });
+        if (!Objects.equals(before, after)) {
+            roomChanged.accept(uid);
+        }
     }
 
     /** @return how often a room was read from service properties since this object was made */

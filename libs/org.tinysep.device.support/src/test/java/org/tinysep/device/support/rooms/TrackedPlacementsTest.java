@@ -92,6 +92,26 @@ class TrackedPlacementsTest {
         }
     }
 
+    /** Follow Me Light keeps its lights by room: it is told each device whose room changed, after the change is kept. */
+    @Test
+    void aRoomChangeIsToldOnceItIsKept() {
+        ServiceRegistration<?> lamp = register("lamp", "kitchen");
+        java.util.List<String> told = new java.util.ArrayList<>();
+        TrackedPlacements[] self = new TrackedPlacements[1];
+        try (TrackedPlacements placements = new TrackedPlacements(context,
+                uid -> told.add(uid + "=" + (self[0] == null ? "opening" : self[0].roomOf(uid).orElse("-"))))) {
+            self[0] = placements;
+            assertEquals(java.util.List.of("lamp=opening"), told, "a device found when the tracker opens");
+            lamp.setProperties(props("lamp", "hall"));
+            lamp.setProperties(props("lamp", "hall")); // the same room again: nothing to tell
+            ServiceRegistration<?> later = register("late", null); // no room: nothing to tell
+            lamp.setProperties(props("lamp", null));
+            later.setProperties(props("late", "bedroom"));
+            later.unregister();
+            assertEquals(java.util.List.of("lamp=opening", "lamp=hall", "lamp=-", "late=bedroom", "late=-"), told);
+        }
+    }
+
     private ServiceRegistration<?> register(String uid, String room) {
         Device d = (Device) Proxy.newProxyInstance(Device.class.getClassLoader(), new Class<?>[] {Device.class},
                 (proxy, method, args) -> switch (method.getName()) {
