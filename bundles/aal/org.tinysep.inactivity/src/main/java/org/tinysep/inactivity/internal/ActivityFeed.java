@@ -54,11 +54,7 @@ final class ActivityFeed {
         if (change.isPresent()) { // the reason's closure is built on a change only, not per activity
             announcer.announce(change, a.at(), () -> a.description() + " in " + a.roomName());
         }
-        List<String> said = persons.get().room(a, now);
-        if (!said.isEmpty()) {
-            said.forEach(side::event);
-            side.save(); // a wearer's watch said something: saved at once
-        }
+        said(persons.get().room(a, now));
     }
 
     /** A person node's movement summary: its wearer's activity, and the flat's when someone moved. */
@@ -86,11 +82,7 @@ final class ActivityFeed {
             change = logic.occupancy(occupancy, at);
         }
         announcer.announce(change, at, () -> "flat " + StateAnnouncer.lower(occupancy));
-        List<String> said = persons.get().occupancy(occupancy, at);
-        said.forEach(side::event);
-        if (!said.isEmpty()) {
-            side.save();
-        }
+        said(persons.get().occupancy(occupancy, at));
     }
 
     /** The platform's second {@code now}: limits reached, the flat's and each wearer's. */
@@ -103,10 +95,14 @@ final class ActivityFeed {
         }
         wentBack.ifPresent(from -> clockWentBack(from, now));
         announcer.announce(change, now, () -> "limit reached");
-        List<String> said = persons.get().tick(now);
-        said.forEach(side::event);
+        said(persons.get().tick(now)); // a wearer's alert raised or handed on: not handed on twice after a restart
+    }
+
+    /** What the wearers' watches said goes to the event log, and a watch that said something is saved at once. */
+    private void said(List<String> said) {
         if (!said.isEmpty()) {
-            side.save(); // a wearer's alert raised or handed on: not handed on twice after a restart
+            said.forEach(side::event);
+            side.save();
         }
     }
 
