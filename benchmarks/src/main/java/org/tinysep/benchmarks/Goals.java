@@ -10,8 +10,9 @@ import java.util.List;
  * gives n):
  * <ul>
  * <li>{@code throughput.platform}, {@code throughput.bare}: highest loss-free frames/s, TinySEP and bare receiver</li>
- * <li>{@code latency.p50}, {@code latency.p99}, {@code latency.echoP50}, {@code latency.echoP99}: µs at 1,000
- * background frames/s, TinySEP and bare UDP echo</li>
+ * <li>{@code latency.p50}, {@code latency.p99}, {@code latency.pacedP50}, {@code latency.pacedP99}: µs at 1,000
+ * background frames/s, TinySEP and the bare UDP echo paced like TinySEP's samples (the floor); {@code
+ * latency.echoP50}, {@code latency.echoP99}: the echo back to back (the machine's best case, reported beside)</li>
  * <li>{@code thesis.s5cpu}, {@code thesis.idleCpu}: % of one core</li>
  * <li>{@code start.bannerMs}, {@code start.felixMs}: start to the banner, TinySEP and bare Felix</li>
  * <li>{@code rss.defaultKb}, {@code rss.headlessKb}, {@code rss.felixKb}: idle RSS, default and headless
@@ -38,9 +39,9 @@ final class Goals {
                     false, false, 1, "frames/s"),
             new Goal("loss-free throughput ≥ 40 % of the bare receiver", "throughput.platform", "throughput.bare",
                     0.40, false, true, 1, "frames/s"),
-            new Goal("packet → light p50 ≤ 150 µs at 1,000 frames/s", "latency.p50", "latency.echoP50", 150, true,
+            new Goal("packet → light p50 ≤ 150 µs at 1,000 frames/s", "latency.p50", "latency.pacedP50", 150, true,
                     false, 1, "µs"),
-            new Goal("packet → light p99 ≤ 1 ms at 1,000 frames/s", "latency.p99", "latency.echoP99", 1_000, true,
+            new Goal("packet → light p99 ≤ 1 ms at 1,000 frames/s", "latency.p99", "latency.pacedP99", 1_000, true,
                     false, 1, "µs"),
             new Goal("thesis scenario 5 ≤ 0.5 % of one core", "thesis.s5cpu", "thesis.idleCpu", 0.5, true, false, 1,
                     "%"),

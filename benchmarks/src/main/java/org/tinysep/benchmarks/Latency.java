@@ -9,7 +9,11 @@ import org.tinysep.tools.process.Ports;
 
 /**
  * Packet → reaction latency of TinySEP ({@link Reaction}: motion frame → light command via Follow Me Light) beside
- * the bare UDP echo's round trip (the floor), each idle and under 1,000 background frames/s.
+ * the bare UDP echo's round trip (the floor), each idle and under 1,000 background frames/s. The reaction's samples
+ * are one every {@code interval} ms (the rooms take turns), so the floor the goals are judged against is the echo
+ * <em>paced the same way</em>: on this machine a round trip after a 175 ms pause cost 297 µs (p50) where back-to-back
+ * round trips cost 18 µs (the threads sleep and their CPU idles between samples); the back-to-back echo stays in the
+ * table as the machine's best case.
  */
 final class Latency {
 
@@ -18,9 +22,20 @@ final class Latency {
     double p99 = Double.NaN;
     double echoP50 = Double.NaN;
     double echoP99 = Double.NaN;
+    /** Under 1,000 background frames/s: the bare echo paced like the reaction's samples, p50 and p99 (µs). */
+    double pacedP50 = Double.NaN;
+    double pacedP99 = Double.NaN;
 
     /** @return sorted round trips in µs: {@code samples} datagrams to an echo on {@code port}, one at a time */
     static double[] echo(int port, int samples) throws Exception {
+        return echo(port, samples, 0);
+    }
+
+    /**
+     * @param pauseMillis how long to wait after each round trip (0: back to back), like the reaction's samples
+     * @return sorted round trips in µs: {@code samples} datagrams to an echo on {@code port}, one at a time
+     */
+    static double[] echo(int port, int samples, long pauseMillis) throws Exception {
         double[] us = new double[samples];
         try (DatagramChannel ch = DatagramChannel.open()) {
             ch.bind(new InetSocketAddress("127.0.0.1", 0));
@@ -34,6 +49,9 @@ final class Latency {
                 ch.write(out);
                 ch.read(in);
                 us[i] = (System.nanoTime() - t0) / 1e3;
+                if (pauseMillis > 0) {
+                    Thread.sleep(pauseMillis);
+                }
             }
         }
         Arrays.sort(us);
@@ -58,30 +76,37 @@ final class Latency {
 
     void run(Bench b) throws Exception {
         int samples = b.smoke() ? 200 : 2_000;
+        int rooms = b.smoke() ? 16 : 40;
+        int reactions = b.smoke() ? 16 : 1_000;
+        long interval = b.smoke() ? 50 : Math.max(20, (Reaction.GRACE_SECONDS + 2) * 1000L / rooms);
+        int pacedSamples = b.smoke() ? 16 : 300;
         int port = Ports.freeUdp();
         double[] idle;
         double[] loaded;
+        double[] pacedIdle;
+        double[] pacedLoaded;
         try (Child echo = new Child(b.chosen(), "echo", Integer.toString(port))) {
             echo(port, Math.min(500, samples)); // warm-up
             idle = echo(port, samples);
+            pacedIdle = echo(port, pacedSamples, interval);
             int sink = Ports.freeUdp();
             try (Child receiver = new Child(b.chosen(), "receiver", Integer.toString(sink));
                     Nodes background = new Nodes(10, sink)) {
+                long frames = (long) ((pacedSamples * interval / 1000.0 + samples / 10_000.0 + 3) * 1000);
                 Thread bg = new Thread(() -> {
                     try {
-                        background.motion(b.smoke() ? 3_000 : 30_000, 1_000);
+                        background.motion(b.smoke() ? 3_000 : frames, 1_000);
                     } catch (Exception ignored) {
                         // the measurement below still stands
                     }
                 }, "background-1k");
                 bg.start();
+                Bench.sleep(1);
                 loaded = echo(port, samples);
+                pacedLoaded = echo(port, pacedSamples, interval);
                 bg.join();
             }
         }
-        int rooms = b.smoke() ? 16 : 40;
-        int reactions = b.smoke() ? 16 : 1_000;
-        long interval = b.smoke() ? 50 : Math.max(20, (Reaction.GRACE_SECONDS + 2) * 1000L / rooms);
         long[] missedIdle = {0};
         long[] missedLoaded = {0};
         double[] platformIdle;
@@ -113,6 +138,8 @@ final class Latency {
         p99 = pct(platformLoaded, 99);
         echoP50 = pct(loaded, 50);
         echoP99 = pct(loaded, 99);
+        pacedP50 = pct(pacedLoaded, 50);
+        pacedP99 = pct(pacedLoaded, 99);
         Report r = b.report();
         r.heading("Packet → reaction latency (Follow Me Light) beside the bare UDP echo");
         r.text("TinySEP: " + rooms + " rooms, each with a movement node and a simple light node placed in it (House "
@@ -123,14 +150,23 @@ final class Latency {
                 + "(one sample every " + interval + " ms). Background: 10 further movement nodes (in no room) at "
                 + "1,000 frames/s. Samples not answered within 2 s are counted as missed. The floor: a bare Java "
                 + "UDP echo in its own JVM, one datagram at a time, idle and while 1,000 frames/s go to a bare "
-                + "receiver.");
+                + "receiver; *paced* = one round trip every " + interval + " ms like the samples (the floor of the "
+                + "goals: after a pause the sleeping threads and idle CPUs cost what back-to-back round trips do "
+                + "not), *back to back* = the machine's best case.");
         r.table(List.of("", "p50", "p90", "p99", "max", "samples", "missed"), List.of(
                 concat("TinySEP, idle", cells(platformIdle), missedIdle[0]),
                 concat("TinySEP, 1k frames/s background", cells(platformLoaded), missedLoaded[0]),
-                concat("bare echo, idle", cells(idle), 0), concat("bare echo, 1k frames/s background", cells(loaded), 0)));
-        r.text(Report.f("Ratios to the floor (p50, p99): idle %s, %s; under 1k frames/s %s, %s. Goals at 1k frames/s: "
-                + "p50 ≤ 150 µs: %s; p99 ≤ 1 ms: %s.",
-                Report.ratio(pct(platformIdle, 50), pct(idle, 50)), Report.ratio(pct(platformIdle, 99), pct(idle, 99)),
+                concat("bare echo, paced, idle", cells(pacedIdle), 0),
+                concat("bare echo, paced, 1k frames/s background", cells(pacedLoaded), 0),
+                concat("bare echo, back to back, idle", cells(idle), 0),
+                concat("bare echo, back to back, 1k frames/s background", cells(loaded), 0)));
+        r.text(Report.f("Ratios to the paced floor (p50, p99): idle %s, %s; under 1k frames/s %s, %s (to the "
+                + "back-to-back echo under 1k frames/s: %s, %s). Goals at 1k frames/s: p50 ≤ 150 µs: %s; p99 ≤ 1 ms: "
+                + "%s.",
+                Report.ratio(pct(platformIdle, 50), pct(pacedIdle, 50)),
+                Report.ratio(pct(platformIdle, 99), pct(pacedIdle, 99)),
+                Report.ratio(pct(platformLoaded, 50), pct(pacedLoaded, 50)),
+                Report.ratio(pct(platformLoaded, 99), pct(pacedLoaded, 99)),
                 Report.ratio(pct(platformLoaded, 50), pct(loaded, 50)),
                 Report.ratio(pct(platformLoaded, 99), pct(loaded, 99)),
                 Report.goalAtMost(pct(platformLoaded, 50), 150, "µs"), Report.goalAtMost(pct(platformLoaded, 99),
@@ -139,7 +175,9 @@ final class Latency {
                 "µs", List.of("p50", "p99"), List.of(
                         new Plot.Series("TinySEP (Follow Me Light)", List.of(pct(platformLoaded, 50),
                                 pct(platformLoaded, 99))),
-                        new Plot.Series("bare UDP echo", List.of(pct(loaded, 50), pct(loaded, 99)))));
+                        new Plot.Series("bare UDP echo, paced", List.of(pct(pacedLoaded, 50),
+                                pct(pacedLoaded, 99))),
+                        new Plot.Series("bare UDP echo, back to back", List.of(pct(loaded, 50), pct(loaded, 99)))));
         r.text("![latency](../docs/images/bench-latency.png)");
     }
 

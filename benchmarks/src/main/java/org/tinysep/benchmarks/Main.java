@@ -69,10 +69,12 @@ public final class Main {
         step("latency", report, () -> Repeat.run(b, repeat, "Latency", rb -> {
             Latency l = new Latency();
             l.run(rb);
-            return new double[] {l.p50, l.p99, l.echoP50, l.echoP99};
-        }, new String[] {"latency.p50", "latency.p99", "latency.echoP50", "latency.echoP99"},
-                new String[] {"TinySEP p50 µs (1k frames/s)", "TinySEP p99 µs", "bare echo p50 µs",
-                    "bare echo p99 µs"}));
+            return new double[] {l.p50, l.p99, l.echoP50, l.echoP99, l.pacedP50, l.pacedP99};
+        }, new String[] {"latency.p50", "latency.p99", "latency.echoP50", "latency.echoP99", "latency.pacedP50",
+            "latency.pacedP99"},
+                new String[] {"TinySEP p50 µs (1k frames/s)", "TinySEP p99 µs", "bare echo p50 µs, back to back",
+                    "bare echo p99 µs, back to back", "bare echo p50 µs, paced like the samples",
+                    "bare echo p99 µs, paced"}));
         step("scale", report, () -> {
             Scale scale = new Scale();
             scale.run(b, footprint.chosenIdleRssKb);

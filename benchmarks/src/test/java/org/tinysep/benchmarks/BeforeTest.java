@@ -37,10 +37,10 @@ class BeforeTest {
     void theGoalsTableShowsTheBeforeColumnWithItsRatio() {
         Report now = new Report();
         now.figure("latency.p50", 300);
-        now.figure("latency.echoP50", 30);
+        now.figure("latency.pacedP50", 30);
         Report before = new Report();
         before.figure("latency.p50", 400);
-        before.figure("latency.echoP50", 20);
+        before.figure("latency.pacedP50", 20);
 
         String md = Goals.markdown(now, before);
 

@@ -20,7 +20,8 @@ class GoalsTest {
             r.figure("throughput.bare", run[1]);
         }
         r.figure("latency.p50", 400);
-        r.figure("latency.echoP50", 20);
+        r.figure("latency.pacedP50", 20);
+        r.figure("latency.echoP50", 10); // back to back: the machine's best case, not the floor of a paced sample
         List<String> lines = Goals.lines(r);
         String abs = line(lines, "≥ 100,000 frames/s");
         assertTrue(abs.startsWith("MET"), abs);
