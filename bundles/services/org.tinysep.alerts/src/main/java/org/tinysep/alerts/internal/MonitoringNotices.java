@@ -110,6 +110,10 @@ public final class MonitoringNotices {
         if (log == null || m == null) {
             return; // without a Mail Manager the signals wait (nothing is marked handled)
         }
+        List<EventEntry> newest = log.recent(1);
+        if (grace.held() == 0 && !newest.isEmpty() && newest.get(0).sequence() == feed.last()) {
+            return; // nothing new and no notice waiting for its grace: the log's last 500 entries are not copied
+        }
         List<EventEntry> recent = log.recent(500);
         if (!feed.covers(recent)) {
             recent = log.recent(Integer.MAX_VALUE);

@@ -22,7 +22,8 @@ import org.tinysep.api.log.EventEntry;
 final class NoticeGrace {
 
     private static final Pattern LOST = Pattern.compile("its sensor \"([^\"]*)\"");
-    private static final Pattern BACK = Pattern.compile("^monitoring restored: the sensor \"([^\"]*)\"");
+    private static final String BACK_START = "monitoring restored: the sensor \"";
+    private static final Pattern BACK = Pattern.compile("^" + BACK_START + "([^\"]*)\"");
 
     private record Held(EventEntry signal, Instant due) {
     }
@@ -53,7 +54,10 @@ final class NoticeGrace {
             }
         }
         for (EventEntry e : entries) {
-            String key = sensorKey(e, BACK.matcher(e.message()), true);
+            if (held.isEmpty()) {
+                break; // nothing waits for a sensor to come back: no matcher per entry
+            }
+            String key = e.message().startsWith(BACK_START) ? sensorKey(e, BACK.matcher(e.message()), true) : null;
             Held h = key == null ? null : held.get(key);
             if (h != null && e.sequence() > h.signal().sequence()) {
                 held.remove(key);

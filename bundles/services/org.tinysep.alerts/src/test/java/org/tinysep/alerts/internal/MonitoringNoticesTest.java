@@ -130,6 +130,30 @@ class MonitoringNoticesTest {
     }
 
     @Test
+    void aLookAtALogWithNothingNewCopiesOneEntryYetAHeldNoticeIsStillMailedWhenItsGraceEnds() {
+        MonitoringNotices n = withGrace(Duration.ofSeconds(60));
+        for (int i = 0; i < 400; i++) {
+            log.record(EventKind.DEVICE_EVENT, "movement", "movement detected");
+        }
+        n.poll(log, mail);
+        long before = log.copied;
+        for (int i = 0; i < 100; i++) { // 200 s of an idle platform's looks
+            n.poll(log, mail);
+        }
+        assertEquals(100, log.copied - before, "entries copied by 100 looks at a log with nothing new");
+        log.record(EventKind.PROBLEM, "inactivity", LOST);
+        n.poll(log, mail);
+        assertEquals(0, mail.sent.size(), "held for the grace");
+        wall = wall.plusSeconds(61);
+        n.poll(log, mail); // nothing new in the log, but a notice waits for its grace
+        assertEquals(1, mail.sent.size(), "the sensor stayed away for the grace: " + mail.sent);
+        before = log.copied;
+        n.poll(log, mail); // the "notice sent" entry is new once
+        n.poll(log, mail);
+        assertTrue(log.copied - before <= 503, "copied after the notice: " + (log.copied - before));
+    }
+
+    @Test
     void aGraceOfZeroMailsAtOnce() {
         MonitoringNotices n = withGrace(Duration.ZERO);
         log.record(EventKind.PROBLEM, "inactivity", LOST);
@@ -150,9 +174,13 @@ class MonitoringNoticesTest {
             entries.add(new EventEntry(entries.size() + 1, now, kind, origin, message));
         }
 
+        long copied; // entries handed out by recent(): what a look at the log costs
+
         @Override
         public List<EventEntry> recent(int max) {
-            return List.copyOf(entries.subList(Math.max(0, entries.size() - max), entries.size()));
+            List<EventEntry> out = List.copyOf(entries.subList(Math.max(0, entries.size() - max), entries.size()));
+            copied += out.size();
+            return out;
         }
     }
 
