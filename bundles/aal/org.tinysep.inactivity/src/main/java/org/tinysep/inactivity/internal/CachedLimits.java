@@ -19,7 +19,7 @@ import org.tinysep.inactivity.internal.learn.SleepRule;
  * 29, item 1: the limit and its explanation text were computed per activity, 28 % of the radio thread's Java time
  * at the thesis's load). Every activity is still learned from ({@link LearnedLimits#history()}); only the answer
  * is reused. What an answer depends on is the key: the room (UID, name, type), its fixed limit, the state (asleep,
- * seated), the activity's local hour and day type (weekday or weekend), and the learned profile, which the
+ * seated, getting up), the activity's local hour and day type (weekday or weekend), and the learned profile, which the
  * learner replaces at each learning (once per local day, and when history was loaded): a new profile empties the
  * cache. So the work per activity does not grow with the history's length. Thread-safe.
  *
@@ -31,8 +31,8 @@ final class CachedLimits {
 
     /** More rooms (by UID and name) than a home has (e.g. many unplaced devices): start afresh. */
     static final int MAX_KEYS = 4_096;
-    /** Answers per room: asleep × seated × weekend × 24 hours. */
-    private static final int PER_ROOM = 2 * 2 * 2 * 24;
+    /** Answers per room: getting up × asleep × seated × weekend × 24 hours. */
+    private static final int PER_ROOM = 2 * 2 * 2 * 2 * 24;
 
     /** In bed × up from bed × 24 local hours: whether a sighting there is sleep (0 not yet asked, 1 no, 2 yes). */
     private static final int SLEEP_KEYS = 2 * 2 * 24;
@@ -85,6 +85,7 @@ final class CachedLimits {
     /** As {@link LearnedLimits#limitAfter}, reusing the answer for the same key since the last learning. */
     Limit limitAfter(Sighting s, Duration fixed, Instant now) {
         limits.history().add(s); // every activity is learned from, first, as LearnedLimits does
+        limits.history().fixedLimit(s.room(), fixed); // and its room's fixed limit known to the check
         QuietProfile profile = limits.history().profile(now); // learns anew when due (a new day, history loaded)
         Answers a = answers;
         if (a.profile() != profile || a.size().get() > MAX_KEYS) {
@@ -96,7 +97,7 @@ final class CachedLimits {
         long local = localSeconds(s.at(), rule.zone());
         boolean asleep = room.asleep(s, hourOf(local), rule);
         Limit[] slots = room.answers();
-        int i = index(local, asleep, s.seated() && !asleep);
+        int i = index(local, asleep, s.seated() && !asleep) + (s.upFromBed() && !asleep ? PER_ROOM / 2 : 0);
         Limit cached = slots[i];
         if (cached != null) {
             return cached;

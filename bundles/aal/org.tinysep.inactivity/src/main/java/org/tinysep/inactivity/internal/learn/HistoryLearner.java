@@ -7,6 +7,8 @@ import java.time.ZoneId;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Function;
 
 /**
@@ -32,6 +34,8 @@ public final class HistoryLearner {
     private Instant dayUntil = Instant.MIN;
     private boolean dirty = true;
     private volatile Function<String, String> roomTypes = room -> "";
+    /** Each room's fixed limit as last asked with (the leave-one-day-out check compares with them). */
+    private final Map<String, Duration> fixedLimits = new ConcurrentHashMap<>();
 
     public HistoryLearner(ZoneId zone, SleepRule sleep, LearningSettings settings) {
         this.zone = zone;
@@ -65,6 +69,17 @@ public final class HistoryLearner {
                 away.add(new QuietGaps.Away(awaySince, at));
             }
             awaySince = null;
+        }
+    }
+
+    /**
+     * A room's fixed limit, as the detector asks with it: the check of the margin ({@link MarginCheck}) counts the
+     * alarms the fixed limits would have raised, at the next learning, in the rooms whose fixed limit it knows by
+     * then (after a start, the rooms with activity since; it needs {@code minDays} days of history in any case).
+     */
+    public void fixedLimit(String room, Duration fixed) {
+        if (!fixed.equals(fixedLimits.get(room))) { // asked per activity: a write only when it changes
+            fixedLimits.put(room, fixed);
         }
     }
 
@@ -103,7 +118,9 @@ public final class HistoryLearner {
                 empty.add(new QuietGaps.Away(awaySince, now));
             }
             List<Sighting> typed = sightings.stream().map(this::typed).toList();
-            profile = new QuietProfile(QuietGaps.of(typed, empty, sleep), zone, settings);
+            List<Gap> gaps = QuietGaps.of(typed, empty, sleep);
+            MarginCheck.Result check = MarginCheck.choose(gaps, zone, settings, fixedLimits::get);
+            profile = new QuietProfile(gaps, zone, settings.withMargin(check.margin()), check.words());
             builtFor = today;
             dayFrom = today.atStartOfDay(zone).toInstant();
             dayUntil = today.plusDays(1).atStartOfDay(zone).toInstant();

@@ -30,12 +30,15 @@ public final class LearnedLimits {
      */
     public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
         history.add(s);
+        history.fixedLimit(s.room(), fixed);
         boolean asleep = history.sleep().asleep(s);
-        LearningSettings set = history.settings();
+        QuietProfile profile = history.profile(now);
+        LearningSettings set = profile.settings();
         boolean seated = s.seated() && !asleep;
-        return history.profile(now).learned(s.room(), s.roomName(), asleep, seated, s.at())
-                .map(l -> neverWorse(s, l, new Limit(l.limit(), asleep, l.explain(set)), fixed, set))
-                .orElseGet(() -> history.profile(now).partial(s.room(), s.roomName(), asleep, seated, now)
+        return profile.learned(s.room(), s.roomName(), asleep, seated, s.upFromBed(), s.at())
+                .map(l -> neverWorse(s, l, new Limit(l.limit(), asleep, l.explain(set) + profile.marginWords()),
+                        fixed, set))
+                .orElseGet(() -> profile.partial(s.room(), s.roomName(), asleep, seated, s.upFromBed(), now)
                         .map(l -> neverWorse(s, l, blend(s, l, fixed, asleep, set), fixed, set))
                         .orElseGet(() -> coldStart(s, fixed, asleep, set)));
     }
@@ -50,21 +53,35 @@ public final class LearnedLimits {
      */
     static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
         int longer = learned.limit().compareTo(fixed);
-        if (longer > 0 && l.allDay()) {
+        if (decide(l, learned.limit(), fixed, set).equals(learned.limit())) {
+            return learned;
+        }
+        if (longer > 0) {
             return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                     + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
                     + Amounts.duration(learned.limit()) + ", but only from other hours of the day (at these hours "
                     + "there are quiet periods on fewer than " + Amounts.count(set.minDays(), "day")
                     + "), and a longer limit must be learned from the hours it is used at (" + l.explain(set) + ")");
         }
-        if (longer >= 0 || l.periods() >= set.minPeriodsToShorten()) {
-            return learned;
-        }
         return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                 + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would shorten it to "
                 + Amounts.duration(learned.limit()) + ", but only " + Amounts.count(l.periods(), "quiet period")
                 + " support that and a shorter limit needs at least " + set.minPeriodsToShorten()
                 + " (" + l.explain(set) + ")");
+    }
+
+    /**
+     * The rule of {@link #neverWorse} without its words (the leave-one-day-out check, {@link MarginCheck}, asks it
+     * for every past quiet period).
+     *
+     * @return {@code learned}, or {@code fixed} where the rule keeps the fixed limit
+     */
+    static Duration decide(Learned l, Duration learned, Duration fixed, LearningSettings set) {
+        int longer = learned.compareTo(fixed);
+        if (longer > 0 && l.allDay()) {
+            return fixed;
+        }
+        return longer >= 0 || l.periods() >= set.minPeriodsToShorten() ? learned : fixed;
     }
 
     /** Fewer than minDays days: Z·learned + (1 − Z)·fixed, Z = √(days / minDays); never below the floor. */

@@ -40,6 +40,11 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
         return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n);
     }
 
+    /** @return these settings with another {@link #margin()} (the leave-one-day-out check's, {@code MarginCheck}) */
+    public LearningSettings withMargin(double m) {
+        return new LearningSettings(minDays, historyDays, m, pad, floor, ceiling, halfWindow, minPeriodsToShorten);
+    }
+
     public LearningSettings {
         if (minDays < 1 || historyDays < minDays || margin < 1 || pad.isNegative() || floor.isNegative()
                 || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11 || minPeriodsToShorten < 0) {

@@ -15,7 +15,10 @@ import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
- * What the home's history says about quiet periods, per room, state (awake or asleep) and time of day. Asked for
+ * What the home's history says about quiet periods, per room, state and time of day. The states: asleep, and awake
+ * in three kinds told apart by what began the quiet period: sitting down (a seat mat turned ON), getting up (a bed
+ * mat turned OFF: dressing, making the bed, sitting on its edge, which lasts longer than walking through the
+ * bedroom), and moving about (everything else). Asked for
  * a room, a state and a moment, it looks for enough history (quiet periods on {@code minDays} days or more) in
  * this order: the hours around the moment's hour on the same day type (weekday or weekend; only where both day
  * types have enough days), the hours around it on any day, then the room and state at any time of day. Without
@@ -25,17 +28,27 @@ public final class QuietProfile {
 
     private enum DayType { WEEKDAY, WEEKEND }
 
-    private record Key(String room, boolean asleep, boolean seated, int hour, DayType day) {
+    private record Key(String room, boolean asleep, boolean seated, boolean up, int hour, DayType day) {
     }
 
     private final Map<String, List<Gap>> byRoom = new HashMap<>();
     private final ZoneId zone;
     private final LearningSettings settings;
     private final Map<Key, Optional<Learned>> cache = new ConcurrentHashMap<>();
+    private final String marginWords;
 
     public QuietProfile(List<Gap> gaps, ZoneId zone, LearningSettings settings) {
+        this(gaps, zone, settings, "");
+    }
+
+    /**
+     * @param settings    with the margin the leave-one-day-out check chose ({@link MarginCheck})
+     * @param marginWords why that margin, when it is not the configured one (else empty)
+     */
+    QuietProfile(List<Gap> gaps, ZoneId zone, LearningSettings settings, String marginWords) {
         this.zone = zone;
         this.settings = settings;
+        this.marginWords = marginWords;
         for (Gap g : gaps) {
             byRoom.computeIfAbsent(g.start().room(), r -> new ArrayList<>()).add(g);
         }
@@ -48,18 +61,26 @@ public final class QuietProfile {
 
     /** As {@link #learned(String, String, boolean, Instant)}, for a quiet period that a seat mat turning ON began. */
     public Optional<Learned> learned(String room, String roomName, boolean asleep, boolean seated, Instant at) {
+        return learned(room, roomName, asleep, seated, false, at);
+    }
+
+    /** As {@link #learned(String, String, boolean, boolean, Instant)}; {@code up}: a bed mat turned OFF. */
+    public Optional<Learned> learned(String room, String roomName, boolean asleep, boolean seated, boolean up,
+            Instant at) {
         ZonedDateTime t = at.atZone(zone);
-        Key key = new Key(room, asleep, seated && !asleep, t.getHour(), dayType(t.getDayOfWeek()));
+        Key key = new Key(room, asleep, seated && !asleep, up && !asleep, t.getHour(),
+                dayType(t.getDayOfWeek()));
         return cache.computeIfAbsent(key, k -> compute(k, roomName));
     }
 
     private Optional<Learned> compute(Key k, String roomName) {
         List<Gap> all = byRoom.getOrDefault(k.room(), List.of()).stream().filter(g -> g.asleep() == k.asleep()
-                && seated(g) == k.seated()).toList();
+                && seated(g) == k.seated() && up(g) == k.up()).toList();
         List<Gap> around = all.stream().filter(g -> near(g, k.hour())).toList();
         int from = Math.floorMod(k.hour() - settings.halfWindow(), 24);
         int to = Math.floorMod(k.hour() + settings.halfWindow() + 1, 24);
-        String sit = k.seated() ? " after sitting down (a seat mat turned on)" : "";
+        String sit = k.seated() ? " after sitting down (a seat mat turned on)"
+                : k.up() ? " after getting up (a bed mat turned off)" : "";
         String hours = (settings.halfWindow() >= 12 ? "at any time of day"
                 : String.format("between %02d:00 and %02d:00", from, to)) + sit;
         List<Gap> sameDay = around.stream().filter(g -> dayOf(g) == k.day()).toList();
@@ -92,13 +113,22 @@ public final class QuietProfile {
 
     /** As {@link #partial(String, String, boolean, Instant)}, for a quiet period that a seat mat began. */
     public Optional<Learned> partial(String room, String roomName, boolean asleep, boolean seated, Instant now) {
+        return partial(room, roomName, asleep, seated, false, now);
+    }
+
+    /** As {@link #partial(String, String, boolean, boolean, Instant)}; {@code up}: a bed mat turned OFF. */
+    public Optional<Learned> partial(String room, String roomName, boolean asleep, boolean seated, boolean up,
+            Instant now) {
         LocalDate today = now.atZone(zone).toLocalDate();
         boolean sit = seated && !asleep;
+        boolean rise = up && !asleep;
         List<Gap> all = byRoom.getOrDefault(room, List.of()).stream().filter(g -> g.asleep() == asleep
-                && seated(g) == sit && g.start().at().atZone(zone).toLocalDate().isBefore(today)).toList();
+                && seated(g) == sit && up(g) == rise && g.start().at().atZone(zone).toLocalDate().isBefore(today))
+                .toList();
         int n = days(all).size();
         return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"
-                + (sit ? " after sitting down (a seat mat turned on)" : ""), true))
+                + (sit ? " after sitting down (a seat mat turned on)" : "")
+                + (rise ? " after getting up (a bed mat turned off)" : ""), true))
                 : Optional.empty();
     }
 
@@ -122,6 +152,10 @@ public final class QuietProfile {
         return g.start().seated() && !g.asleep();
     }
 
+    private static boolean up(Gap g) {
+        return g.start().upFromBed() && !g.asleep();
+    }
+
     private boolean near(Gap g, int hour) {
         int h = g.start().at().atZone(zone).getHour();
         int d = Math.abs(h - hour);
@@ -134,6 +168,16 @@ public final class QuietProfile {
 
     private static DayType dayType(DayOfWeek d) {
         return d == DayOfWeek.SATURDAY || d == DayOfWeek.SUNDAY ? DayType.WEEKEND : DayType.WEEKDAY;
+    }
+
+    /** @return the settings its limits were learned with (the margin may be the leave-one-day-out check's) */
+    public LearningSettings settings() {
+        return settings;
+    }
+
+    /** @return why the margin is larger than the configured one, to follow a limit's explanation; else empty */
+    public String marginWords() {
+        return marginWords;
     }
 
     /** @return how many different days the history covers (any room) */
