@@ -7,7 +7,6 @@ import org.osgi.framework.BundleContext;
 import org.osgi.framework.BundleEvent;
 import org.osgi.framework.SynchronousBundleListener;
 import org.osgi.framework.InvalidSyntaxException;
-import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
@@ -16,7 +15,6 @@ import org.osgi.util.tracker.ServiceTracker;
 import org.tinysep.api.device.Device;
 import org.tinysep.api.device.Driver;
 import org.tinysep.api.log.EventLog;
-import org.tinysep.device.support.lifecycle.ListenerPruning;
 
 /**
  * The device manager (thesis 3.3, 4.3). It watches the service registry, which does the announcing of interfaces
@@ -50,16 +48,10 @@ public final class DeviceManager implements Inventory {
 
     @Reference
     private EventLog eventLog;
-    /**
-     * Spares the framework the listeners that cannot want a service event ({@link ListenerPruning}): a device's
-     * registration was matched against every listener's filter, ~55 % of creating a device (issue 29).
-     */
-    private ServiceRegistration<?> pruning;
 
     @Activate
     void activate(BundleContext context) throws InvalidSyntaxException {
         this.context = context;
-        pruning = new ListenerPruning().register(context);
         Announcer announcer = new Announcer(eventLog);
         // Providers first, so that devices already registered are announced with their interfaces.
         ServiceTracker<Object, ProviderRecord> providers = new ServiceTracker<>(context,
@@ -85,11 +77,6 @@ public final class DeviceManager implements Inventory {
             // the bundle is already stopping
         }
         release();
-        try {
-            pruning.unregister();
-        } catch (IllegalStateException stopping) {
-            // unregistered with the bundle
-        }
     }
 
     /** Closes the trackers (each once): every service object is given back. */
