@@ -30,8 +30,8 @@ import java.util.concurrent.atomic.AtomicInteger;
  * Why a group: 2 folder syncs instead of 10,000 for a burst of 10,000 device backups, and the forces of a group are
  * made {@value #FORCERS} at a time ({@link #commit}'s own short-lived threads): the file system's journal then
  * commits the forces waiting together in one go, where forces one after the other each waited for a journal commit of
- * their own (ext4 on this project's build machine: 1.4-3.6 ms per file one after the other, 0.17 ms per file 8 at a
- * time; issue 29, a stop saving 2,500 device backups took 8.5 s).
+ * their own (ext4 on this project's shared build machine, 1,000 files: 1.4-3.6 ms per file one after the other while
+ * the disk was busy, 0.17 ms 8 at a time; 0.1 ms and 0.04-0.06 ms when it was quiet. Issue 29).
  * Not thread-safe: one writer thread uses one batch.
  */
 public final class AtomicBatch {
