@@ -230,6 +230,20 @@ public final class BackupStoreService implements BackupStore {
         }
     }
 
+    /**
+     * Writes the backup file of every device whose newest last seen time is only in {@link LastSeenJournal} (a backup
+     * archive holds the files): before an archive is made or a restore takes its undo copy; then {@link #flush}.
+     */
+    void settleJournal() {
+        for (String uid : journal.uids()) {
+            journal.forget(uid);
+            ComponentBackup b = backups.get(uid);
+            if (b != null) {
+                writer.write(b);
+            }
+        }
+    }
+
     /** The stop's limit ({@code stopSaveSeconds}), in ms (tests). */
     void stopSaveMillisForTest(long millis) {
         stopSaveMillis = millis;

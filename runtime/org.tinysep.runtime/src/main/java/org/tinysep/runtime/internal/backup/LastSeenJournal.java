@@ -23,8 +23,10 @@ import org.tinysep.device.support.files.AtomicFiles;
  * newer than its backup file's; on load it is applied to the backups it is newer than. A device whose backup file is
  * written again (a real change) is dropped from it, so the next stop writes only what is newer than the files.
  * <p>
- * One line per device, {@code <uid> <ISO-8601 instant>}; a line that cannot be read is skipped and reported. Not part
- * of a backup archive (which holds the backup files): a restore replaces the folder and discards the journal.
+ * One line per device, {@code <uid> <ISO-8601 instant>}; a line that cannot be read is skipped and reported. A backup
+ * archive holds the backup files only: before one is made (or a restore takes its undo copy) the devices kept here
+ * have their files written ({@link BackupStoreService#settleJournal()}); a restore replaces the folder and discards
+ * the journal.
  */
 final class LastSeenJournal {
 
@@ -66,6 +68,11 @@ final class LastSeenJournal {
 
     int size() {
         return newer.size();
+    }
+
+    /** @return the UIDs of the devices whose newest last seen time is kept here */
+    java.util.Set<String> uids() {
+        return java.util.Set.copyOf(newer.keySet());
     }
 
     /**

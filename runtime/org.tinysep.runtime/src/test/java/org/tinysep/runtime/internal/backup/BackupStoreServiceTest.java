@@ -176,6 +176,13 @@ class BackupStoreServiceTest {
         assertTrue(third.find("u-8").isEmpty(), "a deleted device stays deleted");
         assertEquals(t.plusSeconds(60), third.find("u-9").orElseThrow().lastSeen(), "kept across a second start");
         assertEquals(198, Files.readAllLines(root.resolve(LastSeenJournal.FILE)).size());
+        // before an archive is made (it holds the files): the files get the times, the journal goes
+        third.settleJournal();
+        assertTrue(third.flush(Duration.ofSeconds(30)));
+        third.deactivate();
+        assertFalse(Files.exists(root.resolve(LastSeenJournal.FILE)), "nothing newer than the files is left");
+        assertTrue(backupFiles().values().stream().filter(x -> x.contains("<uid>u-9</uid>"))
+                .allMatch(x -> x.contains("<lastSeen>" + t.plusSeconds(60) + "</lastSeen>")), "u-9's file has it");
         assertEquals(List.of(), problems);
     }
 
