@@ -128,6 +128,7 @@ public final class BackupCommands {
         StateFiles files = files();
         Path target = file == null ? files.var().resolve("tinysep-backup-" + STAMP.format(Instant.now()) + ".zip")
                 : Path.of(file).toAbsolutePath();
+        store.settleJournal(); // the last seen times of the last stop into the files the archive holds
         if (!store.flush(Duration.ofSeconds(10))) {
             throw new IllegalStateException("the backup store did not finish writing within 10 s; try again");
         }
@@ -167,6 +168,7 @@ public final class BackupCommands {
 
             @Override
             public void flushStore() {
+                store.settleJournal(); // the undo copy holds the files
                 store.flush(Duration.ofSeconds(10));
             }
 

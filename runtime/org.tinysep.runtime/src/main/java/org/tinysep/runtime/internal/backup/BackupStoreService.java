@@ -48,6 +48,8 @@ public final class BackupStoreService implements BackupStore {
     private final BackupFiles files;
     private final ScheduledExecutorService executor;
     private final BackupWriter writer;
+    /** Last seen times an orderly stop saves in one file instead of a backup file per device. */
+    private final LastSeenJournal journal;
     private volatile ArchiveUnpacker.Limits limits = DEFAULT_LIMITS;
     private long stopSaveMillis = 25_000;
     static final ArchiveUnpacker.Limits DEFAULT_LIMITS = new ArchiveUnpacker.Limits(64L << 20, 8L << 20, 10_000);
@@ -100,6 +102,7 @@ public final class BackupStoreService implements BackupStore {
         ex.setExecuteExistingDelayedTasksAfterShutdownPolicy(false); // the stop writes at once instead
         this.executor = ex;
         this.writer = new BackupWriter(files, written, executor, writeDelayMillis, this::writeFailed);
+        this.journal = new LastSeenJournal(files.layout().root());
         load();
     }
 
@@ -122,6 +125,11 @@ public final class BackupStoreService implements BackupStore {
         writer.drain();
         backups.clear();
         written.clear();
+        try {
+            journal.discard(); // the restored folder says when each node was last seen
+        } catch (IOException e) {
+            LOG.warn("Backup store: cannot delete {}: {}", LastSeenJournal.FILE, e.toString());
+        }
         load();
     }
 
@@ -141,6 +149,24 @@ public final class BackupStoreService implements BackupStore {
             events.record(EventKind.PROBLEM, ORIGIN, "cannot read the backup folder " + files.layout().root()
                     + ": " + e.getMessage() + "; starting without backups");
         }
+        try {
+            applyJournal();
+        } catch (IOException | RuntimeException e) {
+            damaged(root().resolve(LastSeenJournal.FILE), "unreadable: " + e.getMessage()
+                    + "; the backups keep the last seen times of their files");
+        }
+    }
+
+    /** Applies the last seen times the last orderly stop saved to the backups whose file is older. */
+    private void applyJournal() throws IOException {
+        journal.read(problem -> damaged(root().resolve(LastSeenJournal.FILE), problem)).forEach((uid, at) -> {
+            ComponentBackup b = backups.get(uid);
+            if (b == null || (b.lastSeen() != null && !at.isAfter(b.lastSeen()))) {
+                journal.forget(uid); // gone, or its file is as new
+            } else {
+                backups.put(uid, LastSeenJournal.withLastSeen(b, at, b.savedAt()));
+            }
+        });
     }
 
     /**
@@ -158,6 +184,7 @@ public final class BackupStoreService implements BackupStore {
                 // the bundle is already stopping
             }
         }
+        saveJournal();
         int backlog = writer.backlog();
         long t0 = System.nanoTime();
         if (backlog > 0) {
@@ -187,6 +214,36 @@ public final class BackupStoreService implements BackupStore {
         executor.awaitTermination(1, TimeUnit.SECONDS);
     }
 
+    /** Writes the last seen times kept in the journal (one file); a failure is reported, never thrown. */
+    private void saveJournal() {
+        int n = journal.size();
+        try {
+            journal.write();
+            if (n > 0) {
+                LOG.info("Backup store: saved the last seen times of {} device(s) in {}", n, LastSeenJournal.FILE);
+            }
+        } catch (IOException | RuntimeException e) {
+            String msg = String.format("cannot save the last seen times of %,d device(s) in %s: %s; their backups"
+                    + " keep the times saved before", n, LastSeenJournal.FILE, e.getMessage());
+            LOG.error("Backup store: {}", msg);
+            events.record(EventKind.PROBLEM, ORIGIN, msg);
+        }
+    }
+
+    /**
+     * Writes the backup file of every device whose newest last seen time is only in {@link LastSeenJournal} (a backup
+     * archive holds the files): before an archive is made or a restore takes its undo copy; then {@link #flush}.
+     */
+    void settleJournal() {
+        for (String uid : journal.uids()) {
+            journal.forget(uid);
+            ComponentBackup b = backups.get(uid);
+            if (b != null) {
+                writer.write(b);
+            }
+        }
+    }
+
     /** The stop's limit ({@code stopSaveSeconds}), in ms (tests). */
     void stopSaveMillisForTest(long millis) {
         stopSaveMillis = millis;
@@ -214,7 +271,14 @@ public final class BackupStoreService implements BackupStore {
 
     @Override
     public CompletionStage<Void> save(ComponentBackup backup) {
-        backups.put(backup.uid(), backup);
+        ComponentBackup before = backups.put(backup.uid(), backup);
+        if (stoppingSince != 0 && before != null && LastSeenJournal.fits(backup.uid())
+                && LastSeenJournal.onlyLastSeenMoved(before, backup)) {
+            // the framework stops and only the last seen time moved: one line in the journal, not a file
+            journal.note(backup.uid(), backup.lastSeen());
+            return CompletableFuture.completedFuture(null);
+        }
+        journal.forget(backup.uid()); // its file, written now, holds the newest
         return writer.write(backup);
     }
 
@@ -251,6 +315,7 @@ public final class BackupStoreService implements BackupStore {
 
     @Override
     public void delete(String uid) {
+        journal.forget(uid);
         if (backups.remove(uid) != null) {
             writer.delete(uid);
         }

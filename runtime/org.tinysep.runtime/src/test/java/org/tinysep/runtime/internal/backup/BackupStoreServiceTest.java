@@ -135,6 +135,71 @@ class BackupStoreServiceTest {
         assertEquals("Node 3", again.find("u-3").orElseThrow().name(), "the previous backup stays");
     }
 
+    /** @return every backup file under the root with its content */
+    private Map<Path, String> backupFiles() throws Exception {
+        Map<Path, String> out = new java.util.TreeMap<>();
+        try (Stream<Path> walk = Files.walk(root)) {
+            for (Path f : walk.filter(p -> p.toString().endsWith(".xml")).toList()) {
+                out.put(f, Files.readString(f));
+            }
+        }
+        return out;
+    }
+
+    @Test
+    void anOrderlyStopSavesTheLastSeenTimesInOneFileAndARestartHasTheExactOnes() throws Exception {
+        // issue 29: at a stop every node heard from since its last save wrote its whole backup file again for its
+        // last seen time: 10,000 files for 10,000 nodes
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        saveNodes(store, 200, t);
+        assertTrue(store.flush(Duration.ofSeconds(30)));
+        Map<Path, String> files = backupFiles();
+        assertEquals(200, files.size());
+        store.frameworkStopping();
+        saveNodes(store, 200, t.plusSeconds(60)); // each node's last state as its driver stops: last seen only
+        store.deactivate();
+        Map<Path, String> after = backupFiles();
+        long rewritten = files.keySet().stream().filter(f -> !files.get(f).equals(after.get(f))).count();
+        assertEquals(0, rewritten, "backup files written again at the stop");
+        assertEquals(200, Files.readAllLines(root.resolve(LastSeenJournal.FILE)).size(), "one line per node");
+
+        BackupStoreService again = new BackupStoreService(root, 0, events);
+        assertEquals(t.plusSeconds(60), again.find("u-7").orElseThrow().lastSeen(), "the exact last seen time");
+        again.save(device("u-7", "Renamed", "", t.plusSeconds(120))); // a real change: its file has the newest
+        again.delete("u-8"); // removed by the user: not brought back by the journal
+        assertTrue(again.flush(Duration.ofSeconds(30)));
+        again.deactivate(); // a stop of the store alone keeps the other times
+        BackupStoreService third = new BackupStoreService(root, 0, events);
+        assertEquals(t.plusSeconds(120), third.find("u-7").orElseThrow().lastSeen());
+        assertEquals("Renamed", third.find("u-7").orElseThrow().name());
+        assertTrue(third.find("u-8").isEmpty(), "a deleted device stays deleted");
+        assertEquals(t.plusSeconds(60), third.find("u-9").orElseThrow().lastSeen(), "kept across a second start");
+        assertEquals(198, Files.readAllLines(root.resolve(LastSeenJournal.FILE)).size());
+        // before an archive is made (it holds the files): the files get the times, the journal goes
+        third.settleJournal();
+        assertTrue(third.flush(Duration.ofSeconds(30)));
+        third.deactivate();
+        assertFalse(Files.exists(root.resolve(LastSeenJournal.FILE)), "nothing newer than the files is left");
+        assertTrue(backupFiles().values().stream().filter(x -> x.contains("<uid>u-9</uid>"))
+                .allMatch(x -> x.contains("<lastSeen>" + t.plusSeconds(60) + "</lastSeen>")), "u-9's file has it");
+        assertEquals(List.of(), problems);
+    }
+
+    @Test
+    void aDamagedLineOfTheLastSeenFileIsReportedAndTheRestApplies() throws Exception {
+        Instant t = Instant.parse("2026-11-22T10:00:00Z");
+        BackupStoreService store = new BackupStoreService(root, 0, events);
+        saveNodes(store, 2, t);
+        store.deactivate();
+        Files.writeString(root.resolve(LastSeenJournal.FILE), "u-0 2026-11-22T10:05:00Z\nu-1 yesterday\n");
+        BackupStoreService again = new BackupStoreService(root, 0, events);
+        assertEquals(t.plusSeconds(300), again.find("u-0").orElseThrow().lastSeen());
+        assertEquals(t, again.find("u-1").orElseThrow().lastSeen());
+        assertEquals(1, problems.size(), problems.toString());
+        assertTrue(problems.get(0).contains("last-seen.txt line 2"), problems.get(0));
+    }
+
     @Test
     void aStoppingWriterWritesBackupsNeverSavedBeforeRefreshesOfSavedOnes() {
         List<String> queued = List.of("saved-1", "new-1", "saved-2", "new-2", "new-3");
