@@ -260,10 +260,14 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     /**
      * Checks for silence on a platform tick: a node not heard for the policy's number of report intervals goes
-     * OFFLINE with a PROBLEM entry in plain words; its next valid frame brings it back ONLINE.
+     * OFFLINE with a PROBLEM entry in plain words; its next valid frame brings it back ONLINE. Returns at once, with no
+     * allocation, while nothing can be due ({@link NodeWatch#due}).
      */
     public void checkHealth(Instant now) {
         NodePolicy p = policy;
+        if (!watch.due(now, p.silentAfterIntervals())) {
+            return; // heard within its limit, or silent and not flapping: nothing to say this tick
+        }
         String node = "AmICA node " + address + " (" + name() + ")";
         if (watch.checkSilence(now, p.silentAfterIntervals())) {
             Instant since = watch.silentSince();
