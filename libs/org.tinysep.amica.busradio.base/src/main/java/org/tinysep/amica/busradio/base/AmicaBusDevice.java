@@ -283,6 +283,12 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     }
 
     @Override
+    public int healthFlags() {
+        boolean online = !watch.silent() && status().state() == DeviceStatus.State.ONLINE;
+        return (online ? 1 : 0) | (battery.low() ? 2 : 0);
+    }
+
+    @Override
     public NodeHealth health() {
         Instant now = now();
         int mv = keepAlive.batteryMillivolts();

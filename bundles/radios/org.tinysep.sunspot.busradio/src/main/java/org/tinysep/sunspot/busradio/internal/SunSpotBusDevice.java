@@ -171,6 +171,11 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
     }
 
     @Override
+    public int healthFlags() {
+        return !watch.silent() && status().state() == DeviceStatus.State.ONLINE ? 1 : 0; // no battery reading
+    }
+
+    @Override
     public NodeHealth health() {
         Instant now = now();
         return new NodeHealth(uid(), address.toString(), nodeTypes,
