@@ -37,6 +37,7 @@ public final class NodeWatch {
     /** The missed intervals {@link #dueMillis} was planned with, and the tick time it was planned at. */
     private volatile int dueFor = -1;
     private volatile long plannedAt = Long.MIN_VALUE;
+    private volatile Runnable dueEarlier = () -> { };
 
     /**
      * @param interval  the node's report interval (silence is counted in these)
@@ -58,7 +59,7 @@ public final class NodeWatch {
      */
     public synchronized void realSilenceGuard(Duration guard) {
         this.realGuardNanos = guard.toNanos();
-        dueMillis = Long.MIN_VALUE;
+        earlier(Long.MIN_VALUE);
     }
 
     /** The node's types changed: new report interval and rate. */
@@ -68,7 +69,7 @@ public final class NodeWatch {
         }
         this.interval = interval;
         this.perSecond = perSecond;
-        dueMillis = Long.MIN_VALUE;
+        earlier(Long.MIN_VALUE);
     }
 
     /**
@@ -84,11 +85,11 @@ public final class NodeWatch {
         long silence = lastHeard == null ? 0 : at.toEpochMilli() - lastHeard.toEpochMilli();
         if (configuredMissed > 0 && silence >= interval.toMillis() * configuredMissed) {
             damper.silenceEnded(at, silence); // a gap the normal limit counts as silence, declared or not (flapping)
-            dueMillis = Long.MIN_VALUE; // it may start flapping
+            earlier(Long.MIN_VALUE); // it may start flapping
         }
         long limit = at.toEpochMilli() + interval.toMillis() * Math.max(1, configuredMissed);
         if (limit < dueMillis) {
-            dueMillis = limit; // first heard, heard again after a silence, or heard with an earlier time stamp
+            earlier(limit); // first heard, heard again after a silence, or heard with an earlier time stamp
         }
         lastHeard = at;
         silenceBase = at;
@@ -148,7 +149,7 @@ public final class NodeWatch {
         this.lastHeard = lastHeard;
         this.silenceBase = lastHeard;
         this.silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
-        dueMillis = Long.MIN_VALUE;
+        earlier(Long.MIN_VALUE);
     }
 
     /**
@@ -159,6 +160,25 @@ public final class NodeWatch {
     public boolean due(Instant now, int missedIntervals) {
         long t = now.toEpochMilli();
         return t >= dueMillis || t < plannedAt || Math.max(1, missedIntervals) != dueFor;
+    }
+
+    /**
+     * @param hook told (on the caller's thread, under this watch's lock: keep it short) whenever the next check
+     *             comes closer than planned, e.g. the first frame, a frame after a silence, new report intervals; lets
+     *             a node table skip a tick's look at all its nodes until the first of them is due
+     */
+    public void onDueEarlier(Runnable hook) {
+        this.dueEarlier = hook;
+    }
+
+    /** @return epoch millis from which {@link #due} is true (planned by the last due tick; lowered since) */
+    public long dueMillis() {
+        return dueMillis;
+    }
+
+    private void earlier(long at) {
+        dueMillis = at;
+        dueEarlier.run();
     }
 
     /** After a tick's checks: when the next one can have something to say (guarded by this). */
