@@ -197,8 +197,9 @@ final class NodeIndex {
             notices.update(s, now, due);
         }
         RoomWatch.Changes r = rooms.evaluate();
-        work += notices.waiting();
+        long looked = notices.looked();
         due.addAll(notices.due(now));
+        work += notices.looked() - looked;
         due.sort(Comparator.comparing(Notice::sensor, ORDER));
         return new Changes(r, due);
     }
