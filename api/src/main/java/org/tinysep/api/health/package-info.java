@@ -5,7 +5,7 @@
  * ({@code org.tinysep.sensorhealth}) combines them with House Information into {@link SensorHealthProvider}.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.api.health;
 
 import org.osgi.annotation.bundle.Export;

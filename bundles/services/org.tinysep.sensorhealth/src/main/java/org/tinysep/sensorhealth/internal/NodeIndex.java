@@ -23,10 +23,11 @@ import org.tinysep.sensorhealth.internal.Placements.Placement;
 /**
  * Every node's health with where it is, kept as an index updated on change (rebuilding and sorting the
  * whole list every second took a quarter of the CPU while 10,000 devices were created). Service events only queue
- * a change; each platform second {@link #tick} applies them, reads each node's health (one cheap call per node:
- * {@code NodeHealthSource} has no change notification) and does further work only for the nodes whose online or
- * battery state or placement changed: their rooms, their notices. The sorted list of all sensors is built only when
- * asked for ({@link #sensors()}). {@link #tick} runs on the platform tick's thread only.
+ * a change; each platform second {@link #tick} applies them, asks each node for its online and battery flags (one
+ * call, no allocation: {@code NodeHealthSource} has no change notification), reads the health of a node only when
+ * they changed (or the source cannot tell) and does further work only for the nodes whose online or battery state
+ * or placement changed: their rooms, their notices. The sorted list of all sensors is built only when asked for
+ * ({@link #sensors()}), with each node's health read then. {@link #tick} runs on the platform tick's thread only.
  */
 final class NodeIndex {
 
@@ -45,6 +46,7 @@ final class NodeIndex {
         volatile String ownRoom;
         volatile Placement placement;
         volatile NodeHealth last;
+        int flags = -1;
         boolean counted;
         boolean offline;
 
@@ -159,7 +161,12 @@ final class NodeIndex {
         for (Entry e : entries.values()) {
             NodeHealth h;
             try {
+                int flags = e.source.healthFlags();
+                if (flags >= 0 && flags == e.flags && e.last != null) {
+                    continue; // online and battery as last read: nothing to look at
+                }
                 h = e.source.health();
+                e.flags = flags;
                 reads++;
             } catch (RuntimeException ex) { // a bus device being removed: its last state stays
                 continue;
@@ -190,8 +197,9 @@ final class NodeIndex {
             notices.update(s, now, due);
         }
         RoomWatch.Changes r = rooms.evaluate();
-        work += notices.waiting();
+        long looked = notices.looked();
         due.addAll(notices.due(now));
+        work += notices.looked() - looked;
         due.sort(Comparator.comparing(Notice::sensor, ORDER));
         return new Changes(r, due);
     }
@@ -227,16 +235,30 @@ final class NodeIndex {
 
     // ---- readers (any thread)
 
-    /** @return every node's health as of the last tick, by room name then node address (built on each call) */
+    /**
+     * @return every node's health read now (the last tick's for a node that cannot be read), placed as of the last
+     *         tick, by room name then node address (built on each call)
+     */
     List<SensorHealth> sensors() {
         List<SensorHealth> out = new ArrayList<>();
         for (Entry e : entries.values()) {
-            if (e.last != null) {
-                out.add(sensor(e));
+            NodeHealth last = e.last;
+            if (last != null) {
+                Placement p = e.placement;
+                out.add(new SensorHealth(fresh(e, last), p.name(), p.roomUid(),
+                        p.roomUid() == null ? null : roomName.apply(p.roomUid())));
             }
         }
         out.sort(ORDER);
         return out;
+    }
+
+    private static NodeHealth fresh(Entry e, NodeHealth last) {
+        try {
+            return e.source.health();
+        } catch (RuntimeException ex) { // a bus device being removed: its last state stays
+            return last;
+        }
     }
 
     RoomWatch rooms() {
@@ -256,7 +278,7 @@ final class NodeIndex {
         return work + rooms.evaluated();
     }
 
-    /** @return health reads since start (one per node per tick) */
+    /** @return health reads by the ticks since start (one per node whose online or battery flags changed) */
     long reads() {
         return reads;
     }

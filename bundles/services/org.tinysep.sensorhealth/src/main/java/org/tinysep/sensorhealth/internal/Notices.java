@@ -17,8 +17,9 @@ import org.tinysep.api.health.SensorHealth;
  * silence, and a "back" notice when it is heard again after that; a low battery gets one notice per low period.
  * A sensor back before the delay sends nothing. The delay counts from when the platform first saw the sensor
  * OFFLINE (after a restart its last frame may be days old). Incremental: it is told only about sensors that are new
- * or whose online/battery state changed ({@link #update}), and each tick looks only at the silences still waiting
- * for their notice ({@link #due(Instant)}). Pure logic, not thread-safe (the platform tick calls it).
+ * or whose online/battery state changed ({@link #update}), and a tick looks at the silences still waiting for their
+ * notice ({@link #due(Instant)}) only once the first of them is due. Pure logic, not thread-safe (the platform tick
+ * calls it).
  */
 final class Notices {
 
@@ -37,6 +38,10 @@ final class Notices {
     private final Map<String, SensorHealth> waiting = new LinkedHashMap<>(); // offline, notice not yet sent
     private final Set<String> noticed = new HashSet<>();
     private final Set<String> batteryNoticed = new HashSet<>();
+    /** When the first waiting silence is due (never later), and the tick before; silences looked at, for tests. */
+    private Instant nextDue;
+    private Instant lastTick;
+    private long looked;
 
     Notices(Duration delay) {
         this.delay = delay;
@@ -49,9 +54,11 @@ final class Notices {
     void update(SensorHealth s, Instant now, List<Notice> out) {
         String uid = s.node().deviceUid();
         if (!s.node().online()) {
-            offline.computeIfAbsent(uid, u -> new Silence(sinceOf(s, now), now));
+            Silence silence = offline.computeIfAbsent(uid, u -> new Silence(sinceOf(s, now), now));
             if (!noticed.contains(uid)) {
                 waiting.put(uid, s);
+                Instant at = silence.seen().plus(delay);
+                nextDue = nextDue == null || at.isBefore(nextDue) ? at : nextDue;
             }
         } else {
             waiting.remove(uid);
@@ -78,17 +85,33 @@ final class Notices {
 
     /** @return the OFFLINE notices due now: only the silences still waiting for theirs are looked at */
     List<Notice> due(Instant now) {
+        boolean back = lastTick != null && now.isBefore(lastTick);
+        lastTick = now;
+        if (waiting.isEmpty() || !back && nextDue != null && now.isBefore(nextDue)) {
+            return List.of(); // none waiting, or the first is not due yet
+        }
         List<Notice> out = new ArrayList<>();
+        Instant next = null;
         for (Iterator<Map.Entry<String, SensorHealth>> i = waiting.entrySet().iterator(); i.hasNext();) {
             Map.Entry<String, SensorHealth> e = i.next();
             Silence silence = offline.get(e.getKey());
-            if (!now.isBefore(silence.seen().plus(delay))) {
+            Instant at = silence.seen().plus(delay);
+            looked++;
+            if (!now.isBefore(at)) {
                 i.remove();
                 noticed.add(e.getKey());
                 out.add(new Notice(Kind.OFFLINE, e.getValue(), silence.since()));
+            } else {
+                next = next == null || at.isBefore(next) ? at : next;
             }
         }
+        nextDue = next;
         return out;
+    }
+
+    /** @return waiting silences looked at by {@link #due(Instant)} since creation */
+    long looked() {
+        return looked;
     }
 
     /** @return the notices due now for these sensors, given every known sensor (all of them, each tick) */

@@ -41,6 +41,10 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
     private volatile List<UnmonitoredRoom> unmonitored = List.of();
     private volatile long sent;
     private volatile String lastNotice = "";
+    /** What the status line last said (tick thread only): it is built again only when one of them changes. */
+    private int shownAll = -1;
+    private int shownOffline = -1;
+    private List<UnmonitoredRoom> shownUnmonitored = List.of();
 
     SensorHealthDevice(DriverContext context, NodeIndex index, Function<String, String> roomName, NoticeWords words,
             Supplier<MailManagerProvider> mail, SensorHealthConfig config) {
@@ -59,7 +63,8 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
     void tick(Instant now) {
         NodeIndex.Changes changes = index.tick(now);
         index.rooms().dropRemovedRooms(r -> context.rooms().house().isPresent() && context.rooms().room(r).isEmpty());
-        unmonitored = index.rooms().unmonitored().stream().map(this::named)
+        List<UnmonitoredRoom> rooms = index.rooms().unmonitored();
+        unmonitored = rooms.isEmpty() ? List.of() : rooms.stream().map(this::named)
                 .sorted(Comparator.comparing(UnmonitoredRoom::roomName)).toList();
         rooms(changes.rooms(), now);
         if (!changes.notices().isEmpty()) {
@@ -67,9 +72,16 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
         }
         int all = index.known();
         int offline = index.offline();
+        List<UnmonitoredRoom> u = unmonitored;
+        if (all == shownAll && offline == shownOffline && u.equals(shownUnmonitored)) {
+            return; // the status line would say the same: not built again
+        }
+        shownAll = all;
+        shownOffline = offline;
+        shownUnmonitored = u;
         status(DeviceStatus.State.ONLINE, offline == 0 ? "all " + all + " sensors heard"
-                : offline + " of " + all + " sensors offline" + (unmonitored.isEmpty() ? ""
-                        : "; unmonitored: " + unmonitored.stream().map(UnmonitoredRoom::roomName)
+                : offline + " of " + all + " sensors offline" + (u.isEmpty() ? ""
+                        : "; unmonitored: " + u.stream().map(UnmonitoredRoom::roomName)
                                 .collect(Collectors.joining(", "))));
     }
 

@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.health.NodeHealth;
+import org.tinysep.api.health.NodeHealthSource;
 import org.tinysep.api.health.SensorHealth;
 import org.tinysep.sensorhealth.internal.Notices.Kind;
 import org.tinysep.sensorhealth.internal.Notices.Notice;
@@ -188,5 +189,54 @@ class NodeIndexTest {
         index.tick(T0.plusSeconds(2));
         index.rooms().dropRemovedRooms(r -> r.equals("Bathroom-uid"));
         assertTrue(index.rooms().unmonitored().isEmpty());
+    }
+
+    /**
+     * Issue 29 (idle CPU): a bus device that tells its online and battery flags (NodeHealthSource.healthFlags) is not
+     * read on a tick where they are unchanged; the one that changed is read and counted, and the sensor list still
+     * shows each node's health as it is now.
+     */
+    @Test
+    void anIdleTickReadsNoNodeWhoseFlagsAreUnchanged() {
+        NodeIndex index = index(Duration.ofMinutes(10));
+        List<Node> all = new ArrayList<>();
+        int[] healthReads = {0};
+        for (int i = 0; i < 50; i++) {
+            Node n = new Node(i);
+            index.sourceAdded(n.bus, n.address, "room-uid", new NodeHealthSource() {
+                @Override
+                public NodeHealth health() {
+                    healthReads[0]++;
+                    return n.health.get();
+                }
+
+                @Override
+                public int healthFlags() {
+                    NodeHealth h = n.health.get();
+                    return (h.online() ? 1 : 0) | (h.batteryLow() ? 2 : 0);
+                }
+            });
+            all.add(n);
+        }
+        Instant t = T0;
+        for (int i = 0; i <= NodeIndex.SETTLE_TICKS; i++) {
+            index.tick(t = t.plusSeconds(1));
+        }
+        assertEquals(50, index.known());
+        int before = healthReads[0];
+        long readsBefore = index.reads();
+        for (int i = 0; i < 60; i++) {
+            all.get(i % 50).set(true, t); // heard again: online as before
+            index.tick(t = t.plusSeconds(1));
+        }
+        assertEquals(0, healthReads[0] - before, "a minute of ticks, flags unchanged: health reads");
+        all.get(7).set(false, t);
+        index.tick(t = t.plusSeconds(1));
+        assertEquals(1, index.reads() - readsBefore, "the node whose flags changed is read");
+        assertEquals(1, index.offline());
+        Instant heard = t;
+        all.get(9).set(true, heard);
+        assertEquals(heard, index.sensors().stream().filter(s -> s.node().nodeAddress().equals("1.9")).findFirst()
+                .orElseThrow().node().lastHeard(), "the sensor list reads each node when asked");
     }
 }

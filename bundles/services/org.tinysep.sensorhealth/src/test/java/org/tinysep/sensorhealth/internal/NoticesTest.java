@@ -80,4 +80,22 @@ class NoticesTest {
         assertTrue(body.startsWith("This is a notice about the sensors, not an alarm"), body);
         assertTrue(body.contains("Its last report came at 2026-01-05 09:12:00 Z"), body);
     }
+
+    /** Issue 29 (idle CPU): silences waiting for their notice are looked at once the first is due, not every tick. */
+    @Test
+    void waitingSilencesAreLookedAtOnlyWhenTheFirstIsDue() {
+        Notices n = new Notices(Duration.ofMinutes(10));
+        List<Notice> out = new java.util.ArrayList<>();
+        for (int i = 0; i < 50; i++) {
+            n.update(sensor("s" + i, "Room" + i, false, T0, false, "movement"), T0, out);
+        }
+        int sent = 0;
+        for (int s = 1; s < 600; s++) {
+            sent += n.due(T0.plusSeconds(s)).size();
+        }
+        assertEquals(0, sent);
+        assertEquals(0, n.looked(), "silences looked at in the 10 minutes before the first is due");
+        assertEquals(50, n.due(T0.plusSeconds(600)).size(), "then all 50 notices, at their time");
+        assertEquals(List.of(), n.due(T0.plusSeconds(601)));
+    }
 }

@@ -34,7 +34,9 @@ import org.tinysep.device.support.files.StateFolder;
  * arrive in its inbox go to the {@link ReplyHandler} (the alert service) and its answer goes back by SMS. When
  * gammu-smsd is not running or the modem does not send, the channel is in ERROR in plain words and {@link #send}
  * fails at once, so the alert service tries the contact's next channel. The modem is a device of the platform
- * with the same state ({@link ModemDevice}).
+ * with the same state ({@link ModemDevice}). The inbox is watched ({@link InboxWatch}): a reply is read as it
+ * arrives; the modem's state is looked at every {@code pollMillis} while an SMS waits in the outbox (or the inbox
+ * cannot be watched), otherwise every {@code idleSeconds}, so an idle channel does not wake every second.
  */
 @Component(service = MessageChannel.class, configurationPid = "org.tinysep.sms", immediate = true,
         property = MessageChannel.SCHEME + "=sms")
@@ -52,6 +54,14 @@ public final class SmsChannel implements MessageChannel {
     private volatile ReplyHandler replies;
 
     private ScheduledExecutorService poller;
+    private InboxWatch inbox;
+    private long pollMillis;
+    private long idleMillis;
+    private final java.util.concurrent.atomic.AtomicLong looks = new java.util.concurrent.atomic.AtomicLong();
+    private final java.util.concurrent.atomic.AtomicBoolean replyLookPending =
+            new java.util.concurrent.atomic.AtomicBoolean();
+    /** How long after a file appears in the inbox it is read: gammu-smsd writes it in that time. */
+    static final long REPLY_SETTLE_MILLIS = 200;
     /** The modem as a device of the platform ({@link ModemDevice}); null without OSGi (unit tests). */
     private ModemDriver modem;
     private ModemHealth health;
@@ -65,16 +75,60 @@ public final class SmsChannel implements MessageChannel {
     void activate(BundleContext context, SmsConfig c) {
         Path base = StateFolder.resolveOrDataArea(c.spoolFolder(), context, "sms");
         this.modem = new ModemDriver(context, base, c.pidFile(), c.stuckSeconds());
-        start(base, c.pidFile(), c.stuckSeconds(), c.maxParts(), c.pollMillis());
+        start(base, c.pidFile(), c.stuckSeconds(), c.maxParts(), c.pollMillis(), c.idleSeconds() * 1000L);
+    }
+
+    /** The activation without OSGi (tests), looking every minute when idle. */
+    void start(Path base, String pidFile, int stuckSeconds, int parts, int pollMillis) {
+        start(base, pidFile, stuckSeconds, parts, pollMillis, 60_000);
     }
 
     /** The activation without OSGi (tests). */
-    void start(Path base, String pidFile, int stuckSeconds, int parts, int pollMillis) {
+    void start(Path base, String pidFile, int stuckSeconds, int parts, int pollMillis, long idleMillis) {
         this.spool = new Spool(base);
         this.maxParts = Math.max(1, Math.min(3, parts));
         this.health = new ModemHealth(spool, pidFile, Math.max(1, stuckSeconds), Clock.systemUTC());
+        this.pollMillis = Math.max(100, pollMillis);
+        this.idleMillis = Math.max(this.pollMillis, idleMillis);
         this.poller = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "tinysep-sms"));
-        poller.scheduleWithFixedDelay(this::poll, 0, Math.max(100, pollMillis), TimeUnit.MILLISECONDS);
+        this.inbox = new InboxWatch(this::lookNow);
+        poller.execute(this::look);
+    }
+
+    /**
+     * A file arrived in the inbox: look shortly (on the poller's thread, so looks never overlap), once gammu-smsd
+     * has had time to finish writing it; a burst of events is one look when they come within that time.
+     */
+    private void lookNow() {
+        if (!replyLookPending.compareAndSet(false, true)) {
+            return;
+        }
+        try {
+            poller.schedule(() -> {
+                replyLookPending.set(false);
+                poll();
+            }, REPLY_SETTLE_MILLIS, TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.RejectedExecutionException e) {
+            // deactivated
+        }
+    }
+
+    /** A scheduled look; the next one comes soon while something is pending, else after {@code idleSeconds}. */
+    private void look() {
+        poll();
+        boolean watched = inbox.watch(spool.folder("inbox"));
+        boolean setUp = used || java.nio.file.Files.isDirectory(spool.base()); // else: nothing to watch for
+        long next = setUp && (!watched || spool.outboxWaiting()) ? pollMillis : idleMillis;
+        try {
+            poller.schedule(this::look, next, TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.RejectedExecutionException e) {
+            // deactivated
+        }
+    }
+
+    /** @return how many times the state and the inbox were looked at (for tests: wake-ups when idle) */
+    long looks() {
+        return looks.get();
     }
 
     /** For tests: who hears replies. */
@@ -84,6 +138,7 @@ public final class SmsChannel implements MessageChannel {
 
     @Deactivate
     void deactivate() {
+        inbox.close();
         poller.shutdownNow();
         try {
             poller.awaitTermination(2, TimeUnit.SECONDS);
@@ -145,6 +200,7 @@ public final class SmsChannel implements MessageChannel {
 
     /** Every poll: the modem's state (logged when it changes) and the replies received. */
     private void poll() {
+        looks.incrementAndGet();
         try {
             DeviceStatus now = health.status();
             DeviceStatus before = said;

@@ -23,6 +23,12 @@ public @interface SmsConfig {
     @AttributeDefinition(description = "Most SMS one message may take (longer ones are shortened); 1 to 3")
     int maxParts() default 3;
 
-    @AttributeDefinition(description = "Milliseconds between two looks at the inbox and the modem's state")
+    @AttributeDefinition(description = "Milliseconds between two looks at the modem's state while an SMS waits in "
+            + "the outbox (or the inbox cannot be watched); replies are read as they arrive")
     int pollMillis() default 1000;
+
+    @AttributeDefinition(description = "Seconds between two looks at the modem's state while nothing is pending: "
+            + "a gammu-smsd that stopped is said in the event log this much later at most (an alert always sees "
+            + "the state of the moment)", min = "1")
+    int idleSeconds() default 60;
 }

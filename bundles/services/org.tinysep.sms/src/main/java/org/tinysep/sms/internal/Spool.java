@@ -83,6 +83,15 @@ final class Spool {
     }
 
     /** @return how many SMS have waited in the outbox for longer than {@code limit} */
+    /** @return whether any SMS waits in the outbox (false when it cannot be read) */
+    boolean outboxWaiting() {
+        try (Stream<Path> s = Files.list(folder("outbox"))) {
+            return s.anyMatch(p -> p.getFileName().toString().startsWith("OUT"));
+        } catch (IOException | RuntimeException e) {
+            return false;
+        }
+    }
+
     int waitingLongerThan(Duration limit, Instant now) {
         try (Stream<Path> s = Files.list(folder("outbox"))) {
             return (int) s.filter(p -> p.getFileName().toString().startsWith("OUT")).filter(p -> {

@@ -95,6 +95,33 @@ class SmsChannelGammuTest {
         assertTrue(channel.delivery(d.id()).orElseThrow().detail().contains("waiting in gammu-smsd's outbox: 1 SMS"));
     }
 
+    /**
+     * Issue 29 (idle CPU): an idle channel, set up, nothing in the outbox, does not look every pollMillis: it waits
+     * idleSeconds, yet a reply that arrives in the inbox is read at once (the inbox is watched).
+     */
+    @Test
+    void anIdleChannelDoesNotLookEachPollYetReadsAReplyAsItArrives() throws Exception {
+        for (String f : List.of("outbox", "inbox", "sent", "error")) {
+            Files.createDirectories(dir.resolve(f));
+        }
+        channel.use((scheme, from, text) -> {
+            replies.add(from + ": " + text);
+            return Optional.empty();
+        });
+        channel.start(dir, "", 30, 3, 100, 60_000);
+        Thread.sleep(2000);
+        assertTrue(channel.looks() <= 2, "looks in 2 s idle, pollMillis 100: " + channel.looks());
+        Path tmp = dir.resolve("reply.tmp");
+        Files.write(tmp, "\uFEFFOK 5".getBytes(java.nio.charset.StandardCharsets.UTF_16LE));
+        Files.move(tmp, dir.resolve("inbox").resolve("IN20261130_013000_00_" + EVA + "_00.txt"));
+        long t0 = System.nanoTime();
+        while (replies.isEmpty() && System.nanoTime() - t0 < 5_000_000_000L) {
+            Thread.sleep(20);
+        }
+        assertEquals(1, replies.size(), "the reply was read within 5 s although the next idle look is a minute away");
+        assertEquals(EVA + ": OK 5", replies.get(0));
+    }
+
     /** A condition that may read files. */
     private interface Check {
         boolean ok() throws Exception;

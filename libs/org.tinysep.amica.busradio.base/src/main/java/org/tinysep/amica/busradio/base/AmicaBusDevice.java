@@ -57,6 +57,10 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
         /** Forgets a bus device its driver removed (it calls this as it is disposed), so the node comes anew. */
         void forget(AbstractDevice device);
+
+        /** The device's next health check came closer than planned (e.g. it was heard after a silence). */
+        default void healthDueEarlier() {
+        }
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(AmicaBusDevice.class);
@@ -92,6 +96,7 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
         serviceProperty(DeviceProperties.NODE_ADDRESS, address.toString());
         serviceProperty(DeviceProperties.NODE_TYPE, nodeTypes.toArray(String[]::new));
         this.watch = new NodeWatch(interval(nodeTypes), perSecond(nodeTypes), null);
+        watch.onDueEarlier(link == null ? () -> { } : link::healthDueEarlier);
         publish(this, BusRadioAmicaProvider.class, NodeHealthSource.class);
     }
 
@@ -106,6 +111,14 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
     /** Sets the health settings (silence, low battery); the node table passes its bus radio's. */
     public void policy(NodePolicy policy) {
         this.policy = policy;
+        if (link != null) {
+            link.healthDueEarlier();
+        }
+    }
+
+    /** @return epoch millis of this node's next health check that can say something (see {@link #checkHealth}) */
+    long healthDueMillis() {
+        return watch.dueMillis();
     }
 
     /** Sets the real time a node must also be silent for (see {@code NodeWatch.realSilenceGuard}). */
@@ -260,10 +273,14 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
 
     /**
      * Checks for silence on a platform tick: a node not heard for the policy's number of report intervals goes
-     * OFFLINE with a PROBLEM entry in plain words; its next valid frame brings it back ONLINE.
+     * OFFLINE with a PROBLEM entry in plain words; its next valid frame brings it back ONLINE. Returns at once, with no
+     * allocation, while nothing can be due ({@link NodeWatch#due}).
      */
     public void checkHealth(Instant now) {
         NodePolicy p = policy;
+        if (!watch.due(now, p.silentAfterIntervals())) {
+            return; // heard within its limit, or silent and not flapping: nothing to say this tick
+        }
         String node = "AmICA node " + address + " (" + name() + ")";
         if (watch.checkSilence(now, p.silentAfterIntervals())) {
             Instant since = watch.silentSince();
@@ -276,6 +293,12 @@ public final class AmicaBusDevice<R> extends AbstractDevice implements BusRadioA
             context.reporter().event(flapping.startsWith("Monitoring reduced: ") ? EventKind.PROBLEM
                     : EventKind.DEVICE_EVENT, uid(), flapping);
         }
+    }
+
+    @Override
+    public int healthFlags() {
+        boolean online = !watch.silent() && status().state() == DeviceStatus.State.ONLINE;
+        return (online ? 1 : 0) | (battery.low() ? 2 : 0);
     }
 
     @Override

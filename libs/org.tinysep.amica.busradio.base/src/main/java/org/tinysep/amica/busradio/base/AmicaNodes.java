@@ -63,6 +63,12 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
     private volatile NodePolicy policy = NodePolicy.DEFAULT;
     private volatile OrderedDelivery delivery;
     private volatile java.time.Duration realSilenceGuard = java.time.Duration.ZERO;
+    /** Set when a node's next health check came closer than planned: the next tick looks through the nodes. */
+    private volatile boolean healthDirty = true;
+    /** The platform tick's own (one thread): when the first node's check is due, the tick before, its rounds. */
+    private long nextHealthCheck = Long.MIN_VALUE;
+    private long lastHealthTick = Long.MIN_VALUE;
+    private long healthRounds;
 
     /**
      * @param deviceType the type of the bus devices, e.g. {@code BusRadioAmicaUdp}
@@ -131,14 +137,40 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
         device.delivery(delivery);
         device.realSilenceGuard(realSilenceGuard);
         nodes.put(address, device);
+        healthDirty = true;
         return register.apply(device);
     }
 
-    /** Checks every node for silence (sensor health); call on each platform tick. */
+    /**
+     * Checks the nodes for silence (sensor health); call on each platform tick. Looks through the nodes only when the
+     * first of them is due (its silence limit ends, it flaps), when one came closer since (heard after a silence, a
+     * new node, new settings) or the clock went back; an idle tick otherwise costs a comparison.
+     */
     public void checkHealth(Instant now) {
+        long t = now.toEpochMilli();
+        boolean back = t < lastHealthTick;
+        lastHealthTick = t;
+        if (!healthDirty && !back && t < nextHealthCheck) {
+            return;
+        }
+        healthDirty = false; // before the round: a node that comes closer during it marks the next tick
+        healthRounds++;
+        long next = Long.MAX_VALUE;
         for (AmicaBusDevice<R> d : nodes.values()) {
             d.checkHealth(now);
+            next = Math.min(next, d.healthDueMillis());
         }
+        nextHealthCheck = next;
+    }
+
+    /** @return the ticks on which {@link #checkHealth} looked through the nodes (for tests: work when idle) */
+    public long healthRounds() {
+        return healthRounds;
+    }
+
+    @Override
+    public void healthDueEarlier() {
+        healthDirty = true;
     }
 
     /** @return frames from new nodes rejected because the bus radio has {@code maxNodes} */
@@ -172,7 +204,10 @@ public final class AmicaNodes<R> implements FrameHandler.Nodes<R>, AmicaBusDevic
             d.delivery(delivery);
             d.realSilenceGuard(realSilenceGuard);
             return d;
-        }, d -> nodes.putIfAbsent(d.address(), d) == null, register);
+        }, d -> {
+            healthDirty = true;
+            return nodes.putIfAbsent(d.address(), d) == null;
+        }, register);
     }
 
     /** Forgets the node of a removed bus device, so its next keep-alive creates it anew. */

@@ -7,7 +7,7 @@
  * Bus radio bundles do not import this package at run time: bnd copies the classes into each of them
  * ({@code -conditionalpackage: org.tinysep.device.support.*,org.tinysep.amica.busradio.base}).
  */
-@Version("4.0.0")
+@Version("4.1.0")
 package org.tinysep.amica.busradio.base;
 
 import org.osgi.annotation.versioning.Version;

@@ -165,4 +165,37 @@ class NodeHealthTest {
         at(T0, frame(1, 1, TestRadio.keepAlive(AmicaNodeType.MOVEMENT)));
         assertEquals(3, radio.nodes.overCap(), "known nodes still get through");
     }
+
+    /**
+     * Issue 29 (idle CPU): a tick looks through the nodes only when the first of them is due. 20 movement nodes heard
+     * once: one round on the first tick, none until their limit (6 s), one that finds all 20 silent, none in the
+     * minute after; a node heard again brings the next tick's round.
+     */
+    @Test
+    void aTickLooksThroughTheNodesOnlyWhenOneIsDue() {
+        radio.nodes.policy(new NodePolicy(3, 2200, 1000));
+        for (int i = 1; i <= 20; i++) {
+            byte[] f = frame(1, i, AmicaPayloads.encode(new KeepAlive(60, 3000, 1,
+                    AmicaNodeType.productId(List.of(AmicaNodeType.MOVEMENT)), 1000 + i)));
+            at(T0, f);
+        }
+        long start = radio.nodes.healthRounds();
+        for (int s = 1; s <= 5; s++) {
+            radio.nodes.checkHealth(T0.plusSeconds(s));
+        }
+        assertEquals(1, radio.nodes.healthRounds() - start, "rounds in the 5 s after the nodes were heard");
+        radio.nodes.checkHealth(T0.plusSeconds(6));
+        assertEquals(20, problems().size(), "all 20 silent after 3 missed intervals of 2 s");
+        for (int s = 7; s <= 66; s++) {
+            radio.nodes.checkHealth(T0.plusSeconds(s));
+        }
+        assertEquals(2, radio.nodes.healthRounds() - start, "rounds in a minute of silent nodes");
+        at(T0.plusSeconds(70), frame(1, 5, AmicaPayloads.encode(new MotionDetection(false))));
+        radio.nodes.checkHealth(T0.plusSeconds(71));
+        assertEquals(3, radio.nodes.healthRounds() - start, "a node heard again: the next tick looks");
+        for (int s = 72; s <= 76; s++) {
+            radio.nodes.checkHealth(T0.plusSeconds(s));
+        }
+        assertEquals(21, problems().size(), "and finds it silent again at its limit");
+    }
 }

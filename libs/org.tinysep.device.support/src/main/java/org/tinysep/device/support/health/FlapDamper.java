@@ -36,6 +36,14 @@ final class FlapDamper {
         size = Math.min(KEPT, size + 1);
     }
 
+    /**
+     * @return true while the node flaps (its notice was written, its end not yet): then the widened limit and the
+     *         notices move with time alone. Otherwise only a new silence ({@link #silenceEnded}) can start it.
+     */
+    boolean watching() {
+        return noticed != null;
+    }
+
     /** @return the silences in the hour before {@code now} (at most {@value #KEPT}) */
     int silences(Instant now) {
         int n = 0;

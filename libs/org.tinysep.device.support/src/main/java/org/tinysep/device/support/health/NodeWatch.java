@@ -7,7 +7,9 @@ import java.time.Instant;
  * One node's liveness in platform time (sensor health): when it was last heard, whether it has gone
  * silent (no valid frame for a configured number of its report intervals), how many frames it sent in the last
  * {@link #WINDOW} against how many its node types promise (link quality, thesis Table 5.4), and frames missing by
- * sequence number. Thread-safe; cheap on the packet path (no allocation per frame).
+ * sequence number. Thread-safe; cheap on the packet path (no allocation per frame). An idle tick is cheap too:
+ * {@link #due} says, without a lock or an allocation, whether {@link #checkSilence} and {@link #flapping} can have
+ * anything to say now; a node that just reported is next due when its silence limit ends.
  */
 public final class NodeWatch {
 
@@ -30,6 +32,12 @@ public final class NodeWatch {
     private long realGuardNanos;
     private int configuredMissed;
     private final FlapDamper damper = new FlapDamper();
+    /** Epoch millis from which the next tick's checks may say something; lowered by whatever brings it closer. */
+    private volatile long dueMillis = Long.MIN_VALUE;
+    /** The missed intervals {@link #dueMillis} was planned with, and the tick time it was planned at. */
+    private volatile int dueFor = -1;
+    private volatile long plannedAt = Long.MIN_VALUE;
+    private volatile Runnable dueEarlier = () -> { };
 
     /**
      * @param interval  the node's report interval (silence is counted in these)
@@ -51,6 +59,7 @@ public final class NodeWatch {
      */
     public synchronized void realSilenceGuard(Duration guard) {
         this.realGuardNanos = guard.toNanos();
+        earlier(Long.MIN_VALUE);
     }
 
     /** The node's types changed: new report interval and rate. */
@@ -60,6 +69,7 @@ public final class NodeWatch {
         }
         this.interval = interval;
         this.perSecond = perSecond;
+        earlier(Long.MIN_VALUE);
     }
 
     /**
@@ -75,6 +85,11 @@ public final class NodeWatch {
         long silence = lastHeard == null ? 0 : at.toEpochMilli() - lastHeard.toEpochMilli();
         if (configuredMissed > 0 && silence >= interval.toMillis() * configuredMissed) {
             damper.silenceEnded(at, silence); // a gap the normal limit counts as silence, declared or not (flapping)
+            earlier(Long.MIN_VALUE); // it may start flapping
+        }
+        long limit = at.toEpochMilli() + interval.toMillis() * Math.max(1, configuredMissed);
+        if (limit < dueMillis) {
+            earlier(limit); // first heard, heard again after a silence, or heard with an earlier time stamp
         }
         lastHeard = at;
         silenceBase = at;
@@ -134,6 +149,53 @@ public final class NodeWatch {
         this.lastHeard = lastHeard;
         this.silenceBase = lastHeard;
         this.silentSince = lastHeard == null ? Instant.EPOCH : lastHeard;
+        earlier(Long.MIN_VALUE);
+    }
+
+    /**
+     * Whether this tick's {@link #checkSilence} and {@link #flapping} can have anything to say: false for a node heard
+     * within its silence limit, or silent (already declared) and not flapping. No lock, no allocation. Valid when each
+     * tick that is due calls both; true when the clock went back or {@code missedIntervals} changed since.
+     */
+    public boolean due(Instant now, int missedIntervals) {
+        long t = now.toEpochMilli();
+        return t >= dueMillis || t < plannedAt || Math.max(1, missedIntervals) != dueFor;
+    }
+
+    /**
+     * @param hook told (on the caller's thread, under this watch's lock: keep it short) whenever the next check
+     *             comes closer than planned, e.g. the first frame, a frame after a silence, new report intervals; lets
+     *             a node table skip a tick's look at all its nodes until the first of them is due
+     */
+    public void onDueEarlier(Runnable hook) {
+        this.dueEarlier = hook;
+    }
+
+    /** @return epoch millis from which {@link #due} is true (planned by the last due tick; lowered since) */
+    public long dueMillis() {
+        return dueMillis;
+    }
+
+    private void earlier(long at) {
+        dueMillis = at;
+        dueEarlier.run();
+    }
+
+    /** After a tick's checks: when the next one can have something to say (guarded by this). */
+    private void planNext(Instant now) {
+        long t = now.toEpochMilli();
+        long next;
+        if (damper.watching()) {
+            next = t + 1; // flapping: its hourly summary, its end and its widened limit move with time
+        } else if (silentSince != null || silenceBase == null) {
+            next = Long.MAX_VALUE; // silent or never heard: only a frame (heard) or a restore brings a check closer
+        } else {
+            long limit = silenceBase.toEpochMilli() + interval.toMillis() * configuredMissed;
+            next = limit > t ? limit : t + 1; // past it: the real-time guard held the silence back, look again
+        }
+        plannedAt = t;
+        dueFor = configuredMissed;
+        dueMillis = next;
     }
 
     /**
@@ -153,7 +215,12 @@ public final class NodeWatch {
      *         summary while it goes on, or when it ends; else null
      */
     public synchronized String flapping(String node, Instant now) {
-        return configuredMissed == 0 ? null : damper.notice(node, configuredMissed, interval, now);
+        if (configuredMissed == 0) {
+            return null;
+        }
+        String notice = damper.notice(node, configuredMissed, interval, now);
+        planNext(now);
+        return notice;
     }
 
     public synchronized boolean silent() {

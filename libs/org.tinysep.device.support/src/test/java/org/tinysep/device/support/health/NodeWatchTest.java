@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.device.NodeType;
@@ -110,5 +112,54 @@ class NodeWatchTest {
         }
         assertEquals(3, w.missedIntervals(3, t.plusSeconds(3601)), "an hour without a silence: the normal limit");
         assertTrue(w.flapping("Node 7", t.plusSeconds(3601)).startsWith("Node 7 no longer flaps"));
+    }
+
+    /**
+     * Issue 29 (idle CPU): a tick looks at a node only when its checks can say something. Two watches get the same
+     * frames (steady, silent, back, flapping, the clock going back); one is checked on every tick, the other only
+     * when {@link NodeWatch#due}: both declare the same silences and write the same notices, at the same ticks,
+     * and the gated one is looked at a fraction as often (every tick only while it flaps).
+     */
+    @Test
+    void aTickLooksAtANodeOnlyWhenSomethingIsDue() {
+        NodeWatch every = new NodeWatch(Duration.ofSeconds(10), 0.1, null);
+        NodeWatch gated = new NodeWatch(Duration.ofSeconds(10), 0.1, null);
+        List<String> seenEvery = new ArrayList<>();
+        List<String> seenGated = new ArrayList<>();
+        int looks = 0;
+        int quietLooks = 0; // in the first 20 minutes: 10 steady, 10 silent
+        Instant t = T0;
+        for (int s = 1; s <= 4 * 3600; s++) {
+            t = s == 3 * 3600 ? t.minusSeconds(1800) : t.plusSeconds(1); // the clock goes back once
+            boolean frame = s < 600 ? s % 10 == 0 // steady
+                    : s < 1200 ? false // silent for 10 minutes
+                    : s < 2 * 3600 ? s % 45 == 0 // flapping: every 45 s against a 30 s limit
+                    : s % 10 == 0 || s > 3 * 3600; // steady again
+            if (frame) {
+                every.heard(t, -1);
+                gated.heard(t, -1);
+            }
+            check(every, t, s, seenEvery);
+            if (gated.due(t, 3)) {
+                looks++;
+                quietLooks += s <= 1200 ? 1 : 0;
+                check(gated, t, s, seenGated);
+            }
+        }
+        assertEquals(seenEvery, seenGated, "the same silences and notices at the same ticks");
+        assertTrue(seenEvery.stream().anyMatch(e -> e.contains("silent")), "the run has a silence: " + seenEvery);
+        assertTrue(seenEvery.stream().anyMatch(e -> e.contains("no longer flaps")), "and a flap's end: " + seenEvery);
+        assertTrue(quietLooks <= 1200 / 20, "steady, then silent: looked at on " + quietLooks + " of 1200 ticks");
+        assertTrue(looks < 4 * 3600, "looked at on " + looks + " of " + 4 * 3600 + " ticks (flapping: each)");
+    }
+
+    private static void check(NodeWatch w, Instant t, int tick, List<String> seen) {
+        if (w.checkSilence(t, 3)) {
+            seen.add(tick + " silent since " + w.silentSince());
+        }
+        String notice = w.flapping("Node 7", t);
+        if (notice != null) {
+            seen.add(tick + " " + notice);
+        }
     }
 }

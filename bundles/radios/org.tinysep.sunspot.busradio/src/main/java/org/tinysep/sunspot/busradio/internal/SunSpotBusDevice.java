@@ -153,6 +153,9 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
 
     /** Checks for silence on a platform tick (sensor health): OFFLINE with a PROBLEM after the missed intervals. */
     void checkHealth(Instant now, int silentAfterIntervals) {
+        if (!watch.due(now, silentAfterIntervals)) {
+            return; // heard within its limit, or silent and not flapping: nothing to say this tick
+        }
         String node = "Sun SPOT " + address + " (" + name() + ")";
         if (watch.checkSilence(now, silentAfterIntervals)) {
             Instant since = watch.silentSince();
@@ -165,6 +168,11 @@ final class SunSpotBusDevice extends AbstractDevice implements BusRadioSunSpotPr
             context.reporter().event(flapping.startsWith("Monitoring reduced: ") ? EventKind.PROBLEM
                     : EventKind.DEVICE_EVENT, uid(), flapping);
         }
+    }
+
+    @Override
+    public int healthFlags() {
+        return !watch.silent() && status().state() == DeviceStatus.State.ONLINE ? 1 : 0; // no battery reading
     }
 
     @Override
