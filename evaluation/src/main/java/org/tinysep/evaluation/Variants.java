@@ -1,6 +1,6 @@
 package org.tinysep.evaluation;
 
-import java.time.LocalDate;
+import java.time.Duration;
 import java.time.LocalDateTime;
 import java.time.temporal.ChronoUnit;
 import java.util.ArrayList;
@@ -18,8 +18,8 @@ import org.tinysep.simulator.replay.SensorEvent;
  * ({@code "2:"}-prefixed, the same ones in every copy) in the rooms of the same names. The other recording is laid
  * over again and again so the second resident lives through the WHOLE host recording (history and test half alike):
  * each copy is shifted by a further whole multiple of the other recording's length rounded up to whole weeks (Ordonez
- * A's 14 days: every 2 weeks; B's 21 days: every 3 weeks), so weekdays still match; events of a copy outside the host
- * recording's span are dropped. (Until session 35 it was laid over once, so on B the second resident lived only in
+ * A's 14 days: every 2 weeks; B's 21 days: every 3 weeks), so weekdays still match; a copy ends where the next begins,
+ * and events of a copy outside the host recording's span are dropped. (Until session 35 it was laid over once, so on B the second resident lived only in
  * B's first 14 days: a resident who moved out before the test half.) Collapses are drawn from this home's labels,
  * so the second resident keeps living while the first has collapsed.</li>
  * </ul>
@@ -54,24 +54,27 @@ final class Variants {
 
     /**
      * The other home's events, {@code "2:"}-prefixed, laid over the host's span again and again: copies shifted by
-     * whole weeks, one after the other a whole multiple of the other recording's length (in days, rounded up to whole
-     * weeks) apart, from the copy covering the host's first event to the one covering its last. Events outside the
+     * whole weeks, one after the other a whole multiple of the other recording's length apart (its length in whole
+     * days, first to last event rounded to the nearest day: Ordonez A 14, B 21; rounded up to whole weeks), from the
+     * copy covering the host's first event to the one covering its last. A copy ends where the next one begins (A's
+     * last morning, 5 h past its two weeks, would otherwise overlap the next copy's first night); events outside the
      * host's span are dropped.
      */
     static List<SensorEvent> secondResident(Home h, Home other) {
-        LocalDate first = other.events().get(0).time().toLocalDate();
-        long days = ChronoUnit.DAYS.between(first, other.end().toLocalDate()) + 1;
-        long period = Math.max(1, (days + 6) / 7);
+        LocalDateTime first = other.events().get(0).time();
+        long days = Math.max(1, Math.round(Duration.between(first, other.end()).toMinutes() / 1440.0));
+        long period = (days + 6) / 7;
         LocalDateTime start = h.events().get(0).time();
-        long weeks = ChronoUnit.WEEKS.between(first, start.toLocalDate());
-        while (first.plusWeeks(weeks).atStartOfDay().isAfter(start)) {
+        long weeks = ChronoUnit.WEEKS.between(first.toLocalDate(), start.toLocalDate());
+        while (first.plusWeeks(weeks).isAfter(start)) {
             weeks -= period;
         }
         List<SensorEvent> out = new ArrayList<>();
-        for (; !first.plusWeeks(weeks).atStartOfDay().isAfter(h.end()); weeks += period) {
+        for (; !first.plusWeeks(weeks).isAfter(h.end()); weeks += period) {
+            LocalDateTime next = first.plusWeeks(weeks + period);
             for (SensorEvent e : other.events()) {
                 LocalDateTime t = e.time().plusWeeks(weeks);
-                if (!t.isBefore(start) && !t.isAfter(h.end())) {
+                if (!t.isBefore(start) && !t.isAfter(h.end()) && t.isBefore(next)) {
                     out.add(new SensorEvent(t, "2:" + e.sensor(), e.room(), e.kind(), e.on()));
                 }
             }

@@ -27,9 +27,14 @@ class VariantsTest {
 
     /** {@code days} days from {@code from}, a seat and a motion event every {@code hours} hours. */
     private static Home home(String name, String from, int days, int hours) {
+        return every(name, from, hours, days * 24 / hours);
+    }
+
+    /** {@code count} seat and motion events {@code hours} hours apart from {@code from}. */
+    private static Home every(String name, String from, int hours, int count) {
         List<SensorEvent> events = new ArrayList<>();
         LocalDateTime t = LocalDateTime.parse(from);
-        for (int i = 0; i < days * 24 / hours; i++) {
+        for (int i = 0; i < count; i++) {
             events.add(new SensorEvent(t.plusHours((long) hours * i), "Seat", "Living", Kind.PRESSURE, i % 2 == 0));
             events.add(new SensorEvent(t.plusHours((long) hours * i).plusMinutes(7), "Motion", "Living", Kind.MOTION,
                     true));
@@ -62,6 +67,32 @@ class VariantsTest {
                 .toList(), "the second resident's nodes once, not once per copy");
         assertTrue(two.events().containsAll(HOST.events()), "the host's own events all stay");
         assertEquals(second.size(), new HashSet<>(second).size(), "copies do not overlap");
+    }
+
+    @Test
+    void theSecondResidentIsNeverAwayForDays() {
+        List<SensorEvent> second = second(Variants.apply("two", HOST, OTHER));
+        for (int i = 1; i < second.size(); i++) {
+            assertTrue(second.get(i).time().isBefore(second.get(i - 1).time().plusDays(1)),
+                    "no day without the second resident: " + second.get(i - 1).time() + " -> " + second.get(i).time());
+        }
+        assertTrue(second.get(second.size() - 1).time().isAfter(HOST.end().minusDays(1)),
+                "nor at the end: last " + second.get(second.size() - 1).time() + ", host until " + HOST.end());
+    }
+
+    /** Like Ordonez A: its last morning runs 5 h past its two weeks; the next copy takes over where it begins. */
+    @Test
+    void aCopyEndsWhereTheNextBegins() {
+        Home overlong = every("a", "2011-11-28T02:00:00", 5, 69);
+        assertTrue(overlong.end().isAfter(LocalDateTime.parse("2011-12-12T06:00:00")));
+        List<SensorEvent> second = second(Variants.apply("two", HOST, overlong));
+        LocalDateTime copy = LocalDateTime.parse("2012-11-19T02:00:00");
+        LocalDateTime original = overlong.events().get(0).time();
+        assertEquals(overlong.events().stream().filter(e -> e.time().isBefore(original.plusWeeks(1))).count(),
+                second.stream().filter(e -> !e.time().isBefore(copy) && e.time().isBefore(copy.plusWeeks(1))).count(),
+                "the first week of the copy from " + copy + " holds that copy's events only");
+        assertTrue(second.stream().anyMatch(e -> e.time().isAfter(copy.minusHours(1)) && e.time().isBefore(copy)),
+                "the copy before runs up to it");
     }
 
     @Test
