@@ -61,7 +61,12 @@ public final class Bare {
     }
 
     private static void echo(int port) throws Exception {
-        DatagramChannel ch = open(port);
+        echoing(open(port));
+        answer(() -> "ok");
+    }
+
+    /** Starts a daemon thread that sends every datagram back to its sender until {@code ch} is closed. */
+    static void echoing(DatagramChannel ch) {
         Thread t = new Thread(() -> {
             ByteBuffer b = ByteBuffer.allocate(2048);
             try {
@@ -77,7 +82,6 @@ public final class Bare {
         }, "bare-echo");
         t.setDaemon(true);
         t.start();
-        answer(() -> "ok");
     }
 
     private static void idle() throws Exception {

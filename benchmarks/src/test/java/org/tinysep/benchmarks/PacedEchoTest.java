@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.net.InetSocketAddress;
-import java.net.SocketAddress;
-import java.nio.ByteBuffer;
 import java.nio.channels.DatagramChannel;
 import org.junit.jupiter.api.Test;
 
@@ -18,21 +16,7 @@ class PacedEchoTest {
     @Test
     void aPacedEchoWaitsBetweenRoundTripsAndMeasuresEachAlone() throws Exception {
         try (DatagramChannel server = DatagramChannel.open().bind(new InetSocketAddress("127.0.0.1", 0))) {
-            Thread echo = new Thread(() -> {
-                ByteBuffer b = ByteBuffer.allocate(64);
-                try {
-                    while (true) {
-                        b.clear();
-                        SocketAddress from = server.receive(b);
-                        b.flip();
-                        server.send(b, from);
-                    }
-                } catch (Exception closed) {
-                    // the test is over
-                }
-            }, "test-echo");
-            echo.setDaemon(true);
-            echo.start();
+            Bare.echoing(server);
             int port = ((InetSocketAddress) server.getLocalAddress()).getPort();
             long t0 = System.nanoTime();
             double[] paced = Latency.echo(port, 5, 60);
