@@ -1,13 +1,17 @@
 package org.tinysep.sms.internal;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Clock;
 import java.time.Instant;
 import java.util.Optional;
 import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -57,9 +61,8 @@ public final class SmsChannel implements MessageChannel {
     private InboxWatch inbox;
     private long pollMillis;
     private long idleMillis;
-    private final java.util.concurrent.atomic.AtomicLong looks = new java.util.concurrent.atomic.AtomicLong();
-    private final java.util.concurrent.atomic.AtomicBoolean replyLookPending =
-            new java.util.concurrent.atomic.AtomicBoolean();
+    private final AtomicLong looks = new AtomicLong();
+    private final AtomicBoolean replyLookPending = new AtomicBoolean();
     /** How long after a file appears in the inbox it is read: gammu-smsd writes it in that time. */
     static final long REPLY_SETTLE_MILLIS = 200;
     /** The modem as a device of the platform ({@link ModemDevice}); null without OSGi (unit tests). */
@@ -108,7 +111,7 @@ public final class SmsChannel implements MessageChannel {
                 replyLookPending.set(false);
                 poll();
             }, REPLY_SETTLE_MILLIS, TimeUnit.MILLISECONDS);
-        } catch (java.util.concurrent.RejectedExecutionException e) {
+        } catch (RejectedExecutionException e) {
             // deactivated
         }
     }
@@ -117,11 +120,11 @@ public final class SmsChannel implements MessageChannel {
     private void look() {
         poll();
         boolean watched = inbox.watch(spool.folder("inbox"));
-        boolean setUp = used || java.nio.file.Files.isDirectory(spool.base()); // else: nothing to watch for
+        boolean setUp = used || Files.isDirectory(spool.base()); // else: nothing to watch for
         long next = setUp && (!watched || spool.outboxWaiting()) ? pollMillis : idleMillis;
         try {
             poller.schedule(this::look, next, TimeUnit.MILLISECONDS);
-        } catch (java.util.concurrent.RejectedExecutionException e) {
+        } catch (RejectedExecutionException e) {
             // deactivated
         }
     }
@@ -204,7 +207,7 @@ public final class SmsChannel implements MessageChannel {
         try {
             DeviceStatus now = health.status();
             DeviceStatus before = said;
-            if (!used && !java.nio.file.Files.isDirectory(spool.base())) {
+            if (!used && !Files.isDirectory(spool.base())) {
                 return; // not set up and not used: nothing to say, no inbox to read, no modem device
             }
             if (modem != null) {

@@ -82,19 +82,19 @@ final class Spool {
         return Where.GONE;
     }
 
-    /** @return how many SMS have waited in the outbox for longer than {@code limit} */
     /** @return whether any SMS waits in the outbox (false when it cannot be read) */
     boolean outboxWaiting() {
         try (Stream<Path> s = Files.list(folder("outbox"))) {
-            return s.anyMatch(p -> p.getFileName().toString().startsWith("OUT"));
+            return s.anyMatch(Spool::outgoing);
         } catch (IOException | RuntimeException e) {
             return false;
         }
     }
 
+    /** @return how many SMS have waited in the outbox for longer than {@code limit} */
     int waitingLongerThan(Duration limit, Instant now) {
         try (Stream<Path> s = Files.list(folder("outbox"))) {
-            return (int) s.filter(p -> p.getFileName().toString().startsWith("OUT")).filter(p -> {
+            return (int) s.filter(Spool::outgoing).filter(p -> {
                 try {
                     return Files.getLastModifiedTime(p).toInstant().plus(limit).isBefore(now);
                 } catch (IOException e) {
@@ -104,6 +104,11 @@ final class Spool {
         } catch (IOException e) {
             return 0;
         }
+    }
+
+    /** @return whether {@code p} is an SMS gammu-smsd is to send (its outbox files are named OUT…) */
+    private static boolean outgoing(Path p) {
+        return p.getFileName().toString().startsWith("OUT");
     }
 
     /** @return the received SMS not handled yet, oldest name first */
