@@ -19,9 +19,10 @@ import org.tinysep.simulator.replay.SensorEvent;
  * over again and again so the second resident lives through the WHOLE host recording (history and test half alike):
  * each copy is shifted by a further whole multiple of the other recording's length rounded up to whole weeks (Ordonez
  * A's 14 days: every 2 weeks; B's 21 days: every 3 weeks), so weekdays still match; a copy ends where the next begins,
- * and events of a copy outside the host recording's span are dropped. (Until session 35 it was laid over once, so on B the second resident lived only in
- * B's first 14 days: a resident who moved out before the test half.) Collapses are drawn from this home's labels,
- * so the second resident keeps living while the first has collapsed.</li>
+ * and events of a copy outside the host recording's span are dropped. (Until session 35 it was laid over once, so
+ * on B the second resident lived only in B's first 14 days: a resident who moved out before the test half.)
+ * Collapses are drawn from this home's labels, so the second resident keeps living while the first has
+ * collapsed.</li>
  * </ul>
  */
 final class Variants {

@@ -34,7 +34,7 @@ public final class HistoryLearner {
     private Instant dayUntil = Instant.MIN;
     private boolean dirty = true;
     private volatile Function<String, String> roomTypes = room -> "";
-    /** Each room's fixed limit as last asked with (the leave-one-day-out check compares with them). */
+    /** Each room's fixed limit as last asked with (the day-by-day margin check compares with them). */
     private final Map<String, Duration> fixedLimits = new ConcurrentHashMap<>();
 
     public HistoryLearner(ZoneId zone, SleepRule sleep, LearningSettings settings) {

@@ -71,7 +71,7 @@ public final class LearnedLimits {
     }
 
     /**
-     * The rule of {@link #neverWorse} without its words (the leave-one-day-out check, {@link MarginCheck}, asks it
+     * The rule of {@link #neverWorse} without its words (the day-by-day margin check, {@link MarginCheck}, asks it
      * for every past quiet period).
      *
      * @return {@code learned}, or {@code fixed} where the rule keeps the fixed limit

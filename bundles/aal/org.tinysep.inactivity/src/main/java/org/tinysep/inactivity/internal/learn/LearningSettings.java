@@ -40,7 +40,7 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
         return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n);
     }
 
-    /** @return these settings with another {@link #margin()} (the leave-one-day-out check's, {@code MarginCheck}) */
+    /** @return these settings with another {@link #margin()} (the day-by-day margin check's, {@code MarginCheck}) */
     public LearningSettings withMargin(double m) {
         return new LearningSettings(minDays, historyDays, m, pad, floor, ceiling, halfWindow, minPeriodsToShorten);
     }

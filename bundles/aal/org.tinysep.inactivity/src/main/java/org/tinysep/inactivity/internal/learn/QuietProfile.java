@@ -28,6 +28,10 @@ public final class QuietProfile {
 
     private enum DayType { WEEKDAY, WEEKEND }
 
+    /** What began the quiet periods a limit was learned from, in its explanation (none: moving about). */
+    private static final String AFTER_SITTING = " after sitting down (a seat mat turned on)";
+    private static final String AFTER_GETTING_UP = " after getting up (a bed mat turned off)";
+
     private record Key(String room, boolean asleep, boolean seated, boolean up, int hour, DayType day) {
     }
 
@@ -42,7 +46,7 @@ public final class QuietProfile {
     }
 
     /**
-     * @param settings    with the margin the leave-one-day-out check chose ({@link MarginCheck})
+     * @param settings    with the margin the day-by-day margin check chose ({@link MarginCheck})
      * @param marginWords why that margin, when it is not the configured one (else empty)
      */
     QuietProfile(List<Gap> gaps, ZoneId zone, LearningSettings settings, String marginWords) {
@@ -79,8 +83,7 @@ public final class QuietProfile {
         List<Gap> around = all.stream().filter(g -> near(g, k.hour())).toList();
         int from = Math.floorMod(k.hour() - settings.halfWindow(), 24);
         int to = Math.floorMod(k.hour() + settings.halfWindow() + 1, 24);
-        String sit = k.seated() ? " after sitting down (a seat mat turned on)"
-                : k.up() ? " after getting up (a bed mat turned off)" : "";
+        String sit = k.seated() ? AFTER_SITTING : k.up() ? AFTER_GETTING_UP : "";
         String hours = (settings.halfWindow() >= 12 ? "at any time of day"
                 : String.format("between %02d:00 and %02d:00", from, to)) + sit;
         List<Gap> sameDay = around.stream().filter(g -> dayOf(g) == k.day()).toList();
@@ -127,8 +130,8 @@ public final class QuietProfile {
                 .toList();
         int n = days(all).size();
         return n >= 1 && n < settings.minDays() ? Optional.of(learn(all, roomName, asleep, "at any time of day"
-                + (sit ? " after sitting down (a seat mat turned on)" : "")
-                + (rise ? " after getting up (a bed mat turned off)" : ""), true))
+                + (sit ? AFTER_SITTING : "")
+                + (rise ? AFTER_GETTING_UP : ""), true))
                 : Optional.empty();
     }
 
@@ -170,7 +173,7 @@ public final class QuietProfile {
         return d == DayOfWeek.SATURDAY || d == DayOfWeek.SUNDAY ? DayType.WEEKEND : DayType.WEEKDAY;
     }
 
-    /** @return the settings its limits were learned with (the margin may be the leave-one-day-out check's) */
+    /** @return the settings its limits were learned with (the margin may be the day-by-day margin check's) */
     public LearningSettings settings() {
         return settings;
     }
