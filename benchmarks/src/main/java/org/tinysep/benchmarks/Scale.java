@@ -43,11 +43,6 @@ final class Scale {
     final java.util.Map<String, Double> figures = new java.util.LinkedHashMap<>();
 
     /**
-     * Announces all nodes (keep-alives at 1,000/s) and repeats the announcement while devices are missing: keep-alives
-     * the kernel dropped at the radio's full socket (creation is slower than 1,000/s) are sent again. Bounded: 20
-     * rounds, 30 min. @return ms from {@code t0} until all N movement devices exist
-     */
-    /**
      * How often the device count is asked while nodes are created: the creation time is known to this precision (it
      * was asked every 2 s, which added up to 2 s to a figure of ~10 s).
      */
@@ -55,6 +50,11 @@ final class Scale {
     /** No new device for this long: the announcements left were dropped by the kernel and are sent again. */
     static final long STALL_NANOS = Duration.ofSeconds(2).toNanos();
 
+    /**
+     * Announces all nodes (keep-alives at 1,000/s) and repeats the announcement while devices are missing: keep-alives
+     * the kernel dropped at the radio's full socket (creation is slower than 1,000/s) are sent again. Bounded: 20
+     * rounds, 30 min. @return ms from {@code t0} until all N movement devices exist
+     */
     private static double announceAll(MeasuredPlatform p, Nodes nodes, int n, long t0) throws Exception {
         long deadline = t0 + Duration.ofMinutes(30).toNanos();
         for (int round = 0; round < 20 && System.nanoTime() < deadline; round++) {

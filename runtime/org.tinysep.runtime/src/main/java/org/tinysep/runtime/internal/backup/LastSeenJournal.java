@@ -9,6 +9,7 @@ import java.time.Instant;
 import java.time.format.DateTimeParseException;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
@@ -71,8 +72,8 @@ final class LastSeenJournal {
     }
 
     /** @return the UIDs of the devices whose newest last seen time is kept here */
-    java.util.Set<String> uids() {
-        return java.util.Set.copyOf(newer.keySet());
+    Set<String> uids() {
+        return Set.copyOf(newer.keySet());
     }
 
     /**
