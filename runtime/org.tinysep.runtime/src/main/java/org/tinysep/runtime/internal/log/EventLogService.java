@@ -6,6 +6,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.Consumer;
 import java.util.function.IntSupplier;
+import java.util.function.Predicate;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -23,8 +24,10 @@ import org.tinysep.runtime.internal.Threads;
 
 /**
  * The platform's {@link EventLog}: a {@link LogService} of {@link EventLines}, kept on disk as {@code events-*.log}
- * and reloaded on start. {@link #record} is O(1) and does no I/O on the caller's thread; every entry is echoed to SLF4J logger {@code tinysep.events} at INFO
- * ({@code <kind> <origin> <message>}) from one background thread and written to the files from another.
+ * and reloaded on start. {@link #record} is O(1) and does no I/O on the caller's thread. Entries are echoed to SLF4J
+ * logger {@code tinysep.events} ({@code <kind> <origin> <message>}) from one background thread — a device's events
+ * ({@link EventKind#DEVICE_EVENT}, thousands a second on a busy radio) at DEBUG, every other kind at INFO — and
+ * written to the files from another.
  */
 // name: the component name it had before the runtime was split into packages
 @Component(name = "org.tinysep.runtime.internal.EventLogService",
@@ -49,7 +52,7 @@ public final class EventLogService extends LogService<EventEntry> implements Eve
     void activate(RuntimeConfig config, BundleContext context) {
         reconfigure(config::eventCapacity, LogConfig.read(config, context));
         executor = Executors.newSingleThreadExecutor(Threads.named("tinysep-event-log"));
-        start(config::eventCapacity, executor, e -> EVENTS.info("{} {} {}", e.kind(), e.origin(), e.message()));
+        start(config::eventCapacity, executor, EventLogService::echoed, EventLogService::echo);
     }
 
     @Modified
@@ -76,19 +79,41 @@ public final class EventLogService extends LogService<EventEntry> implements Eve
         }
     }
 
-    /** Activation body and test seam: sizes the ring and starts echoing entries to {@code sink}. */
+    private static boolean echoed(EventEntry e) {
+        return echoed(e.kind(), EVENTS);
+    }
+
+    /** @return whether {@link #echo} writes an entry of {@code kind} at {@code to}'s level (a device's events only at DEBUG) */
+    static boolean echoed(EventKind kind, Logger to) {
+        return kind == EventKind.DEVICE_EVENT ? to.isDebugEnabled() : to.isInfoEnabled();
+    }
+
+    private static void echo(EventEntry e) {
+        if (e.kind() == EventKind.DEVICE_EVENT) {
+            EVENTS.debug("{} {} {}", e.kind(), e.origin(), e.message());
+        } else {
+            EVENTS.info("{} {} {}", e.kind(), e.origin(), e.message());
+        }
+    }
+
+    /** Test seam: sizes the ring and starts echoing every entry to {@code sink}. */
     void start(IntSupplier capacity, Executor sinkExecutor, Consumer<EventEntry> sink) {
+        start(capacity, sinkExecutor, e -> true, sink);
+    }
+
+    /** Activation body: sizes the ring and starts echoing the entries {@code echoed} accepts to {@code sink}. */
+    void start(IntSupplier capacity, Executor sinkExecutor, Predicate<EventEntry> echoed, Consumer<EventEntry> sink) {
         configure(capacity);
-        forwarder = new EventForwarder(ring(), sinkExecutor, sink);
+        forwarder = new EventForwarder(echoed, sinkExecutor, sink);
     }
 
     @Override
     public void record(EventKind kind, String origin, String message) {
         EventKind k = kind == null ? EventKind.PROBLEM : kind;
-        append((seq, time) -> new EventEntry(seq, time, k, origin, message));
+        EventEntry e = append((seq, time) -> new EventEntry(seq, time, k, origin, message));
         EventForwarder f = forwarder;
         if (f != null) {
-            f.signal();
+            f.offer(e);
         }
     }
 }

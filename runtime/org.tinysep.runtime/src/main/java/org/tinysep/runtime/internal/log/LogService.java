@@ -83,15 +83,16 @@ abstract class LogService<E> {
         history.close();
     }
 
-    /** Stamps, numbers and stores an entry, and tells the writer (see {@link PersistentLog#signal}). */
-    final void append(Entry<E> entry) {
+    /**
+     * Stamps, numbers and stores an entry, and tells the writer (see {@link PersistentLog#signal}).
+     *
+     * @return the entry as stored
+     */
+    final E append(Entry<E> entry) {
         Instant time = clock.now(); // outside the ring's lock: it may call the Time Controller
-        history.signal(ring.append(seq -> entry.make(seq, time)));
-    }
-
-    /** @return the ring, for a subclass that echoes entries */
-    final RingBuffer<E> ring() {
-        return ring;
+        E e = ring.append(seq -> entry.make(seq, time));
+        history.signal(e);
+        return e;
     }
 
     @Reference(name = "timeController", cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
