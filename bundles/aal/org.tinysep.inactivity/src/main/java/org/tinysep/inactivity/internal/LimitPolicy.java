@@ -4,6 +4,7 @@ import java.time.Duration;
 import java.time.Instant;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.Limit;
+import org.tinysep.inactivity.internal.learn.Residents;
 import org.tinysep.inactivity.internal.learn.Sighting;
 
 /** Sets the limit of the quiet period that an activity begins: fixed (THESIS) or learned (LEARNED). */
@@ -17,6 +18,13 @@ interface LimitPolicy {
 
     /** The flat became empty ({@code empty}) or occupied again at {@code at}. */
     default void occupancy(boolean empty, Instant at) {
+    }
+
+    /**
+     * A bed mat ({@code bed}) or seat mat is ON or OFF now, its first report too (LEARNED in a home of several
+     * residents: an activity in its room while it is ON is a resting person's, {@link Residents}).
+     */
+    default void mat(String device, String room, boolean bed, boolean on) {
     }
 
     /** @return the {@link Detector} name */
@@ -40,7 +48,12 @@ interface LimitPolicy {
         return new LimitPolicy() {
             @Override
             public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
-                return cached.limitAfter(s, fixed, now);
+                return cached.limitAfter(limits.residents().read(s), fixed, now);
+            }
+
+            @Override
+            public void mat(String device, String room, boolean bed, boolean on) {
+                limits.residents().mat(device, room, bed, on);
             }
 
             @Override
