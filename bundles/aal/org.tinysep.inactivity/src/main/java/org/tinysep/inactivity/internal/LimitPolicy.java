@@ -4,7 +4,6 @@ import java.time.Duration;
 import java.time.Instant;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.Limit;
-import org.tinysep.inactivity.internal.learn.Residents;
 import org.tinysep.inactivity.internal.learn.Sighting;
 
 /** Sets the limit of the quiet period that an activity begins: fixed (THESIS) or learned (LEARNED). */
@@ -22,7 +21,8 @@ interface LimitPolicy {
 
     /**
      * A bed mat ({@code bed}) or seat mat is ON or OFF now, its first report too (LEARNED in a home of several
-     * residents: an activity in its room while it is ON is a resting person's, {@link Residents}).
+     * residents: an activity in its room while it is ON is a resting person's,
+     * {@link org.tinysep.inactivity.internal.learn.Residents}).
      */
     default void mat(String device, String room, boolean bed, boolean on) {
     }
@@ -48,7 +48,9 @@ interface LimitPolicy {
         return new LimitPolicy() {
             @Override
             public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
-                return cached.limitAfter(limits.residents().read(s), fixed, now);
+                Sighting read = limits.residents().read(s);
+                Limit l = cached.limitAfter(read, fixed, now);
+                return limits.residents().explain(s, read, l);
             }
 
             @Override

@@ -84,8 +84,10 @@ class SharedHomeTest {
         assertEquals(1, seen.size());
         Activity a = seen.get(0);
         assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
-        assertTrue(a.explanation().contains("after sitting down") && a.explanation().contains("2 residents"),
+        assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home has 2 residents: "
+                + "someone sits there, so the quiet after this activity is a sitting person's; fixed limit of 3 h"),
                 a.explanation());
+        assertTrue(a.explanation().contains("after sitting down"), a.explanation());
     }
 
     @Test

@@ -74,6 +74,23 @@ public final class Residents {
     }
 
     /**
+     * @param original the sighting as the device reported it
+     * @param read     the same through {@link #read(Sighting)}
+     * @param limit    the limit found for {@code read}
+     * @return {@code limit}, its explanation preceded by why the activity was read as a resting person's when it was
+     */
+    public Limit explain(Sighting original, Sighting read, Limit limit) {
+        if (read == original) {
+            return limit;
+        }
+        String mat = read.inBed() ? "a bed mat" : "a seat mat";
+        String who = read.inBed() ? "someone lies there" : "someone sits there";
+        return new Limit(limit.limit(), limit.asleep(), mat + " in " + read.roomName() + " is on and the home has "
+                + count + " residents: " + who + ", so the quiet after this activity is a "
+                + (read.inBed() ? "resting" : "sitting") + " person's; " + limit.explanation());
+    }
+
+    /**
      * The rule "someone resting in the room" of a home with several residents (the caller checked {@link #several()}).
      *
      * @param bedOn  a bed mat in the sighting's room is ON
