@@ -8,7 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.time.Duration;
 import java.time.Instant;
-import java.time.ZoneOffset;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -18,21 +17,12 @@ import org.junit.jupiter.api.Test;
  */
 class SeveralResidentsTest {
 
-    private static final SleepRule SLEEP = new SleepRule(21, 7, ZoneOffset.UTC);
     private static final Duration FIXED = Duration.ofHours(3);
 
-    /** 14 afternoons: into the living room 14:00, sit down 14:10 for 3 h, up 17:10, to the kitchen 17:18. */
+    /** {@link SittingDownTest}'s 14 afternoons: sit down 14:10 for 3 h in the living room. */
     private static LearnedLimits afternoons(int residents) {
-        HistoryLearner l = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults()
-                .withMinPeriodsToShorten(0).withResidents(residents));
-        for (int d = 0; d < 14; d++) {
-            l.add(new Sighting(History.at(d, "14:00"), "Living", "Living", "Living room", false));
-            l.add(new Sighting(History.at(d, "14:10"), "Living", "Living", "Living room", false, true));
-            l.add(new Sighting(History.at(d, "17:10"), "Living", "Living", "Living room", false));
-            l.add(new Sighting(History.at(d, "17:18"), "Kitchen", "Kitchen", "Kitchen", false));
-            l.add(new Sighting(History.at(d, "18:00"), "Kitchen", "Kitchen", "Kitchen", false));
-        }
-        return new LearnedLimits(l);
+        return new LearnedLimits(SittingDownTest.afternoons(LearningSettings.defaults().withMinPeriodsToShorten(0)
+                .withResidents(residents)));
     }
 
     private static Limit sit(LearnedLimits limits) {
