@@ -48,6 +48,9 @@ public final class Residents {
      * @param room   its room (the key {@link Sighting#room()} uses)
      */
     public synchronized void mat(String device, String room, boolean bed, boolean isOn) {
+        if (!several()) {
+            return; // one resident: nothing to keep
+        }
         if (isOn) {
             on.put(device, new Mat(room == null ? "" : room, bed));
         } else {
