@@ -15,6 +15,7 @@ import org.tinysep.inactivity.internal.learn.HistoryLearner;
 import org.tinysep.inactivity.internal.learn.LearnedLimits;
 import org.tinysep.inactivity.internal.learn.LearningSettings;
 import org.tinysep.inactivity.internal.learn.Limit;
+import org.tinysep.inactivity.internal.learn.Residents;
 import org.tinysep.inactivity.internal.learn.Sighting;
 import org.tinysep.inactivity.internal.learn.SleepRule;
 import org.tinysep.simulator.replay.NodeSpec;
@@ -54,12 +55,12 @@ final class CoreReplay {
     static final boolean REPEATS_DROPPED = !Boolean.getBoolean("repeats");
 
     /**
-     * {@code -DmatState=true} (experiment of session 33, not the detector): an activity (a movement, a door opening)
-     * in a room whose bed or seat mat is ON begins the state that mat gives (asleep, sitting), as if the mat had
-     * just turned ON — the person is on it. The live detector takes the state only from the activity that began the
-     * quiet period.
+     * The home's residents as Inactivity Recognition's {@code residents} setting: the home's own ({@link Home#residents}),
+     * or {@code -Dresidents=<n>} for an experiment (e.g. the rules of a shared home on a one-resident recording).
      */
-    static final boolean MAT_STATE = Boolean.getBoolean("matState");
+    private int residents() {
+        return Integer.getInteger("residents", home.residents());
+    }
 
     /**
      * An activity as the detector sees it.
@@ -67,18 +68,29 @@ final class CoreReplay {
      * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
      *             turning ON "sat down" — by the type, as the platform's {@code ActivityFactory} does (by its name,
      *             session 33 found, "Bedroom door (PIR)" was a bed: every bedroom movement was sleep, by day too)
+     * @param resting in a home of several residents, the mat ON in this room when the activity happened
+     *             (PRESENCE_BED or PRESENCE_SEAT; the learn package's {@code Residents} reads the activity as a
+     *             resting person's), else null
      */
-    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type) {
+    record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type,
+            AmicaNodeType resting) {
         /** An activity of a node that is no bed or seat mat. */
         Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor) {
             this(at, room, what, outerClose, outerDoor, AmicaNodeType.MOVEMENT);
         }
 
+        /** An activity in a room where no mat is ON, or of a home of one resident. */
+        Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type) {
+            this(at, room, what, outerClose, outerDoor, type, null);
+        }
+
         Sighting sighting() {
             boolean on = what.endsWith(" on");
             boolean bed = type == AmicaNodeType.PRESENCE_BED;
-            return new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
+            Sighting s = new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
                     on && bed, on && type == AmicaNodeType.PRESENCE_SEAT && SEATED, !on && bed && UP_FROM_BED);
+            return resting == null ? s
+                    : Residents.read(s, resting == AmicaNodeType.PRESENCE_BED, resting == AmicaNodeType.PRESENCE_SEAT);
         }
     }
 
@@ -104,11 +116,14 @@ final class CoreReplay {
     List<Act> acts(List<SensorEvent> events) {
         List<Act> out = new ArrayList<>();
         Map<String, Boolean> state = events.isEmpty() ? new HashMap<>() : stateBefore(events.get(0).time());
+        Residents residents = new Residents(residents());
+        state.forEach((sensor, on) -> mat(residents, nodes.get(sensor), on));
         for (SensorEvent e : events) {
             NodeSpec n = nodes.get(e.sensor());
             if (n == null || (n.isMotion() && !e.on())) {
                 continue;
             }
+            mat(residents, n, e.on()); // as the platform's ActivityFactory: every report of a mat, its first too
             Boolean before = state.put(e.sensor(), e.on());
             if (!n.isMotion() && REPEATS_DROPPED && (before == null || before == e.on())) {
                 // the recording's first report of a contact or mat is its resting state (the platform's devices say
@@ -121,26 +136,20 @@ final class CoreReplay {
                 continue; // the device finishing by itself: the person was last seen elsewhere (ActivityFactory)
             }
             boolean outer = "OUTER".equals(n.doorKind());
-            AmicaNodeType type = MAT_STATE && e.on() && !n.type().isPresence() ? matOn(n.room(), state, n.type())
-                    : n.type();
-            out.add(new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
-                    type));
+            Act a = new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
+                    n.type());
+            Sighting read = residents.read(a.sighting());
+            out.add(read.equals(a.sighting()) ? a : new Act(a.at(), a.room(), a.what(), a.outerClose(), a.outerDoor(),
+                    a.type(), read.inBed() ? AmicaNodeType.PRESENCE_BED : AmicaNodeType.PRESENCE_SEAT));
         }
         return out;
     }
 
-    /** @return the type of a bed or seat mat that is ON in {@code room} (the bed first), else {@code otherwise} */
-    private AmicaNodeType matOn(String room, Map<String, Boolean> state, AmicaNodeType otherwise) {
-        AmicaNodeType found = otherwise;
-        for (NodeSpec m : nodes.values()) {
-            if (m.room().equals(room) && Boolean.TRUE.equals(state.get(m.sensor()))) {
-                if (m.type() == AmicaNodeType.PRESENCE_BED) {
-                    return m.type();
-                }
-                found = m.type() == AmicaNodeType.PRESENCE_SEAT ? m.type() : found;
-            }
+    /** Tells {@code residents} a bed or seat mat's state (other nodes: nothing). */
+    private static void mat(Residents residents, NodeSpec n, boolean on) {
+        if (n != null && (n.type() == AmicaNodeType.PRESENCE_BED || n.type() == AmicaNodeType.PRESENCE_SEAT)) {
+            residents.mat(n.sensor(), n.room(), n.type() == AmicaNodeType.PRESENCE_BED, on);
         }
-        return found;
     }
 
     /**
@@ -176,7 +185,7 @@ final class CoreReplay {
 
     LearnedLimits newLimits() {
         SleepRule sleep = new SleepRule(21, 7, ZoneOffset.UTC);
-        return new LearnedLimits(new HistoryLearner(ZoneOffset.UTC, sleep, settings()));
+        return new LearnedLimits(new HistoryLearner(ZoneOffset.UTC, sleep, settings().withResidents(residents())));
     }
 
     Limit limit(LearnedLimits l, Act a) {

@@ -12,6 +12,7 @@ final class Days {
         LocalDateTime until = h.events().get(0).time().toLocalDate().plusDays(days).atStartOfDay();
         return new Home(h.name() + "-first-" + days + "-days",
                 h.events().stream().filter(e -> e.time().isBefore(until)).toList(),
-                h.labels().stream().filter(l -> l.start().isBefore(until)).toList(), h.mapping(), h.house(), h.nodes());
+                h.labels().stream().filter(l -> l.start().isBefore(until)).toList(), h.mapping(), h.house(), h.nodes(),
+                h.residents());
     }
 }

@@ -31,8 +31,16 @@ import org.tinysep.simulator.replay.SensorMapping;
  * @param mapping the pinned mapping file
  * @param house   the House Information file
  * @param nodes   the plan's nodes
+ * @param residents how many people live there (Inactivity Recognition's {@code residents}, as an installer sets it):
+ *                1 for a recorded home, 2 for the derived two-resident home ({@link Variants})
  */
-record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes) {
+record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes,
+        int residents) {
+
+    /** A home of one resident. */
+    Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes) {
+        this(name, events, labels, mapping, house, nodes, 1);
+    }
 
     /**
      * @param spec    {@code A}/{@code B} (Ordonez, converted from {@code ordonezDir} by the simulator's converter) or a

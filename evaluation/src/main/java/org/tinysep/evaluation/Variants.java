@@ -22,7 +22,8 @@ import org.tinysep.simulator.replay.SensorEvent;
  * and events of a copy outside the host recording's span are dropped. (Until session 35 it was laid over once, so
  * on B the second resident lived only in B's first 14 days: a resident who moved out before the test half.)
  * Collapses are drawn from this home's labels, so the second resident keeps living while the first has
- * collapsed.</li>
+ * collapsed. It declares its residents (Inactivity Recognition's {@code residents} setting, as an installer of a
+ * two-person flat sets it); the detector never reads the {@code "2:"} prefix.</li>
  * </ul>
  */
 final class Variants {
@@ -36,7 +37,7 @@ final class Variants {
             List<String> motion = h.nodes().stream().filter(NodeSpec::isMotion).map(NodeSpec::sensor).toList();
             yield new Home(h.name() + "-no-motion", h.events().stream().filter(e -> !motion.contains(e.sensor()))
                     .toList(), h.labels(), h.mapping(), h.house(), h.nodes().stream().filter(n -> !n.isMotion())
-                    .toList());
+                    .toList(), h.residents());
         }
         case "two" -> {
             List<SensorEvent> all = new ArrayList<>(h.events());
@@ -47,7 +48,8 @@ final class Variants {
                         "second resident's " + n.name()));
             }
             all.sort(Comparator.comparing(SensorEvent::time));
-            yield new Home(h.name() + "-two-residents", all, h.labels(), h.mapping(), h.house(), nodes);
+            yield new Home(h.name() + "-two-residents", all, h.labels(), h.mapping(), h.house(), nodes,
+                    h.residents() + other.residents());
         }
         default -> h;
         };

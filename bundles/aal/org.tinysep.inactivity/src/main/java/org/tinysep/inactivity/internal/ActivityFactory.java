@@ -117,6 +117,10 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
     /** A mat, flush or appliance turning on or off is activity; a bed mat turning on says the person is in bed. */
     @Override
     public void presenceChanged(PresenceProvider source, boolean present, boolean first, Instant at) {
+        Placed p = spot(source.deviceUid()).placed();
+        if (source.kind() == PresenceKind.BED || source.kind() == PresenceKind.SEAT) {
+            policy.mat(source.deviceUid(), p.uid(), source.kind() == PresenceKind.BED, present);
+        }
         if (first) {
             return; // the resting state after a start, like a contact's first report
         }
@@ -124,7 +128,6 @@ final class ActivityFactory implements MovementListener, DoorListener, WindowLis
         boolean inBed = present && source.kind() == PresenceKind.BED;
         boolean seated = present && source.kind() == PresenceKind.SEAT;
         boolean up = !present && source.kind() == PresenceKind.BED;
-        Placed p = spot(source.deviceUid()).placed();
         if (finishedByItself(source.kind(), present, p.uid(), lastRoom)) {
             return;
         }

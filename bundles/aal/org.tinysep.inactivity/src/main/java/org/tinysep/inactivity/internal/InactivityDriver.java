@@ -117,7 +117,7 @@ public final class InactivityDriver extends AbstractDriver {
             settings = new LearningSettings(config.learnMinDays(), Math.max(config.learnMinDays(),
                     config.learnHistoryDays()), defaults.margin(), defaults.pad(),
                     Duration.ofMinutes(config.learnFloorMinutes()), defaults.ceiling(), defaults.halfWindow(),
-                    config.learnMinPeriodsToShorten());
+                    config.learnMinPeriodsToShorten(), config.residents());
             sleep = new SleepRule(config.nightStartHour(), config.nightEndHour(), zone);
         } catch (IllegalArgumentException e) {
             LOG.warn("learning configuration not usable ({}); using the defaults", e.getMessage());

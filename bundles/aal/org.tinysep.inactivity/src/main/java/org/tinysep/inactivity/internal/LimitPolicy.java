@@ -19,6 +19,14 @@ interface LimitPolicy {
     default void occupancy(boolean empty, Instant at) {
     }
 
+    /**
+     * A bed mat ({@code bed}) or seat mat is ON or OFF now, its first report too (LEARNED in a home of several
+     * residents: an activity in its room while it is ON is a resting person's,
+     * {@link org.tinysep.inactivity.internal.learn.Residents}).
+     */
+    default void mat(String device, String room, boolean bed, boolean on) {
+    }
+
     /** @return the {@link Detector} name */
     default String name() {
         return Detector.THESIS.name();
@@ -40,7 +48,14 @@ interface LimitPolicy {
         return new LimitPolicy() {
             @Override
             public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
-                return cached.limitAfter(s, fixed, now);
+                Sighting read = limits.residents().read(s);
+                Limit l = cached.limitAfter(read, fixed, now);
+                return limits.residents().explain(s, read, l);
+            }
+
+            @Override
+            public void mat(String device, String room, boolean bed, boolean on) {
+                limits.residents().mat(device, room, bed, on);
             }
 
             @Override

@@ -75,6 +75,11 @@ final class InactivityConfigDefaults implements InactivityConfig {
     }
 
     @Override
+    public int residents() {
+        return number("residents");
+    }
+
+    @Override
     public int nightStartHour() {
         return number("nightStartHour");
     }

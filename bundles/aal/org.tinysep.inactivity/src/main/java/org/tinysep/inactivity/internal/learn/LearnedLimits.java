@@ -18,9 +18,11 @@ import java.time.Instant;
 public final class LearnedLimits {
 
     private final HistoryLearner history;
+    private final Residents residents;
 
     public LearnedLimits(HistoryLearner history) {
         this.history = history;
+        this.residents = new Residents(history.settings().residents());
     }
 
     /**
@@ -49,12 +51,20 @@ public final class LearnedLimits {
      * short limit learned from a handful of periods is what raised the learned detector's false alarms). Longer: a
      * limit longer than the fixed one must be learned from the hours it is used at; learned from the room's whole
      * day (those hours had quiet periods on too few days, or it is a cold start's blend) the fixed limit holds (a
-     * long afternoon sit lengthened the evening's limit to hours and was what made the learned detector slow).
+     * long afternoon sit lengthened the evening's limit to hours and was what made the learned detector slow); and
+     * in a home of several residents ({@link Residents}) a learned limit is never longer than the fixed one.
      */
     static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
         int longer = learned.limit().compareTo(fixed);
         if (decide(l, learned.limit(), fixed, set).equals(learned.limit())) {
             return learned;
+        }
+        if (longer > 0 && set.residents() > 1) {
+            return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
+                    + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
+                    + Amounts.duration(learned.limit()) + ", but the home has " + set.residents() + " residents: "
+                    + "a collapse is found only once the others are quiet too, so a learned limit is never longer "
+                    + "than the fixed one (" + l.explain(set) + ")");
         }
         if (longer > 0) {
             return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
@@ -78,7 +88,7 @@ public final class LearnedLimits {
      */
     static Duration decide(Learned l, Duration learned, Duration fixed, LearningSettings set) {
         int longer = learned.compareTo(fixed);
-        if (longer > 0 && l.allDay()) {
+        if (longer > 0 && (l.allDay() || set.residents() > 1)) {
             return fixed;
         }
         return longer >= 0 || l.periods() >= set.minPeriodsToShorten() ? learned : fixed;
@@ -106,5 +116,10 @@ public final class LearnedLimits {
 
     public HistoryLearner history() {
         return history;
+    }
+
+    /** @return the home's residents and its mats now ON: the platform reads each sighting through it first */
+    public Residents residents() {
+        return residents;
     }
 }

@@ -16,12 +16,21 @@ import java.time.Duration;
  * @param minPeriodsToShorten "never worse than the fixed limits": a learned limit may be shorter than
  *                    the room's fixed limit only when at least this many observed quiet periods support it; with
  *                    thinner history the fixed (thesis) limit holds. A longer learned limit needs no such support.
+ * @param residents   the home's residents as the installer declares them (1 by default): with several, a learned
+ *                    limit is never longer than the fixed one and an activity where a mat is ON is a resting
+ *                    person's ({@link Residents})
  */
 public record LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
-        Duration ceiling, int halfWindow, int minPeriodsToShorten) {
+        Duration ceiling, int halfWindow, int minPeriodsToShorten, int residents) {
 
     /** The default of {@link #minPeriodsToShorten()}. */
     public static final int MIN_PERIODS_TO_SHORTEN = 30;
+
+    /** One resident. */
+    public LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
+            Duration ceiling, int halfWindow, int minPeriodsToShorten) {
+        this(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, minPeriodsToShorten, 1);
+    }
 
     /** With the default {@link #MIN_PERIODS_TO_SHORTEN}. */
     public LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
@@ -37,21 +46,29 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
 
     /** @return these settings with another {@link #minPeriodsToShorten()} (0: any history may shorten a limit) */
     public LearningSettings withMinPeriodsToShorten(int n) {
-        return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n);
+        return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n, residents);
+    }
+
+    /** @return these settings for a home of {@code n} residents */
+    public LearningSettings withResidents(int n) {
+        return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, minPeriodsToShorten,
+                n);
     }
 
     /** @return these settings with another {@link #margin()} (the day-by-day margin check's, {@code MarginCheck}) */
     public LearningSettings withMargin(double m) {
-        return new LearningSettings(minDays, historyDays, m, pad, floor, ceiling, halfWindow, minPeriodsToShorten);
+        return new LearningSettings(minDays, historyDays, m, pad, floor, ceiling, halfWindow, minPeriodsToShorten,
+                residents);
     }
 
     public LearningSettings {
         if (minDays < 1 || historyDays < minDays || margin < 1 || pad.isNegative() || floor.isNegative()
-                || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11 || minPeriodsToShorten < 0) {
+                || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11 || minPeriodsToShorten < 0
+                || residents < 1) {
             throw new IllegalArgumentException("inconsistent learning settings: minDays " + minDays
                     + ", historyDays " + historyDays + ", margin " + margin + ", pad " + pad + ", floor " + floor
                     + ", ceiling " + ceiling + ", halfWindow " + halfWindow + ", minPeriodsToShorten "
-                    + minPeriodsToShorten);
+                    + minPeriodsToShorten + ", residents " + residents);
         }
     }
 }

@@ -18,7 +18,12 @@ class SittingDownTest {
 
     /** 14 afternoons: into the living room 14:00, sit down 14:10 for 3 h, up 17:10, 8 min later to the kitchen. */
     private static HistoryLearner afternoons() {
-        HistoryLearner l = new HistoryLearner(ZoneOffset.UTC, SLEEP, LearningSettings.defaults().withMinPeriodsToShorten(0));
+        return afternoons(LearningSettings.defaults().withMinPeriodsToShorten(0));
+    }
+
+    /** The afternoons of {@link #afternoons()} learned with {@code settings}. */
+    static HistoryLearner afternoons(LearningSettings settings) {
+        HistoryLearner l = new HistoryLearner(ZoneOffset.UTC, SLEEP, settings);
         for (int d = 0; d < 14; d++) {
             l.add(new Sighting(History.at(d, "14:00"), "Living", "Living", "Living room", false));
             l.add(new Sighting(History.at(d, "14:10"), "Living", "Living", "Living room", false, true));
