@@ -47,6 +47,7 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
     private final ServiceTracker<Object, String> tracker;
     private final BundleContext context;
     private final Consumer<String> roomChanged;
+    private volatile boolean closing;
 
     public TrackedPlacements(BundleContext context) {
         this(context, uid -> { });
@@ -83,6 +84,9 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
 
                 @Override
                 public void removedService(ServiceReference<Object> ref, String indexedAs) {
+                    if (closing) {
+                        return; // every device is reported removed: the whole index goes at once
+                    }
                     forget(indexedAs, ref);
                     forget(uidOf(ref), ref); // the tracker keeps the UID it was added under
                     reindex(indexedAs);
@@ -152,6 +156,9 @@ public final class TrackedPlacements implements Placements, AutoCloseable {
 
     @Override
     public void close() {
+        // the tracker's close reports every device as removed: re-indexing each and telling whoever follows the rooms
+        // was a quarter of the CPU of an orderly stop of 20,000 devices (three bundles each hold one; issue 29)
+        closing = true;
         tracker.close();
         byUid.clear();
         roomByUid.clear();

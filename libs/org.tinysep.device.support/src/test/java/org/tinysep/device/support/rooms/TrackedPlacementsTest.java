@@ -134,6 +134,20 @@ class TrackedPlacementsTest {
         }
     }
 
+    /** Issue 29, item 4: closing (the owner stops) forgets every device at once, telling nobody device by device. */
+    @Test
+    void closingTellsNoRoomChangePerDevice() {
+        for (int i = 0; i < 200; i++) {
+            register("light-" + i, "room-" + i);
+        }
+        java.util.concurrent.atomic.AtomicInteger told = new java.util.concurrent.atomic.AtomicInteger();
+        TrackedPlacements placements = new TrackedPlacements(context, uid -> told.incrementAndGet());
+        assertEquals(200, told.get(), "each device placed when the tracker opens");
+        placements.close();
+        assertEquals(200, told.get(), "room changes told while closing over 200 devices");
+        assertEquals(Optional.empty(), placements.roomOf("light-7"));
+    }
+
     private ServiceRegistration<?> register(String uid, String room) {
         Device d = (Device) Proxy.newProxyInstance(Device.class.getClassLoader(), new Class<?>[] {Device.class},
                 (proxy, method, args) -> switch (method.getName()) {
