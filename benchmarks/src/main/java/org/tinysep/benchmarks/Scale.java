@@ -87,6 +87,8 @@ final class Scale {
                 }
             } else if (System.nanoTime() - grewAt > STALL_NANOS) {
                 repeats++;
+                System.out.println("benchmarks: scale: " + now + " of " + n + " nodes became devices; announcing all"
+                        + " again (" + repeats + ")");
                 nodes.announce(1_000); // no longer growing: the rest was dropped, announce again
                 grewAt = System.nanoTime();
                 continue;
