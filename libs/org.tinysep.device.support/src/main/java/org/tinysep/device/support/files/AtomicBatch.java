@@ -48,6 +48,12 @@ public final class AtomicBatch {
     static final int FORCERS = 8;
     /** A commit with fewer temp files than this forces them on its own thread. */
     static final int PARALLEL_FROM = 4;
+    private static final Set<StandardOpenOption> CREATE_NEW_WRITE = Set.of(StandardOpenOption.CREATE_NEW,
+            StandardOpenOption.WRITE);
+    /** Temp files are {@code rw-------} on POSIX, as the files they replace. */
+    private static final FileAttribute<?>[] PRIVATE = FileSystems.getDefault().supportedFileAttributeViews()
+            .contains("posix") ? new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(AtomicFiles.PRIVATE_FILE)}
+                    : new FileAttribute<?>[0];
 
     /** How a temp file is forced to disk (tests: a slow disk that counts the forces at once). */
     interface Force {
@@ -68,13 +74,6 @@ public final class AtomicBatch {
     AtomicBatch(Force force) {
         this.force = force;
     }
-
-    private static final Set<StandardOpenOption> CREATE_NEW_WRITE = Set.of(StandardOpenOption.CREATE_NEW,
-            StandardOpenOption.WRITE);
-    /** Temp files are {@code rw-------} on POSIX, as the files they replace. */
-    private static final FileAttribute<?>[] PRIVATE = FileSystems.getDefault().supportedFileAttributeViews()
-            .contains("posix") ? new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(AtomicFiles.PRIVATE_FILE)}
-                    : new FileAttribute<?>[0];
 
     private static void forceFile(Path tmp) throws IOException {
         try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE)) {
