@@ -221,7 +221,7 @@ final class Scale {
     private static void report(Bench b, double idleRssKb, List<Row> rows) throws Exception {
         Report r = b.report();
         r.heading("Scale: devices in one framework");
-        r.text("N movement nodes announce themselves (keep-alives at most " + WINDOW + " ahead of the devices created, so the platform sets the pace; sent again at 1,000/s while some are missing), making 2N devices; then an orderly "
+        r.text("N movement nodes announce themselves (keep-alives at most " + String.format("%,d", WINDOW) + " ahead of the devices created, so the platform sets the pace; sent again at 1,000/s while some are missing), making 2N devices; then an orderly "
                 + "stop and a restart from the backup. Floor: the idle platform's RSS in this run ("
                 + (Double.isNaN(idleRssKb) ? "not measured" : Report.mb((long) idleRssKb)) + ").");
         List<List<String>> table = new ArrayList<>();
