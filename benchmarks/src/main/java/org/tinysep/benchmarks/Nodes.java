@@ -84,6 +84,21 @@ final class Nodes implements AutoCloseable {
         all(c -> blast(c, keepAlive.get(c), keepAlive.get(c).size(), perSecond / (double) channels.length));
     }
 
+    /**
+     * Sends the keep-alives of nodes {@code from} (inclusive) to {@code to} at once, each node from its own socket;
+     * the caller bounds how many are sent ahead of the receiver (the scale benchmark's window).
+     */
+    void announce(int from, int to) throws IOException {
+        int k = channels.length;
+        for (int i = from; i < to; i++) {
+            ByteBuffer b = keepAlive.get(i % k).get(i / k);
+            b.rewind();
+            channels[i % k].send(b, target);
+        }
+        sentTotal.addAndGet(Math.max(0, to - from));
+        sent = sentTotal.get();
+    }
+
     /** Sends {@code frames} motion frames round-robin over the nodes at {@code perSecond}; @return wall seconds */
     double motion(long frames, int perSecond) throws IOException {
         long t0 = System.nanoTime();

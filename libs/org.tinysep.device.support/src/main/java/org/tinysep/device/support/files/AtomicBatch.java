@@ -3,10 +3,14 @@ package org.tinysep.device.support.files;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystems;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileAttribute;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashMap;
@@ -44,6 +48,12 @@ public final class AtomicBatch {
     static final int FORCERS = 8;
     /** A commit with fewer temp files than this forces them on its own thread. */
     static final int PARALLEL_FROM = 4;
+    private static final Set<StandardOpenOption> CREATE_NEW_WRITE = Set.of(StandardOpenOption.CREATE_NEW,
+            StandardOpenOption.WRITE);
+    /** Temp files are {@code rw-------} on POSIX, as the files they replace. */
+    private static final FileAttribute<?>[] PRIVATE = FileSystems.getDefault().supportedFileAttributeViews()
+            .contains("posix") ? new FileAttribute<?>[] {PosixFilePermissions.asFileAttribute(AtomicFiles.PRIVATE_FILE)}
+                    : new FileAttribute<?>[0];
 
     /** How a temp file is forced to disk (tests: a slow disk that counts the forces at once). */
     interface Force {
@@ -75,11 +85,23 @@ public final class AtomicBatch {
     public void write(Path target, byte[] bytes) throws IOException {
         Path dir = target.toAbsolutePath().getParent();
         AtomicFiles.createPrivateDirectories(dir);
-        Path tmp = Files.createTempFile(dir, target.getFileName() + ".", ".tmp");
-        try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
+        // created and written through one open: a temp file made first (Files.createTempFile) and opened again to be
+        // truncated and written cost two opens, a random name and, on ext4, a flush at the close (its heuristic for a
+        // file replaced by truncation): ~30 % of the backup writer's time while 20,000 devices were created (issue 29)
+        Path tmp = null;
+        FileChannel ch = null;
+        while (ch == null) {
+            tmp = dir.resolve(target.getFileName() + "." + Long.toHexString(System.nanoTime()) + ".tmp");
+            try {
+                ch = FileChannel.open(tmp, CREATE_NEW_WRITE, PRIVATE);
+            } catch (FileAlreadyExistsException leftover) {
+                // a temp file of that name is there (an earlier run's, left by a crash): take the next name
+            }
+        }
+        try (FileChannel open = ch) {
             ByteBuffer buf = ByteBuffer.wrap(bytes);
             while (buf.hasRemaining()) {
-                ch.write(buf);
+                open.write(buf);
             }
         } catch (IOException | RuntimeException e) {
             Files.deleteIfExists(tmp);

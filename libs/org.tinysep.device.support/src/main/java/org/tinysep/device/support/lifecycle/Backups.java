@@ -42,6 +42,13 @@ public final class Backups implements AutoCloseable {
         return new Backups(() -> store, () -> { });
     }
 
+    /**
+     * Over the store {@code store} supplies (null: none now), e.g. a driver context's platform services.
+     */
+    static Backups over(Supplier<BackupStore> store) {
+        return new Backups(store, () -> { });
+    }
+
     /** Follows the BackupStore service as it comes and goes. */
     public static Backups tracking(BundleContext context) {
         ServiceTracker<BackupStore, BackupStore> t = new ServiceTracker<>(context, BackupStore.class, null);

@@ -1,9 +1,15 @@
 package org.tinysep.device.support.lifecycle;
 
 import java.time.Instant;
+import java.util.List;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
+import org.tinysep.api.backup.BackupStore;
 import org.tinysep.api.log.EventKind;
+import org.tinysep.api.log.EventLog;
+import org.tinysep.api.log.PacketLog;
+import org.tinysep.api.service.HouseInformationProvider;
+import org.tinysep.api.service.TimeControllerProvider;
 import org.tinysep.device.support.logs.Reporter;
 import org.tinysep.device.support.rooms.RoomDirectory;
 import org.tinysep.device.support.time.PlatformClock;
@@ -22,12 +28,39 @@ public final class DriverContext implements AutoCloseable {
     private final RoomDirectory rooms;
     private final Backups backups;
     private final ConsumerIndex consumers = new ConsumerIndex();
+    /** The platform services followed for this context in a framework; null with explicit parts. */
+    private PlatformServices platform;
 
-    /** The context of a driver running in a framework: logs and clock follow the services. */
+    /**
+     * The context of a driver running in a framework: logs, clock, rooms and backups follow the services, all
+     * through one service listener ({@link PlatformServices}).
+     */
     public DriverContext(BundleContext bundleContext, String driverUid, String driverName) {
-        this(bundleContext, driverUid, driverName, Reporter.tracking(bundleContext),
-                PlatformClock.tracking(bundleContext), RoomDirectory.tracking(bundleContext),
-                Backups.tracking(bundleContext));
+        this(bundleContext, driverUid, driverName, Followed.of(bundleContext));
+    }
+
+    private DriverContext(BundleContext bundleContext, String driverUid, String driverName, Followed f) {
+        this(bundleContext, driverUid, driverName, f.reporter(), f.clock(), f.rooms(), f.backups());
+        this.platform = f.services();
+    }
+
+    /** The parts of a framework's context over one {@link PlatformServices}. */
+    private record Followed(PlatformServices services, Reporter reporter, PlatformClock clock, RoomDirectory rooms,
+            Backups backups) {
+
+        static Followed of(BundleContext bc) {
+            PlatformServices[] s = new PlatformServices[1];
+            RoomDirectory rooms = RoomDirectory.over(() -> s[0].get(HouseInformationProvider.class));
+            s[0] = new PlatformServices(bc, List.of(EventLog.class, PacketLog.class, TimeControllerProvider.class,
+                    HouseInformationProvider.class, BackupStore.class),
+                    o -> o instanceof HouseInformationProvider h ? rooms.listenTo(h) : null);
+            PlatformServices p = s[0];
+            return new Followed(p, new Reporter(() -> p.get(EventLog.class), () -> p.get(PacketLog.class)),
+                    new PlatformClock(() -> {
+                        TimeControllerProvider t = p.get(TimeControllerProvider.class);
+                        return t == null ? Instant.now() : t.now();
+                    }), rooms, Backups.over(() -> p.get(BackupStore.class)));
+        }
     }
 
     /**
@@ -139,5 +172,8 @@ public final class DriverContext implements AutoCloseable {
         backups.close();
         clock.close();
         reporter.close();
+        if (platform != null) {
+            platform.close();
+        }
     }
 }

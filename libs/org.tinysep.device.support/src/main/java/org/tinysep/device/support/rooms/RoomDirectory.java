@@ -49,6 +49,27 @@ public final class RoomDirectory implements AutoCloseable {
         return d;
     }
 
+    /**
+     * A directory over the House Information provider {@code house} supplies, whose changes reach it through
+     * {@link #listenTo}: for a caller that follows the provider services itself (a driver context follows its
+     * platform services with one service listener).
+     *
+     * @since 1.1
+     */
+    public static RoomDirectory over(Supplier<HouseInformationProvider> house) {
+        return new RoomDirectory(house);
+    }
+
+    /**
+     * Relays the changes of a House Information provider that came to this directory's watchers.
+     *
+     * @return closes the relay (when the provider goes)
+     * @since 1.1
+     */
+    public Connection listenTo(HouseInformationProvider provider) {
+        return provider.connect(relay);
+    }
+
     /** A directory following the HouseInformationProvider services as they come and go. */
     public static RoomDirectory tracking(BundleContext context) {
         AtomicReference<ServiceTracker<HouseInformationProvider, HouseInformationProvider>> holder =

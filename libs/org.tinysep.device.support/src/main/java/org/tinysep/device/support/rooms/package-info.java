@@ -7,7 +7,7 @@
  * ({@code -conditionalpackage: org.tinysep.device.support.*}), so an application still depends only on the exported
  * API packages and can be updated on its own.
  */
-@Version("1.0.0")
+@Version("1.1.0")
 package org.tinysep.device.support.rooms;
 
 import org.osgi.annotation.versioning.Version;

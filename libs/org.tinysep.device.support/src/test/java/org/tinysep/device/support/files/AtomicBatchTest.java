@@ -42,6 +42,26 @@ class AtomicBatchTest {
         assertTrue(batch.failures().isEmpty());
     }
 
+    /** The temp file is created and written through one open (issue 29): still private, and in place after the commit. */
+    @Test
+    void aTempFileIsPrivateFromItsCreationAndReplacesAnExistingTarget() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(
+                java.nio.file.FileSystems.getDefault().supportedFileAttributeViews().contains("posix"));
+        Path a = dir.resolve("a.xml");
+        Files.writeString(a, "old content, longer than the new one");
+        AtomicBatch batch = new AtomicBatch();
+        batch.write(a, "new".getBytes(StandardCharsets.UTF_8));
+        try (Stream<Path> files = Files.list(dir)) {
+            Path tmp = files.filter(f -> f.toString().endsWith(".tmp")).findFirst().orElseThrow();
+            assertEquals("rw-------", java.nio.file.attribute.PosixFilePermissions.toString(
+                    Files.getPosixFilePermissions(tmp)), tmp.toString());
+        }
+        batch.commit();
+        assertEquals("new", Files.readString(a));
+        assertEquals("rw-------", java.nio.file.attribute.PosixFilePermissions.toString(
+                Files.getPosixFilePermissions(a)));
+    }
+
     @Test
     void aDeleteAskedAfterAWriteHappensAfterItsRename() throws Exception {
         Path old = dir.resolve("old.xml");

@@ -62,13 +62,35 @@ class TrackedPlacementsTest {
             assertEquals(Optional.empty(), placements.roomOf("late"));
             assertEquals("late", placements.nameOf("late"), "an unknown device is named by its UID");
 
+            provider.setProperties(props("lamp", "study")); // a provider service alone does not place a device
+            assertEquals(Optional.of("hall"), placements.roomOf("lamp"));
             device.unregister();
-            assertEquals(Optional.empty(), placements.roomOf("lamp"), "the provider left has no room");
-            provider.setProperties(props("lamp", "study"));
-            assertEquals(Optional.of("study"), placements.roomOf("lamp"));
+            assertEquals(Optional.empty(), placements.roomOf("lamp"), "the device left");
             provider.unregister();
             assertEquals(Optional.empty(), placements.roomOf("lamp"));
             assertEquals(Optional.of("room-7"), placements.roomOf("other-7"));
+        }
+    }
+
+    /**
+     * Issue 29, item 4: a device registers its Device service and a provider service with the same properties; only
+     * the Device service is tracked, so each device costs one room read when the tracker opens over n devices and one
+     * per device registered later, at n as at 2n.
+     */
+    @Test
+    void eachDeviceCostsOneRoomReadWhateverItsNumberOfServices() {
+        for (int i = 0; i < 200; i++) {
+            register("light-" + i, "room-" + i);
+            provider("light-" + i, "room-" + i);
+        }
+        try (TrackedPlacements placements = new TrackedPlacements(context)) {
+            assertEquals(200, placements.propertyReads(), "room reads opening over 200 devices of 2 services each");
+            for (int i = 200; i < 600; i++) {
+                register("light-" + i, "room-" + i);
+                provider("light-" + i, "room-" + i);
+            }
+            assertEquals(600, placements.propertyReads(), "room reads after 400 devices more");
+            assertEquals(Optional.of("room-599"), placements.roomOf("light-599"));
         }
     }
 
@@ -110,6 +132,20 @@ class TrackedPlacementsTest {
             later.unregister();
             assertEquals(java.util.List.of("lamp=opening", "lamp=hall", "lamp=-", "late=bedroom", "late=-"), told);
         }
+    }
+
+    /** Issue 29, item 4: closing (the owner stops) forgets every device at once, telling nobody device by device. */
+    @Test
+    void closingTellsNoRoomChangePerDevice() {
+        for (int i = 0; i < 200; i++) {
+            register("light-" + i, "room-" + i);
+        }
+        java.util.concurrent.atomic.AtomicInteger told = new java.util.concurrent.atomic.AtomicInteger();
+        TrackedPlacements placements = new TrackedPlacements(context, uid -> told.incrementAndGet());
+        assertEquals(200, told.get(), "each device placed when the tracker opens");
+        placements.close();
+        assertEquals(200, told.get(), "room changes told while closing over 200 devices");
+        assertEquals(Optional.empty(), placements.roomOf("light-7"));
     }
 
     private ServiceRegistration<?> register(String uid, String room) {
