@@ -60,6 +60,8 @@ public final class Launcher {
     private String webGroup = "";
     private volatile Framework framework;
     private Bundle shell;
+    /** Closed when the framework stops (e.g. the web console's port held until its first use). */
+    private final List<AutoCloseable> closeOnStop = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     public Launcher(Options options) {
         this.options = options;
@@ -195,8 +197,15 @@ public final class Launcher {
         return event.getType() == FrameworkEvent.ERROR ? 1 : 0;
     }
 
+    /** Closes {@code resource} when the framework stops ({@link #stop(Duration)}). */
+    void closeOnStop(AutoCloseable resource) {
+        closeOnStop.add(resource);
+    }
+
     /** Stops the framework, if running, and waits up to {@code timeout}. Safe to call more than once. */
     public void stop(Duration timeout) {
+        closeOnStop.forEach(Launcher::closeQuietly);
+        closeOnStop.clear();
         Framework fw = framework;
         if (fw == null || (fw.getState() & (Bundle.ACTIVE | Bundle.STARTING)) == 0) {
             return;
@@ -211,6 +220,14 @@ public final class Launcher {
             LOG.error("Could not stop the framework: {}", Failures.describe(e));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+    }
+
+    private static void closeQuietly(AutoCloseable resource) {
+        try {
+            resource.close();
+        } catch (Exception e) {
+            LOG.debug("Cannot close {}: {}", resource, e.toString());
         }
     }
 

@@ -1,5 +1,6 @@
 package org.tinysep.launcher;
 
+import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Collection;
 import org.osgi.framework.BundleContext;
@@ -31,13 +32,25 @@ final class WebConsoleLine {
      * @return {@code Web console: <address> (…) - …} once bound, else a warning that it did not start
      */
     static String line(BundleContext context, Duration wait, long since) throws InterruptedException {
+        String endpoint = await(context, wait);
+        return describe(endpoint, Duration.ofNanos(System.nanoTime() - since));
+    }
+
+    /** @return the HTTP service's endpoint once it has bound, {@code null} when it did not within {@code wait} */
+    static String await(BundleContext context, Duration wait) throws InterruptedException {
         long end = System.nanoTime() + wait.toNanos();
         String endpoint = endpoint(context);
         while (endpoint == null && System.nanoTime() < end) {
             Thread.sleep(20);
             endpoint = endpoint(context);
         }
-        return describe(endpoint, Duration.ofNanos(System.nanoTime() - since));
+        return endpoint;
+    }
+
+    /** @return the line for a console that starts on its first use ({@link WebConsole}) */
+    static String onFirstUse(InetSocketAddress at) {
+        return "Web console: http://" + at.getHostString() + ":" + at.getPort() + "/ (starts on first use, in about"
+                + " a second) - " + HOW_TO_GET_IN;
     }
 
     static String describe(String endpoint, Duration afterBanner) {
