@@ -22,8 +22,8 @@ final class WebConsoleLine {
     }
 
     /**
-     * How long the line waits for the HTTP service to bind (it starts after the banner; on a loaded machine Jetty
-     * takes seconds; a port held by another program never binds).
+     * How long the line (and a first use, {@link WebConsole}) waits for the HTTP service to bind (on a loaded machine
+     * Jetty takes seconds; a port held by another program never binds).
      */
     static final Duration WAIT = Duration.ofSeconds(10);
 
