@@ -131,7 +131,8 @@ public final class Main {
 
     /**
      * Holds the web console's port until its first use ({@link WebConsole}: its bundles, {@code bundles/4-web}, start
-     * then); when the port cannot be held, starts them now and waits until the HTTP service has bound.
+     * then) when it serves plain HTTP on this machine only ({@link HttpCfg#onFirstUse}); otherwise, or when the port
+     * cannot be held, starts them now and waits until the HTTP service has bound.
      *
      * @param banner {@link System#nanoTime()} when the banner was printed
      * @return the lines for below the banner: the console's address, or a warning; on a headless gateway the one
@@ -146,11 +147,13 @@ public final class Main {
             return List.of("No web console in this distribution (no bundles/*-web group)");
         }
         java.net.InetSocketAddress at = WebConsole.address(launcher.framework().getBundleContext());
-        try {
-            WebConsole.onFirstUse(launcher, at);
-            return List.of(WebConsoleLine.onFirstUse(at));
-        } catch (IOException e) { // held by another program: Jetty will say so, and the line below
-            LoggerFactory.getLogger(Main.class).warn("Cannot hold the web console's address {}: {}", at, e.toString());
+        if (HttpCfg.onFirstUse(options.home().resolve("etc").resolve(HttpCfg.FILE))) { // plain HTTP, this machine
+            try {
+                WebConsole.onFirstUse(launcher, at);
+                return List.of(WebConsoleLine.onFirstUse(at));
+            } catch (IOException e) { // held by another program: Jetty will say so, and the line below
+                LoggerFactory.getLogger(Main.class).warn("Cannot hold the web console's address {}: {}", at, e.toString());
+            }
         }
         List<String> lines = new java.util.ArrayList<>();
         launcher.startWeb().forEach(f -> lines.add("  FAILED " + f.bundle() + " (" + f.group() + "): " + f.reason()));
