@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
@@ -61,7 +62,7 @@ public final class Launcher {
     private volatile Framework framework;
     private Bundle shell;
     /** Closed when the framework stops (e.g. the web console's port held until its first use). */
-    private final List<AutoCloseable> closeOnStop = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private final List<AutoCloseable> closeOnStop = new CopyOnWriteArrayList<>();
 
     public Launcher(Options options) {
         this.options = options;

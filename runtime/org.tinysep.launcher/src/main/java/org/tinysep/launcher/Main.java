@@ -1,6 +1,7 @@
 package org.tinysep.launcher;
 
 import java.io.IOException;
+import java.net.InetSocketAddress;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -146,7 +147,7 @@ public final class Main {
         if (!launcher.hasWeb()) {
             return List.of("No web console in this distribution (no bundles/*-web group)");
         }
-        java.net.InetSocketAddress at = WebConsole.address(launcher.framework().getBundleContext());
+        InetSocketAddress at = WebConsole.address(launcher.framework().getBundleContext());
         if (HttpCfg.onFirstUse(options.home().resolve("etc").resolve(HttpCfg.FILE))) { // plain HTTP, this machine
             try {
                 WebConsole.onFirstUse(launcher, at);
