@@ -88,6 +88,10 @@ final class ConfiguredComponents {
                 List<Component> out = new ArrayList<>();
                 for (Object d : (Collection<?>) type.getMethod("getComponentDescriptionDTOs", org.osgi.framework.Bundle[].class)
                         .invoke(scr, (Object) new org.osgi.framework.Bundle[0])) {
+                    if ("ignore".equals(field(d, "configurationPolicy"))
+                            || !(Boolean) type.getMethod("isComponentEnabled", descriptionType).invoke(scr, d)) {
+                        continue; // takes no configuration, or is switched off: never runs with a file
+                    }
                     List<Configuration> configurations = new ArrayList<>();
                     for (Object c : (Collection<?>) type.getMethod("getComponentConfigurationDTOs", descriptionType)
                             .invoke(scr, d)) {
