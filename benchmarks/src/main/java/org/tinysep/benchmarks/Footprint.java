@@ -22,8 +22,12 @@ final class Footprint {
     /** bare Felix with the chosen options (the goals' floors): RSS and start */
     double chosenFelixRssKb = Double.NaN;
     double chosenFelixStartMs = Double.NaN;
-    /** ms from the banner to the web console bound (it starts after the banner) */
+    /** ms from the banner to the line "Web console: …" (bound, or held until its first use) */
     double webAfterBannerMs = Double.NaN;
+    /** ms to the web console's first answer (a first request starts a console that starts on first use) */
+    double webFirstAnswerMs = Double.NaN;
+    /** RSS with the web console in use (after its first answer), chosen options */
+    double webInUseRssKb = Double.NaN;
     private double floorsFelixStart = Double.NaN;
     private double felixCpuMs = Double.NaN;
 
@@ -66,6 +70,8 @@ final class Footprint {
             String bannerText;
             double cpu;
             double web;
+            double firstAnswer = Double.NaN;
+            long inUseRss = 0;
             try (MeasuredPlatform p = inst.start(opts)) {
                 ready = p.msSinceStart();
                 banner = p.msToBanner();
@@ -75,6 +81,11 @@ final class Footprint {
                 Bench.sleep(b.smoke() ? 2 : 10);
                 idleRss = p.rssKb();
                 heap = p.liveHeapKb();
+                if (!isHeadless) { // then the console in use: its first request, RSS a few seconds later
+                    firstAnswer = p.msToFirstWebAnswer();
+                    Bench.sleep(b.smoke() ? 1 : 5);
+                    inUseRss = p.rssKb();
+                }
             }
             if (isHeadless) {
                 headlessIdleRssKb = idleRss;
@@ -83,6 +94,8 @@ final class Footprint {
                 chosenIdleRssKb = idleRss;
                 chosenStartMs = banner;
                 webAfterBannerMs = web;
+                webFirstAnswerMs = firstAnswer;
+                webInUseRssKb = inUseRss;
                 chosenFelixRssKb = felixRss;
                 chosenFelixStartMs = felixStart;
             }
@@ -93,7 +106,9 @@ final class Footprint {
                     Report.ratio(idleRss, jvmRss), Report.ratio(idleRss, felixRss),
                     Report.f("%.0f ms", banner), Report.f("%.0f ms", ready), Report.f("%.0f ms", jvmStart),
                     Report.f("%.0f ms", felixStart), Report.ratio(banner, felixStart), Report.f("%.0f ms", cpu),
-                    Report.ratio(cpu, felixCpuMs), Double.isNaN(web) ? "–" : Report.f("%.0f ms", web)));
+                    Report.ratio(cpu, felixCpuMs), Double.isNaN(web) ? "–" : Report.f("%.0f ms", web),
+                    Double.isNaN(firstAnswer) ? "–" : Report.f("%.0f ms", firstAnswer),
+                    isHeadless ? "–" : Report.mb(inUseRss)));
             floorsFelixStart = felixStart;
             r.text("Banner (" + label + "): `" + bannerText + "`");
         }
@@ -117,19 +132,22 @@ final class Footprint {
             rows.add(List.of("chosen + AppCDS archive (" + Report.mb(java.nio.file.Files.size(jsa) / 1024) + ")",
                     Report.mb(idleRss), Report.mb(heap), "–", "–", "–", "–", Report.f("%.0f ms", banner),
                     Report.f("%.0f ms", ready), "–", "–", Report.ratio(banner, floorsFelixStart),
-                    Report.f("%.0f ms", cpu), Report.ratio(cpu, felixCpuMs), "–"));
+                    Report.f("%.0f ms", cpu), Report.ratio(cpu, felixCpuMs), "–", "–", "–"));
             appCdsIdleRssKb = idleRss;
             appCdsStartMs = banner;
         }
         r.table(List.of("JVM options", "TinySEP idle RSS", "live heap after GC", "bare JVM RSS", "bare Felix RSS",
                 "× bare JVM", "× bare Felix", "start to banner (all bundles active)", "start to shell answer",
                 "bare JVM start", "bare Felix start", "start × bare Felix", "CPU to banner", "CPU × bare Felix's",
-                "web console bound, after the banner"), rows);
+                "web console line, after the banner", "web console: first request answered",
+                "RSS, web console in use"), rows);
         r.text("Goals (issue 29): idle RSS with the web console ≤ 80 MB: "
                 + Report.goalAtMost(chosenIdleRssKb / 1024, 80, "MB") + "; headless gateway (`--headless`) ≤ 64 MB: "
                 + Report.goalAtMost(headlessIdleRssKb / 1024, 64, "MB") + "; start to the banner ≤ 1 s: "
-                + Report.goalAtMost(chosenStartMs / 1000, 1, "s") + " (the web console is bound "
-                + Report.f("%.0f ms", webAfterBannerMs) + " after it). CPU to the banner is the process's user + "
+                + Report.goalAtMost(chosenStartMs / 1000, 1, "s") + ". The web console starts on its first use (its "
+                + "port held by the launcher until then): the first request was answered in "
+                + Report.f("%.0f ms", webFirstAnswerMs) + ", and the platform then held " + Report.mb((long) webInUseRssKb)
+                + " (idle RSS is measured before any request). CPU to the banner is the process's user + "
                 + "system time when the banner came: on a loaded machine it moves less than the wall time. AppCDS (an archive "
                 + "of the classes a first start loaded, `-XX:ArchiveClassesAtExit`, used by the next start): "
                 + Report.f("start %.0f ms vs %.0f ms, idle RSS %s vs %s", appCdsStartMs, chosenStartMs,

@@ -59,7 +59,7 @@ final class MeasuredPlatform implements AutoCloseable {
         return new MeasuredPlatform(home, amicaPort, p, web);
     }
 
-    /** Notes when the line "Web console: …" came (the console starts after the banner). */
+    /** Notes when the line "Web console: …" came (bound after the banner, or its port held until its first use). */
     private static final class WebLine implements java.util.function.Consumer<String> {
         private volatile long nanos;
 
@@ -80,6 +80,32 @@ final class MeasuredPlatform implements AutoCloseable {
     /** @return ms from the banner to the line "Web console: <address>" (bound); NaN without one */
     double msBannerToWeb() {
         return web.nanos == 0 ? Double.NaN : (web.nanos - shell.startNanos()) / 1e6 - shell.msToBanner();
+    }
+
+    /**
+     * Asks the web console for its login page, as a browser's first visit does (when the console starts on its first
+     * use, this request starts it: issue 29).
+     *
+     * @return ms until the answer came; NaN when none came within 30 s or the distribution has no console address
+     */
+    double msToFirstWebAnswer() throws IOException, InterruptedException {
+        java.util.Properties http = new java.util.Properties();
+        try (java.io.Reader r = java.nio.file.Files.newBufferedReader(home.resolve("etc/org.apache.felix.http.cfg"))) {
+            http.load(r);
+        }
+        String port = http.getProperty("org.osgi.service.http.port");
+        if (port == null) {
+            return Double.NaN;
+        }
+        java.net.http.HttpRequest request = java.net.http.HttpRequest.newBuilder(
+                java.net.URI.create("http://127.0.0.1:" + port.strip() + "/login.html")).timeout(Duration.ofSeconds(30)).build();
+        long t0 = System.nanoTime();
+        try {
+            java.net.http.HttpClient.newHttpClient().send(request, java.net.http.HttpResponse.BodyHandlers.discarding());
+        } catch (IOException e) {
+            return Double.NaN;
+        }
+        return (System.nanoTime() - t0) / 1e6;
     }
 
     /** @return ms from closing the shell's input to the process's end (0 before {@link #close}) */

@@ -20,6 +20,8 @@ final class HttpCfg {
     static final String FILE = "org.apache.felix.http.cfg";
     static final String HOST = "org.apache.felix.http.host";
     static final String PORT = "org.osgi.service.http.port";
+    static final String HTTP_ENABLE = "org.apache.felix.http.enable";
+    static final String HTTPS_ENABLE = "org.apache.felix.https.enable";
 
     private HttpCfg() {
     }
@@ -45,6 +47,28 @@ final class HttpCfg {
             out.setProperty(PORT, port);
         }
         return out;
+    }
+
+    /**
+     * @return whether the console's HTTP service may wait for its first use behind the launcher's socket
+     *         ({@link WebOnDemand}): plain HTTP on a loopback address only. With HTTPS, a network address or a value
+     *         FileInstall substitutes later the console starts after the banner: a connection the launcher handed
+     *         over would reach Jetty at 127.0.0.1, where its plain-HTTP rule would take it for this machine's own
+     */
+    static boolean onFirstUse(Path cfg) {
+        Properties file = new Properties();
+        if (Files.isRegularFile(cfg)) {
+            try (Reader r = Files.newBufferedReader(cfg, StandardCharsets.ISO_8859_1)) {
+                file.load(r);
+            } catch (IOException | IllegalArgumentException e) {
+                return false; // FileInstall reports a broken file; the console starts as it says
+            }
+        }
+        String host = file.getProperty(HOST, "127.0.0.1").strip();
+        return !Boolean.parseBoolean(file.getProperty(HTTPS_ENABLE, "false").strip())
+                && Boolean.parseBoolean(file.getProperty(HTTP_ENABLE, "true").strip())
+                && !file.getProperty(PORT, "").contains("${")
+                && (host.equals("localhost") || host.equals("::1") || host.matches("127(\\.\\d{1,3}){3}"));
     }
 
     private static String plain(String value) {

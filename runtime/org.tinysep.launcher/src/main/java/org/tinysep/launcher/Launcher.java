@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.jar.JarFile;
@@ -41,8 +42,9 @@ public final class Launcher {
     public static final String APPS_GROUP = "apps";
     /**
      * Name of the web console's group (folder {@code 4-web}: Felix HTTP on Jetty, the console's bundles): installed
-     * with the others but started only after the banner ({@link #startWeb()}), so the HTTP service is not on the
-     * start path; not installed at all on a headless gateway ({@link Options#headless()}).
+     * and started on the console's first use ({@link #startWeb()}, {@link WebConsole}), so the HTTP service is
+     * neither on the start path nor in the idle platform's memory; never on a headless gateway
+     * ({@link Options#headless()}).
      */
     public static final String WEB_GROUP = "web";
 
@@ -55,11 +57,12 @@ public final class Launcher {
     private final List<StartReport.Failure> installFailures = new ArrayList<>();
     /** Groups left to the drivers list: their bundles are reported, not installed, by the launcher. */
     private final List<BundleGroup> delegated = new ArrayList<>();
-    /** The web console's bundles, installed but not started before the banner. */
-    private final List<Bundle> web = new ArrayList<>();
-    private String webGroup = "";
+    /** The web console's group: installed and started on the console's first use ({@link #startWeb()}). */
+    private BundleGroup webGroup;
     private volatile Framework framework;
     private Bundle shell;
+    /** Closed when the framework stops (e.g. the web console's port held until its first use). */
+    private final List<AutoCloseable> closeOnStop = new CopyOnWriteArrayList<>();
 
     public Launcher(Options options) {
         this.options = options;
@@ -114,7 +117,7 @@ public final class Launcher {
                 LOG.info("Headless gateway: not installing bundles/{} (the web console and its HTTP service)",
                         group.label());
             } else if (WEB_GROUP.equals(group.name())) {
-                installWeb(fw.getBundleContext(), group); // started after the banner: startWeb()
+                webGroup = group; // installed and started on the console's first use: startWeb()
             } else {
                 install(fw.getBundleContext(), group);
             }
@@ -135,20 +138,35 @@ public final class Launcher {
     }
 
     /**
-     * Starts the web console's group (after the banner: its HTTP service is not on the start path). Does nothing
-     * on a headless gateway or without a {@code *-web} group.
+     * Installs and starts the web console's group (on its first use: its HTTP service is not on the start path).
+     * Does nothing on a headless gateway or without a {@code *-web} group.
      *
      * @return the bundles that did not start, each with a one-line reason (empty when all started)
      */
-    public List<StartReport.Failure> startWeb() {
+    public synchronized List<StartReport.Failure> startWeb() {
         List<StartReport.Failure> failures = new ArrayList<>();
+        if (webGroup == null || framework == null) {
+            return failures;
+        }
+        BundleContext context = framework.getBundleContext();
+        List<Bundle> web = new ArrayList<>();
+        for (Path jar : webGroup.jars()) {
+            try {
+                Bundle bundle = context.installBundle(jar.toUri().toString());
+                bundle.adapt(BundleStartLevel.class).setStartLevel(webGroup.startLevel());
+                web.add(bundle);
+            } catch (BundleException | RuntimeException e) {
+                failures.add(new StartReport.Failure(jar.getFileName().toString(), webGroup.label(),
+                        "cannot install: " + Failures.describe(e)));
+            }
+        }
         for (Bundle b : web) {
             try {
                 if (!isFragment(b)) {
                     b.start();
                 }
             } catch (BundleException | RuntimeException e) {
-                failures.add(new StartReport.Failure(b.getSymbolicName() + " " + b.getVersion(), webGroup,
+                failures.add(new StartReport.Failure(b.getSymbolicName() + " " + b.getVersion(), webGroup.label(),
                         Failures.describe(e)));
             }
         }
@@ -157,7 +175,7 @@ public final class Launcher {
 
     /** @return whether this start has a web console (a {@code *-web} group, not headless) */
     public boolean hasWeb() {
-        return !web.isEmpty();
+        return webGroup != null;
     }
 
     /**
@@ -195,8 +213,15 @@ public final class Launcher {
         return event.getType() == FrameworkEvent.ERROR ? 1 : 0;
     }
 
+    /** Closes {@code resource} when the framework stops ({@link #stop(Duration)}). */
+    void closeOnStop(AutoCloseable resource) {
+        closeOnStop.add(resource);
+    }
+
     /** Stops the framework, if running, and waits up to {@code timeout}. Safe to call more than once. */
     public void stop(Duration timeout) {
+        closeOnStop.forEach(Launcher::closeQuietly);
+        closeOnStop.clear();
         Framework fw = framework;
         if (fw == null || (fw.getState() & (Bundle.ACTIVE | Bundle.STARTING)) == 0) {
             return;
@@ -214,17 +239,11 @@ public final class Launcher {
         }
     }
 
-    private void installWeb(BundleContext context, BundleGroup group) {
-        webGroup = group.label();
-        for (Path jar : group.jars()) {
-            try {
-                Bundle bundle = context.installBundle(jar.toUri().toString());
-                bundle.adapt(BundleStartLevel.class).setStartLevel(group.startLevel());
-                web.add(bundle);
-            } catch (BundleException | RuntimeException e) {
-                installFailures.add(new StartReport.Failure(jar.getFileName().toString(), group.label(),
-                        "cannot install: " + Failures.describe(e)));
-            }
+    private static void closeQuietly(AutoCloseable resource) {
+        try {
+            resource.close();
+        } catch (Exception e) {
+            LOG.debug("Cannot close {}: {}", resource, e.toString());
         }
     }
 

@@ -1,6 +1,7 @@
 package org.tinysep.launcher;
 
 import java.io.IOException;
+import java.net.InetSocketAddress;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -112,7 +113,7 @@ public final class Main {
                     Heartbeat.interval(SdNotify.watchdogInterval(System.getenv())));
             beating[0].start();
             systemd.ifPresent(s -> s.ready(report.lines().get(0)));
-            // the web console after the banner: its HTTP service (Jetty) is not on the start path
+            // the web console on its first use: its HTTP service (Jetty) is neither on the start path nor idle
             webConsole(launcher, options, banner).forEach(System.out::println);
             System.out.flush();
             launcher.startShell();
@@ -130,11 +131,13 @@ public final class Main {
     }
 
     /**
-     * Starts the web console's bundles ({@code bundles/4-web}) and waits until its HTTP service has bound.
+     * Holds the web console's port until its first use ({@link WebConsole}: its bundles, {@code bundles/4-web}, start
+     * then) when it serves plain HTTP on this machine only ({@link HttpCfg#onFirstUse}); otherwise, or when the port
+     * cannot be held, starts them now and waits until the HTTP service has bound.
      *
      * @param banner {@link System#nanoTime()} when the banner was printed
-     * @return the lines for below the banner: the console's address and how soon after the banner it answered, or a
-     *         warning; on a headless gateway the one line that says there is no console
+     * @return the lines for below the banner: the console's address, or a warning; on a headless gateway the one
+     *         line that says there is no console
      */
     static List<String> webConsole(Launcher launcher, Options options, long banner) throws InterruptedException {
         if (options.headless()) {
@@ -143,6 +146,15 @@ public final class Main {
         }
         if (!launcher.hasWeb()) {
             return List.of("No web console in this distribution (no bundles/*-web group)");
+        }
+        InetSocketAddress at = WebConsole.address(launcher.framework().getBundleContext());
+        if (HttpCfg.onFirstUse(options.home().resolve("etc").resolve(HttpCfg.FILE))) { // plain HTTP, this machine
+            try {
+                WebConsole.onFirstUse(launcher, at);
+                return List.of(WebConsoleLine.onFirstUse(at));
+            } catch (IOException e) { // held by another program: Jetty will say so, and the line below
+                LoggerFactory.getLogger(Main.class).warn("Cannot hold the web console's address {}: {}", at, e.toString());
+            }
         }
         List<String> lines = new java.util.ArrayList<>();
         launcher.startWeb().forEach(f -> lines.add("  FAILED " + f.bundle() + " (" + f.group() + "): " + f.reason()));

@@ -8,6 +8,8 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.Dictionary;
 import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 import org.osgi.framework.BundleContext;
@@ -23,8 +25,10 @@ import org.slf4j.LoggerFactory;
  * <li>every {@code etc/*.cfg} is in ConfigAdmin (FileInstall read it: property {@code felix.fileinstall.filename}),
  * so no component is still to be reconfigured (a reconfiguration closes and reopens a radio's socket, losing the
  * frames sent meanwhile);</li>
- * <li>then the service registry has been quiet for {@value #QUIET_MILLIS} ms (components that got a configuration
- * late have been re-activated).</li>
+ * <li>then every Declarative Services component configured by one of those files runs with it
+ * ({@link ConfiguredComponents}: a component that activated with its defaults before its file came has been
+ * re-activated; issue 29: this check replaced 300 ms of waiting for a quiet service registry, which stays as the way
+ * when there is no SCR to ask).</li>
  * </ol>
  * Both waits are bounded; a file ConfigAdmin never takes (a broken cfg) delays the banner by {@link #CONFIG_WAIT}
  * at most and is named in a WARN line.
@@ -64,6 +68,24 @@ final class Readiness {
                         CONFIG_WAIT.toSeconds());
             }
             trace.mark("every etc/*.cfg in ConfigAdmin");
+            Set<String> files = cfgFiles(etc);
+            long configuredEnd = System.nanoTime() + QUIET_WAIT.toNanos();
+            Optional<List<ConfiguredComponents.Component>> components = ConfiguredComponents.read(context);
+            Set<String> waiting = Set.of();
+            while (components.isPresent() && System.nanoTime() < configuredEnd) {
+                waiting = ConfiguredComponents.waitingFor(files, components.get());
+                if (waiting.isEmpty()) {
+                    trace.mark("every component configured by etc/ runs with its file");
+                    return;
+                }
+                Thread.sleep(20);
+                components = ConfiguredComponents.read(context);
+            }
+            if (components.isPresent()) {
+                LOG.warn("Components configured by {} do not run with them after {} s", waiting, QUIET_WAIT.toSeconds());
+                return;
+            }
+            // no Declarative Services to ask: the service registry quiet for a while instead
             long quietEnd = System.nanoTime() + QUIET_WAIT.toNanos();
             while (System.nanoTime() - lastChange.get() < QUIET_MILLIS * 1_000_000 && System.nanoTime() < quietEnd) {
                 Thread.sleep(20);

@@ -54,7 +54,7 @@ final class StartSignals {
 
     /**
      * @return one {@code WARNING: …} line per signal of this start, in order, without repeats (the web console starts
-     *         after the banner: its own verdict is the line {@link WebConsoleLine} prints below the banner)
+     *         on its first use, after the banner: the log says how that went)
      */
     List<String> warnings() {
         context.removeServiceListener(listener);

@@ -1,5 +1,6 @@
 package org.tinysep.launcher;
 
+import java.net.InetSocketAddress;
 import java.time.Duration;
 import java.util.Collection;
 import org.osgi.framework.BundleContext;
@@ -21,8 +22,8 @@ final class WebConsoleLine {
     }
 
     /**
-     * How long the line waits for the HTTP service to bind (it starts after the banner; on a loaded machine Jetty
-     * takes seconds; a port held by another program never binds).
+     * How long the line (and a first use, {@link WebConsole}) waits for the HTTP service to bind (on a loaded machine
+     * Jetty takes seconds; a port held by another program never binds).
      */
     static final Duration WAIT = Duration.ofSeconds(10);
 
@@ -31,13 +32,25 @@ final class WebConsoleLine {
      * @return {@code Web console: <address> (…) - …} once bound, else a warning that it did not start
      */
     static String line(BundleContext context, Duration wait, long since) throws InterruptedException {
+        String endpoint = await(context, wait);
+        return describe(endpoint, Duration.ofNanos(System.nanoTime() - since));
+    }
+
+    /** @return the HTTP service's endpoint once it has bound, {@code null} when it did not within {@code wait} */
+    static String await(BundleContext context, Duration wait) throws InterruptedException {
         long end = System.nanoTime() + wait.toNanos();
         String endpoint = endpoint(context);
         while (endpoint == null && System.nanoTime() < end) {
             Thread.sleep(20);
             endpoint = endpoint(context);
         }
-        return describe(endpoint, Duration.ofNanos(System.nanoTime() - since));
+        return endpoint;
+    }
+
+    /** @return the line for a console that starts on its first use ({@link WebConsole}) */
+    static String onFirstUse(InetSocketAddress at) {
+        return "Web console: http://" + at.getHostString() + ":" + at.getPort() + "/ (starts on first use, in about"
+                + " a second) - " + HOW_TO_GET_IN;
     }
 
     static String describe(String endpoint, Duration afterBanner) {

@@ -78,5 +78,8 @@ class JvmOptionsTest {
         assertTrue(scaling > 1.0, "C1 compiles later than the JDK's default: CompileThresholdScaling=" + scaling);
         // session 34: no perf-data sampling (the watcher thread's 20 wake-ups a second at idle)
         assertEquals("false", set.get("UsePerfData"), "perf data is off: UsePerfData=" + set.get("UsePerfData"));
+        // session 36: a young generation of a fifth of the heap, not a third (about 2.5 MB less idle)
+        int newRatio = Integer.parseInt(set.getOrDefault("NewRatio", "2"));
+        assertTrue(newRatio >= 4, "the young generation is at most a fifth of the heap: NewRatio=" + newRatio);
     }
 }

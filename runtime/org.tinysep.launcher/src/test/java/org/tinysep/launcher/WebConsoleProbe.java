@@ -9,7 +9,7 @@ import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.time.Duration;
 
-/** Asks the web console's port over HTTP until it answers (issue 29: the console starts after the banner). */
+/** Asks the web console's port over HTTP until it answers (issue 29: the first request starts the console). */
 final class WebConsoleProbe {
 
     /** The bound after the banner: as long as the launcher waits for the console before it says it did not start. */
