@@ -24,6 +24,7 @@ public final class HistoryLearner {
     private final ZoneId zone;
     private final SleepRule sleep;
     private final LearningSettings settings;
+    private final Residents residents;
     private final List<Sighting> sightings = new ArrayList<>();
     private final List<QuietGaps.Away> away = new ArrayList<>();
     private Instant awaySince;
@@ -41,6 +42,7 @@ public final class HistoryLearner {
         this.zone = zone;
         this.sleep = sleep;
         this.settings = settings;
+        this.residents = new Residents(settings.residents());
     }
 
     /** Something happened (live or from the log). */
@@ -119,8 +121,12 @@ public final class HistoryLearner {
             }
             List<Sighting> typed = sightings.stream().map(this::typed).toList();
             List<Gap> gaps = QuietGaps.of(typed, empty, sleep);
-            MarginCheck.Result check = MarginCheck.choose(gaps, zone, settings, fixedLimits::get);
-            profile = new QuietProfile(gaps, zone, settings.withMargin(check.margin()), check.words());
+            if (residents.fromHistory()) {
+                residents.found(TwoAtOnce.of(typed, zone));
+            }
+            LearningSettings home = settings.withResidents(residents.several() ? Math.max(2, settings.residents()) : 1);
+            MarginCheck.Result check = MarginCheck.choose(gaps, zone, home, fixedLimits::get);
+            profile = new QuietProfile(gaps, zone, home.withMargin(check.margin()), check.words());
             builtFor = today;
             dayFrom = today.atStartOfDay(zone).toInstant();
             dayUntil = today.plusDays(1).atStartOfDay(zone).toInstant();
@@ -183,5 +189,14 @@ public final class HistoryLearner {
 
     public LearningSettings settings() {
         return settings;
+    }
+
+    /**
+     * @return the home's residents: declared in the settings, or ({@code residents} 0) recognised from this history
+     *         at every learning ({@link TwoAtOnce}); the profile's settings carry the count the rules use (1, or 2
+     *         and more)
+     */
+    public Residents residents() {
+        return residents;
     }
 }
