@@ -120,4 +120,13 @@ public final class LearnedLimits {
     public Residents residents() {
         return history.residents();
     }
+
+    /**
+     * @return {@link #residents()} as the learning valid at {@code now} recognised them (the first activity after a
+     *         start asks before any limit: it is read with what the history shows, not as one resident's)
+     */
+    public Residents residents(Instant now) {
+        history.profile(now);
+        return history.residents();
+    }
 }
