@@ -86,13 +86,18 @@ class SharedHomeTest {
         pir.connect(f);
     }
 
-    @Test
-    void aMovementWhereTheOtherResidentSitsIsASittingPeriod() {
-        startWith(2);
+    /** Starts, the seat mat's state after the start ON (14:50), the living-room movement at 15:00: its activity. */
+    private Activity movementWhileTheSeatIsOn(int residents, boolean twoAtOnce) {
+        startWith(residents, twoAtOnce);
         seat.report(true, true, at(20, 14, 50)); // the seat mat's state after a start: no activity, but ON
         pir.report(at(20, 15, 0));
         assertEquals(1, seen.size());
-        Activity a = seen.get(0);
+        return seen.get(0);
+    }
+
+    @Test
+    void aMovementWhereTheOtherResidentSitsIsASittingPeriod() {
+        Activity a = movementWhileTheSeatIsOn(2, false);
         assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
         assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home has 2 residents: "
                 + "someone sits there, so the quiet after this activity is a sitting person's; fixed limit of 3 h"),
@@ -102,10 +107,7 @@ class SharedHomeTest {
 
     @Test
     void undeclaredTheHomeIsTakenForTwoFromItsHistoryAtTheFirstActivityAfterAStart() {
-        startWith(0, true);
-        seat.report(true, true, at(20, 14, 50));
-        pir.report(at(20, 15, 0));
-        Activity a = seen.get(0);
+        Activity a = movementWhileTheSeatIsOn(0, true);
         assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
         assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home is taken for several "
                 + "residents: seen on 14 of the last 15 days of history"), a.explanation());
@@ -113,19 +115,13 @@ class SharedHomeTest {
 
     @Test
     void undeclaredWithoutSignsOfTwoTheMovementIsGettingUp() {
-        startWith(0, false);
-        seat.report(true, true, at(20, 14, 50));
-        pir.report(at(20, 15, 0));
-        Activity a = seen.get(0);
+        Activity a = movementWhileTheSeatIsOn(0, false);
         assertTrue(a.limit().compareTo(Duration.ofMinutes(30)) < 0, "the walk's learned limit: " + a.explanation());
     }
 
     @Test
     void withOneResidentTheMovementIsGettingUp() {
-        startWith(1);
-        seat.report(true, true, at(20, 14, 50));
-        pir.report(at(20, 15, 0));
-        Activity a = seen.get(0);
+        Activity a = movementWhileTheSeatIsOn(1, false);
         assertTrue(a.limit().compareTo(Duration.ofMinutes(30)) < 0, "the walk's learned limit: " + a.explanation());
     }
 
