@@ -201,7 +201,7 @@ final class CoreReplay {
             return new Limit(f, false, "fixed");
         }
         Sighting raw = a.sighting(false);
-        Sighting read = l.residents(a.at()).several() && a.resting() != null ? a.sighting(true) : raw;
+        Sighting read = l.residents().several() && a.resting() != null ? a.sighting(true) : raw;
         return l.residents().explain(raw, read, l.limitAfter(read, f, a.at()));
     }
 

@@ -48,7 +48,7 @@ interface LimitPolicy {
         return new LimitPolicy() {
             @Override
             public Limit limitAfter(Sighting s, Duration fixed, Instant now) {
-                Sighting read = limits.residents(now).read(s);
+                Sighting read = limits.residents().read(s);
                 Limit l = cached.limitAfter(read, fixed, now);
                 return limits.residents().explain(s, read, l);
             }

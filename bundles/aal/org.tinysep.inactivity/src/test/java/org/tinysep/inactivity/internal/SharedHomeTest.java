@@ -110,7 +110,7 @@ class SharedHomeTest {
         Activity a = movementWhileTheSeatIsOn(0, true);
         assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
         assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home is taken for several "
-                + "residents: seen on 14 of the last 15 days of history"), a.explanation());
+                + "residents: seen on 14 of the last 16 days of history"), a.explanation());
     }
 
     @Test

@@ -34,6 +34,8 @@ public final class HistoryLearner {
     private Instant dayFrom = Instant.MAX;
     private Instant dayUntil = Instant.MIN;
     private boolean dirty = true;
+    /** Whether {@link #residents} was told what the history shows since it was last loaded. */
+    private boolean residentsFound;
     private volatile Function<String, String> roomTypes = room -> "";
     /** Each room's fixed limit as last asked with (the day-by-day margin check compares with them). */
     private final Map<String, Duration> fixedLimits = new ConcurrentHashMap<>();
@@ -88,6 +90,7 @@ public final class HistoryLearner {
     /** History was loaded from the log: learn anew at the next question. */
     public synchronized void loaded() {
         dirty = true;
+        residentsFound = false;
     }
 
     /** @return whether {@code later} is less than {@link #MERGE} after {@code earlier} (no Duration per sighting) */
@@ -124,6 +127,7 @@ public final class HistoryLearner {
             if (residents.fromHistory()) {
                 residents.found(TwoAtOnce.of(typed, zone));
             }
+            residentsFound = true;
             LearningSettings home = settings.withResidents(residents.several() ? Math.max(2, settings.residents()) : 1);
             MarginCheck.Result check = MarginCheck.choose(gaps, zone, home, fixedLimits::get);
             profile = new QuietProfile(gaps, zone, home.withMargin(check.margin()), check.words());
@@ -177,6 +181,7 @@ public final class HistoryLearner {
             awaySince = m.awaySince();
         }
         dirty = true;
+        residentsFound = false;
     }
 
     public synchronized int size() {
@@ -196,7 +201,13 @@ public final class HistoryLearner {
      *         at every learning ({@link TwoAtOnce}); the profile's settings carry the count the rules use (1, or 2
      *         and more)
      */
-    public Residents residents() {
+    public synchronized Residents residents() {
+        if (!residentsFound && residents.fromHistory()) { // before the first learning (after a start): now
+            List<Sighting> sorted = new ArrayList<>(sightings);
+            sorted.sort(Comparator.comparing(Sighting::at));
+            residents.found(TwoAtOnce.of(sorted, zone));
+            residentsFound = true;
+        }
         return residents;
     }
 }

@@ -116,17 +116,11 @@ public final class LearnedLimits {
         return history;
     }
 
-    /** @return the home's residents and its mats now ON: the platform reads each sighting through it first */
-    public Residents residents() {
-        return history.residents();
-    }
-
     /**
-     * @return {@link #residents()} as the learning valid at {@code now} recognised them (the first activity after a
-     *         start asks before any limit: it is read with what the history shows, not as one resident's)
+     * @return the home's residents and its mats now ON: the platform reads each sighting through it first (the first
+     *         activity after a start too, before any learning: with what the history shows, not as one resident's)
      */
-    public Residents residents(Instant now) {
-        history.profile(now);
+    public Residents residents() {
         return history.residents();
     }
 }
