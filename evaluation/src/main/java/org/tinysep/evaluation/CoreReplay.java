@@ -55,8 +55,9 @@ final class CoreReplay {
     static final boolean REPEATS_DROPPED = !Boolean.getBoolean("repeats");
 
     /**
-     * The home's residents as Inactivity Recognition's {@code residents} setting: the home's own ({@link Home#residents}),
-     * or {@code -Dresidents=<n>} for an experiment (e.g. the rules of a shared home on a one-resident recording).
+     * The home's residents as Inactivity Recognition's {@code residents} setting: the home's own ({@link Home#residents},
+     * 0: recognised from the history), or {@code -Dresidents=<n>} for an experiment (e.g. the rules of a shared home on
+     * a one-resident recording).
      */
     private int residents() {
         return Integer.getInteger("residents", home.residents());
@@ -68,9 +69,9 @@ final class CoreReplay {
      * @param type the node's type: a bed mat (PRESENCE_BED) turning ON is "in bed", OFF "getting up"; a seat mat
      *             turning ON "sat down" — by the type, as the platform's {@code ActivityFactory} does (by its name,
      *             session 33 found, "Bedroom door (PIR)" was a bed: every bedroom movement was sleep, by day too)
-     * @param resting in a home of several residents, the mat ON in this room when the activity happened
-     *             (PRESENCE_BED or PRESENCE_SEAT; the learn package's {@code Residents} reads the activity as a
-     *             resting person's), else null
+     * @param resting unless the home declares 1 resident, the mat ON in this room when the activity happened
+     *             (PRESENCE_BED or PRESENCE_SEAT; in a home of several the learn package's {@code Residents} reads the
+     *             activity as a resting person's), else null
      */
     record Act(Instant at, String room, String what, boolean outerClose, boolean outerDoor, AmicaNodeType type,
             AmicaNodeType resting) {
@@ -84,12 +85,18 @@ final class CoreReplay {
             this(at, room, what, outerClose, outerDoor, type, null);
         }
 
+        /** @return the sighting as a home of several residents reads it */
         Sighting sighting() {
+            return sighting(true);
+        }
+
+        /** @param several whether the home is one of several residents now (declared, or seen in the history) */
+        Sighting sighting(boolean several) {
             boolean on = what.endsWith(" on");
             boolean bed = type == AmicaNodeType.PRESENCE_BED;
             Sighting s = new Sighting(at, System.getProperty("cause") != null ? room + "|" + what : room, room, room,
                     on && bed, on && type == AmicaNodeType.PRESENCE_SEAT && SEATED, !on && bed && UP_FROM_BED);
-            return resting == null ? s
+            return resting == null || !several ? s
                     : Residents.read(s, resting == AmicaNodeType.PRESENCE_BED, resting == AmicaNodeType.PRESENCE_SEAT);
         }
     }
@@ -138,7 +145,7 @@ final class CoreReplay {
             boolean outer = "OUTER".equals(n.doorKind());
             Act a = new Act(at(e.time()), n.room(), n.name() + (e.on() ? " on" : " off"), outer && !e.on(), outer,
                     n.type());
-            Sighting read = residents.read(a.sighting());
+            Sighting read = residents.resting(a.sighting()); // several or not: asked when played (limit)
             out.add(read.equals(a.sighting()) ? a : new Act(a.at(), a.room(), a.what(), a.outerClose(), a.outerDoor(),
                     a.type(), read.inBed() ? AmicaNodeType.PRESENCE_BED : AmicaNodeType.PRESENCE_SEAT));
         }
@@ -190,7 +197,12 @@ final class CoreReplay {
 
     Limit limit(LearnedLimits l, Act a) {
         Duration f = fixed(a.room());
-        return learned ? l.limitAfter(a.sighting(), f, a.at()) : new Limit(f, false, "fixed");
+        if (!learned) {
+            return new Limit(f, false, "fixed");
+        }
+        Sighting raw = a.sighting(false);
+        Sighting read = l.residents().several() && a.resting() != null ? a.sighting(true) : raw;
+        return l.residents().explain(raw, read, l.limitAfter(read, f, a.at()));
     }
 
     /**

@@ -56,7 +56,7 @@ public final class CoreSweep {
         Instant started = Instant.now().truncatedTo(java.time.temporal.ChronoUnit.SECONDS);
         List<Figures> all = new ArrayList<>();
         for (String spec : homes) {
-            Home home = load(spec, repo);
+            Home home = flags.residents == null ? load(spec, repo) : load(spec, repo).withResidents(flags.residents);
             for (Collapses.Model m : models) {
                 for (boolean learned : new boolean[] {true, false}) {
                     System.out.println("=== " + home.name() + " " + (learned ? "LEARNED" : "THESIS") + " model "
@@ -121,6 +121,10 @@ public final class CoreSweep {
             days += f.days();
             var lim = core.newLimits();
             core.play(lim, hist, t -> false);
+            if (learned) { // how the history made the home's residents (TwoAtOnce): declared or recognised
+                System.out.println("  residents after the history: " + (home.residents() > 0
+                        ? home.residents() + " declared" : lim.residents().words()));
+            }
             for (CoreReplay.Alert a : core.play(lim, test, f::judged)) {
                 int h = a.at().atZone(ZoneOffset.UTC).getHour();
                 boolean night = h < 7 || h >= 22;

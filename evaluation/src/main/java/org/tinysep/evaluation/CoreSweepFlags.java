@@ -26,6 +26,10 @@ final class CoreSweepFlags {
     @Option(names = "--collapses", paramLabel = "N", converter = OptionTypes.Count.class,
             description = "collapses per home, model and detector (default 200)")
     int collapses = 200;
+    @Option(names = "--residents", paramLabel = "N", converter = OptionTypes.Count.class, description = "the people "
+            + "living in every home given, as an installer sets Inactivity Recognition's residents (default: a "
+            + "folder's file 'residents', else 0: recognised from the history)")
+    Integer residents;
     @Option(names = "--readme", description = "write the table between the results:core markers of README.md and "
             + "evaluation/README.md (default: print only; a sweep with -Dfloor=... must not overwrite them)")
     boolean readme;

@@ -52,6 +52,10 @@ final class EvalFlags {
     @Option(names = "--sleep-labels", paramLabel = "REGEX", description = "which labelled activities mean asleep "
             + "(the default matches Sleeping, Sleep, go to bed, Nap, ...)")
     String sleep = LabelWords.SLEEP;
+    @Option(names = "--residents", paramLabel = "N", converter = OptionTypes.Count.class, description = "the people "
+            + "living in the home, as an installer sets Inactivity Recognition's residents (default: a folder's file "
+            + "'residents', else 0: recognised from the history)")
+    Integer residents;
     @Option(names = "--no-readme", description = "print the table only (default: also into evaluation/README.md)")
     boolean noReadme;
     @Option(names = "--readme", paramLabel = "FILE", description = "the README to write the table into "
@@ -77,7 +81,7 @@ final class EvalFlags {
                 dist != null ? dist : repo.resolve("runtime/org.tinysep.launcher/target/tinysep"),
                 work != null ? work : repo.resolve("evaluation/target/work"),
                 noReadme ? null : readme != null ? readme : repo.resolve("evaluation/README.md"), command, split,
-                new LabelWords(pattern("--away-labels", away), pattern("--sleep-labels", sleep)));
+                new LabelWords(pattern("--away-labels", away), pattern("--sleep-labels", sleep)), residents);
     }
 
     private static String pattern(String option, String v) {

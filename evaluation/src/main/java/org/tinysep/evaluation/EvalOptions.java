@@ -25,7 +25,7 @@ import org.tinysep.tools.cli.Cli;
  */
 record EvalOptions(String home, int collapses, long seed, int warmupHours, int parallel, int batch, int days,
         List<String> detectors, Path ordonez, Path dist, Path work, Path readme, String command, String split,
-        LabelWords words) {
+        LabelWords words, Integer residents) {
 
     /**
      * @param args the command line ({@link EvalFlags}: every option, its default and its check)

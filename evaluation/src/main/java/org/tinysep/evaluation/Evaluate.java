@@ -45,6 +45,9 @@ public final class Evaluate {
         String commit = commit(); // at the start: the code that runs
         long wall = System.nanoTime();
         Home home = Home.load(o.home(), o.ordonez(), o.work(), o.words());
+        if (o.residents() != null) {
+            home = home.withResidents(o.residents());
+        }
         if (o.days() > 0) {
             home = Days.first(home, o.days());
         }

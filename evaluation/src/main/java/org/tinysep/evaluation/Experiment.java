@@ -40,7 +40,8 @@ final class Experiment {
         long ahead = LocalDate.now(ZoneOffset.UTC).plusDays(2).toEpochDay() - home.events().get(0).time().toLocalDate()
                 .toEpochDay();
         this.shiftDays = Math.max(1, (ahead + 6) / 7) * 7;
-        this.setup = new PlatformRun.Setup(o.dist(), home, "learnHistoryDays=" + historyDays() + "\n");
+        this.setup = new PlatformRun.Setup(o.dist(), home, "learnHistoryDays=" + historyDays() + "\n"
+                + (home.residents() > 0 ? "residents=" + home.residents() + "\n" : "")); // else: from the history
     }
 
     /** Results per detector, in the order given. */

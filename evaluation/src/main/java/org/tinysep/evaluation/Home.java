@@ -31,21 +31,28 @@ import org.tinysep.simulator.replay.SensorMapping;
  * @param mapping the pinned mapping file
  * @param house   the House Information file
  * @param nodes   the plan's nodes
- * @param residents how many people live there (Inactivity Recognition's {@code residents}, as an installer sets it):
- *                1 for a recorded home, 2 for the derived two-resident home ({@link Variants})
+ * @param residents how many people live there (Inactivity Recognition's {@code residents}, as an installer sets it),
+ *                0 when nobody says: the detector recognises them from the history (the default, as on an unseen
+ *                home); a folder declares them in an optional file {@code residents} (one number), {@code
+ *                ./evaluate.sh --residents N} for any home
  */
 record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes,
         int residents) {
 
-    /** A home of one resident. */
+    /** A home whose residents nobody declares (recognised from the history). */
     Home(String name, List<SensorEvent> events, List<Label> labels, Path mapping, Path house, List<NodeSpec> nodes) {
-        this(name, events, labels, mapping, house, nodes, 1);
+        this(name, events, labels, mapping, house, nodes, 0);
+    }
+
+    /** @return this home with {@code n} residents declared (0: recognised from the history) */
+    Home withResidents(int n) {
+        return new Home(name, events, labels, mapping, house, nodes, n);
     }
 
     /**
      * @param spec    {@code A}/{@code B} (Ordonez, converted from {@code ordonezDir} by the simulator's converter) or a
      *                folder with {@code events.csv}, {@code labels.csv} and optionally {@code mapping} and
-     *                {@code house.xml}
+     *                {@code house.xml} and {@code residents}
      * @param work    a folder for the converted files
      */
     static Home load(String spec, Path ordonezDir, Path work) throws IOException, ReplayFormatException {
@@ -88,7 +95,25 @@ record Home(String name, List<SensorEvent> events, List<Label> labels, Path mapp
         }
         Path pinned = work.resolve(name + ".pinned.mapping");
         Files.write(pinned, pinned(plan));
-        return new Home(name, events, labels, pinned, house, plan.nodes());
+        return new Home(name, events, labels, pinned, house, plan.nodes(), residents(dir.resolve("residents")));
+    }
+
+    /**
+     * @param file optional: the number of people living in the home (one line; {@code #} comments and blank lines
+     *             skipped), as the installer would set Inactivity Recognition's {@code residents}
+     * @return that number, or 0 (none declared: recognised from the history) without the file
+     */
+    static int residents(Path file) throws IOException {
+        if (!Files.isRegularFile(file)) {
+            return 0;
+        }
+        List<String> lines = Files.readAllLines(file).stream().map(String::strip)
+                .filter(l -> !l.isEmpty() && !l.startsWith("#")).toList();
+        if (lines.size() != 1 || !lines.get(0).matches("\\d{1,3}")) {
+            throw new IOException(file + " must hold one whole number, the people living in the home (0: recognise "
+                    + "them from the history), not " + lines);
+        }
+        return Integer.parseInt(lines.get(0));
     }
 
     /** @return the instant splitting history (before) from test (from it on): the recording's middle */

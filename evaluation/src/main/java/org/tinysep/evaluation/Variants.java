@@ -22,8 +22,9 @@ import org.tinysep.simulator.replay.SensorEvent;
  * and events of a copy outside the host recording's span are dropped. (Until session 35 it was laid over once, so
  * on B the second resident lived only in B's first 14 days: a resident who moved out before the test half.)
  * Collapses are drawn from this home's labels, so the second resident keeps living while the first has
- * collapsed. It declares its residents (Inactivity Recognition's {@code residents} setting, as an installer of a
- * two-person flat sets it); the detector never reads the {@code "2:"} prefix.</li>
+ * collapsed. Like an unseen home it declares no residents unless both recordings declare theirs (then their sum,
+ * Inactivity Recognition's {@code residents}): the detector recognises them from the history (session 36b); it
+ * never reads the {@code "2:"} prefix.</li>
  * </ul>
  */
 final class Variants {
@@ -48,8 +49,9 @@ final class Variants {
                         "second resident's " + n.name()));
             }
             all.sort(Comparator.comparing(SensorEvent::time));
+            // declared only when both homes declare theirs; else, as on an unseen home, recognised from the history
             yield new Home(h.name() + "-two-residents", all, h.labels(), h.mapping(), h.house(), nodes,
-                    h.residents() + other.residents());
+                    h.residents() > 0 && other.residents() > 0 ? h.residents() + other.residents() : 0);
         }
         default -> h;
         };

@@ -1,11 +1,17 @@
 package org.tinysep.evaluation;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
 
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.tinysep.amica.protocol.AmicaAddress;
 import org.tinysep.amica.protocol.AmicaNodeType;
 import org.tinysep.inactivity.internal.learn.Sighting;
@@ -16,7 +22,8 @@ import org.tinysep.simulator.replay.SensorEvent;
 /**
  * Issue 28, session 36: the core replay reads a home of several residents as the platform does (the learn package's
  * {@code Residents}): a movement in a room where a seat mat is ON (its state from the whole recording, also from
- * before the replayed stretch) begins a sitting period. The derived two-resident home declares 2 residents.
+ * before the replayed stretch) begins a sitting period. Residents not declared (0) are recognised from the history
+ * (session 36b); a folder may declare them in a file {@code residents}.
  */
 class CoreResidentsTest {
 
@@ -52,10 +59,23 @@ class CoreResidentsTest {
     }
 
     @Test
-    void theTwoResidentHomeDeclaresTwo() {
+    void theTwoResidentHomeDeclaresTwoOnlyWhenItsHomesDeclareTheirs() {
         Home host = new Home("h", EVENTS, List.of(), Path.of("m"), Path.of("h.xml"), List.of(SEAT, PIR));
-        assertEquals(1, host.residents());
-        assertEquals(2, Variants.apply("two", host, host).residents());
-        assertEquals(1, Variants.apply("nomotion", host, host).residents());
+        assertEquals(0, host.residents(), "nobody declares them: recognised from the history");
+        assertEquals(0, Variants.apply("two", host, host).residents());
+        Home one = host.withResidents(1);
+        assertEquals(2, Variants.apply("two", one, one).residents());
+        assertEquals(1, Variants.apply("nomotion", one, one).residents());
+    }
+
+    @Test
+    void aFolderDeclaresItsResidentsInAnOptionalFile(@TempDir Path dir) throws Exception {
+        Path f = dir.resolve("residents");
+        assertEquals(0, Home.residents(f), "no file: recognised from the history");
+        Files.writeString(f, "# people living here\n2\n");
+        assertEquals(2, Home.residents(f));
+        Files.writeString(f, "two\n");
+        IOException e = assertThrows(IOException.class, () -> Home.residents(f));
+        assertTrue(e.getMessage().contains("must hold one whole number"), e.getMessage());
     }
 }

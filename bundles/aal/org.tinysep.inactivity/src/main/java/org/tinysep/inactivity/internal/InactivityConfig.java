@@ -37,10 +37,12 @@ public @interface InactivityConfig {
             + "than the room's fixed limit only when at least this many observed quiet periods support it", min = "0")
     int learnMinPeriodsToShorten() default 30;
 
-    @AttributeDefinition(description = "LEARNED: how many people live in the home. With more than 1 (they share "
-            + "the sensors): an activity in a room where a bed or seat mat is ON is judged as a resting person's, and "
-            + "a learned limit is never longer than the room's fixed limit", min = "1")
-    int residents() default 1;
+    @AttributeDefinition(description = "LEARNED: how many people live in the home; 0: recognised from the history "
+            + "(several once, on at least 3 days and a quarter of the days, there was activity in another room while "
+            + "a bed mat had been ON for 10 min). With more than 1 (they share the sensors): an activity in a room "
+            + "where a bed or seat mat is ON is judged as a resting person's, and a learned limit is never longer "
+            + "than the room's fixed limit", min = "0")
+    int residents() default 0;
 
     @AttributeDefinition(description = "LEARNED: the night (sleep in a bedroom) begins at this hour", min = "0",
             max = "23")

@@ -58,8 +58,18 @@ class SharedHomeTest {
 
     /** 14 afternoons: into the living room 14:00, sit down 14:10 for 3 h, up 17:10, kitchen 17:18. */
     private void startWith(int residents) {
+        startWith(residents, false);
+    }
+
+    /** @param twoAtOnce also 14 nights: in bed 22:00, the kitchen at 22:30 (someone else), up 06:30 */
+    private void startWith(int residents, boolean twoAtOnce) {
         HistoryLearner learner = new HistoryLearner(ZoneOffset.UTC, new SleepRule(21, 7, ZoneOffset.UTC),
                 LearningSettings.defaults().withMinPeriodsToShorten(0).withResidents(residents));
+        for (int d = 0; d < 14 && twoAtOnce; d++) {
+            learner.add(new Sighting(at(d, 22, 0), "bedroom", "Bedroom", "Bedroom", true));
+            learner.add(new Sighting(at(d, 22, 30), "kitchen", "Kitchen", "Kitchen", false));
+            learner.add(new Sighting(at(d + 1, 6, 30), "bedroom", "Bedroom", "Bedroom", false, false, true));
+        }
         for (int d = 0; d < 14; d++) {
             learner.add(new Sighting(at(d, 14, 0), "living", "Living room", "Living room", false));
             learner.add(new Sighting(at(d, 14, 10), "living", "Living room", "Living room", false, true));
@@ -76,13 +86,18 @@ class SharedHomeTest {
         pir.connect(f);
     }
 
-    @Test
-    void aMovementWhereTheOtherResidentSitsIsASittingPeriod() {
-        startWith(2);
+    /** Starts, the seat mat's state after the start ON (14:50), the living-room movement at 15:00: its activity. */
+    private Activity movementWhileTheSeatIsOn(int residents, boolean twoAtOnce) {
+        startWith(residents, twoAtOnce);
         seat.report(true, true, at(20, 14, 50)); // the seat mat's state after a start: no activity, but ON
         pir.report(at(20, 15, 0));
         assertEquals(1, seen.size());
-        Activity a = seen.get(0);
+        return seen.get(0);
+    }
+
+    @Test
+    void aMovementWhereTheOtherResidentSitsIsASittingPeriod() {
+        Activity a = movementWhileTheSeatIsOn(2, false);
         assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
         assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home has 2 residents: "
                 + "someone sits there, so the quiet after this activity is a sitting person's; fixed limit of 3 h"),
@@ -91,11 +106,22 @@ class SharedHomeTest {
     }
 
     @Test
+    void undeclaredTheHomeIsTakenForTwoFromItsHistoryAtTheFirstActivityAfterAStart() {
+        Activity a = movementWhileTheSeatIsOn(0, true);
+        assertEquals(Duration.ofHours(3), a.limit(), a.explanation());
+        assertTrue(a.explanation().startsWith("a seat mat in room living is on and the home is taken for several "
+                + "residents: seen on 14 of the last 16 days of history"), a.explanation());
+    }
+
+    @Test
+    void undeclaredWithoutSignsOfTwoTheMovementIsGettingUp() {
+        Activity a = movementWhileTheSeatIsOn(0, false);
+        assertTrue(a.limit().compareTo(Duration.ofMinutes(30)) < 0, "the walk's learned limit: " + a.explanation());
+    }
+
+    @Test
     void withOneResidentTheMovementIsGettingUp() {
-        startWith(1);
-        seat.report(true, true, at(20, 14, 50));
-        pir.report(at(20, 15, 0));
-        Activity a = seen.get(0);
+        Activity a = movementWhileTheSeatIsOn(1, false);
         assertTrue(a.limit().compareTo(Duration.ofMinutes(30)) < 0, "the walk's learned limit: " + a.explanation());
     }
 

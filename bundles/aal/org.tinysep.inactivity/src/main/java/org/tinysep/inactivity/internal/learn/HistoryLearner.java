@@ -24,6 +24,7 @@ public final class HistoryLearner {
     private final ZoneId zone;
     private final SleepRule sleep;
     private final LearningSettings settings;
+    private final Residents residents;
     private final List<Sighting> sightings = new ArrayList<>();
     private final List<QuietGaps.Away> away = new ArrayList<>();
     private Instant awaySince;
@@ -33,6 +34,8 @@ public final class HistoryLearner {
     private Instant dayFrom = Instant.MAX;
     private Instant dayUntil = Instant.MIN;
     private boolean dirty = true;
+    /** Whether {@link #residents} was told what the history shows since it was last loaded. */
+    private boolean residentsFound;
     private volatile Function<String, String> roomTypes = room -> "";
     /** Each room's fixed limit as last asked with (the day-by-day margin check compares with them). */
     private final Map<String, Duration> fixedLimits = new ConcurrentHashMap<>();
@@ -41,6 +44,7 @@ public final class HistoryLearner {
         this.zone = zone;
         this.sleep = sleep;
         this.settings = settings;
+        this.residents = new Residents(settings.residents());
     }
 
     /** Something happened (live or from the log). */
@@ -86,6 +90,7 @@ public final class HistoryLearner {
     /** History was loaded from the log: learn anew at the next question. */
     public synchronized void loaded() {
         dirty = true;
+        residentsFound = false;
     }
 
     /** @return whether {@code later} is less than {@link #MERGE} after {@code earlier} (no Duration per sighting) */
@@ -119,8 +124,13 @@ public final class HistoryLearner {
             }
             List<Sighting> typed = sightings.stream().map(this::typed).toList();
             List<Gap> gaps = QuietGaps.of(typed, empty, sleep);
-            MarginCheck.Result check = MarginCheck.choose(gaps, zone, settings, fixedLimits::get);
-            profile = new QuietProfile(gaps, zone, settings.withMargin(check.margin()), check.words());
+            if (residents.fromHistory()) {
+                residents.found(TwoAtOnce.of(typed, zone));
+            }
+            residentsFound = true;
+            LearningSettings home = settings.withResidents(residents.several() ? Math.max(2, settings.residents()) : 1);
+            MarginCheck.Result check = MarginCheck.choose(gaps, zone, home, fixedLimits::get);
+            profile = new QuietProfile(gaps, zone, home.withMargin(check.margin()), check.words());
             builtFor = today;
             dayFrom = today.atStartOfDay(zone).toInstant();
             dayUntil = today.plusDays(1).atStartOfDay(zone).toInstant();
@@ -171,6 +181,7 @@ public final class HistoryLearner {
             awaySince = m.awaySince();
         }
         dirty = true;
+        residentsFound = false;
     }
 
     public synchronized int size() {
@@ -183,5 +194,20 @@ public final class HistoryLearner {
 
     public LearningSettings settings() {
         return settings;
+    }
+
+    /**
+     * @return the home's residents: declared in the settings, or ({@code residents} 0) recognised from this history
+     *         at every learning ({@link TwoAtOnce}); the profile's settings carry the count the rules use (1, or 2
+     *         and more)
+     */
+    public synchronized Residents residents() {
+        if (!residentsFound && residents.fromHistory()) { // before the first learning (after a start): now
+            List<Sighting> sorted = new ArrayList<>(sightings);
+            sorted.sort(Comparator.comparing(Sighting::at));
+            residents.found(TwoAtOnce.of(sorted, zone));
+            residentsFound = true;
+        }
+        return residents;
     }
 }

@@ -18,11 +18,9 @@ import java.time.Instant;
 public final class LearnedLimits {
 
     private final HistoryLearner history;
-    private final Residents residents;
 
     public LearnedLimits(HistoryLearner history) {
         this.history = history;
-        this.residents = new Residents(history.settings().residents());
     }
 
     /**
@@ -39,9 +37,9 @@ public final class LearnedLimits {
         boolean seated = s.seated() && !asleep;
         return profile.learned(s.room(), s.roomName(), asleep, seated, s.upFromBed(), s.at())
                 .map(l -> neverWorse(s, l, new Limit(l.limit(), asleep, l.explain(set) + profile.marginWords()),
-                        fixed, set))
+                        fixed, set, history.residents()))
                 .orElseGet(() -> profile.partial(s.room(), s.roomName(), asleep, seated, s.upFromBed(), now)
-                        .map(l -> neverWorse(s, l, blend(s, l, fixed, asleep, set), fixed, set))
+                        .map(l -> neverWorse(s, l, blend(s, l, fixed, asleep, set), fixed, set, history.residents()))
                         .orElseGet(() -> coldStart(s, fixed, asleep, set)));
     }
 
@@ -54,7 +52,8 @@ public final class LearnedLimits {
      * long afternoon sit lengthened the evening's limit to hours and was what made the learned detector slow); and
      * in a home of several residents ({@link Residents}) a learned limit is never longer than the fixed one.
      */
-    static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set) {
+    static Limit neverWorse(Sighting s, Learned l, Limit learned, Duration fixed, LearningSettings set,
+            Residents residents) {
         int longer = learned.limit().compareTo(fixed);
         if (decide(l, learned.limit(), fixed, set).equals(learned.limit())) {
             return learned;
@@ -62,8 +61,7 @@ public final class LearnedLimits {
         if (longer > 0 && set.residents() > 1) {
             return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                     + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
-                    + Amounts.duration(learned.limit()) + ", but the home has " + set.residents() + " residents: "
-                    + "a collapse is found only once the others are quiet too, so a learned limit is never longer "
+                    + Amounts.duration(learned.limit()) + ", but " + residents.words() + ": a collapse is found only once the others are quiet too, so a learned limit is never longer "
                     + "than the fixed one (" + l.explain(set) + ")");
         }
         if (longer > 0) {
@@ -118,8 +116,11 @@ public final class LearnedLimits {
         return history;
     }
 
-    /** @return the home's residents and its mats now ON: the platform reads each sighting through it first */
+    /**
+     * @return the home's residents and its mats now ON: the platform reads each sighting through it first (the first
+     *         activity after a start too, before any learning: with what the history shows, not as one resident's)
+     */
     public Residents residents() {
-        return residents;
+        return history.residents();
     }
 }

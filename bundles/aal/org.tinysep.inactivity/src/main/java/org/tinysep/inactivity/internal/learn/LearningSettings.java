@@ -16,9 +16,10 @@ import java.time.Duration;
  * @param minPeriodsToShorten "never worse than the fixed limits": a learned limit may be shorter than
  *                    the room's fixed limit only when at least this many observed quiet periods support it; with
  *                    thinner history the fixed (thesis) limit holds. A longer learned limit needs no such support.
- * @param residents   the home's residents as the installer declares them (1 by default): with several, a learned
- *                    limit is never longer than the fixed one and an activity where a mat is ON is a resting
- *                    person's ({@link Residents})
+ * @param residents   the home's residents as the installer declares them, or 0: recognised from the history
+ *                    ({@link TwoAtOnce}); with several, a learned limit is never longer than the fixed one and an
+ *                    activity where a mat is ON is a resting person's ({@link Residents}). The constructors without
+ *                    it declare 1; a learned profile's settings carry the count in effect (1, or 2 and more)
  */
 public record LearningSettings(int minDays, int historyDays, double margin, Duration pad, Duration floor,
         Duration ceiling, int halfWindow, int minPeriodsToShorten, int residents) {
@@ -38,10 +39,10 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
         this(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, MIN_PERIODS_TO_SHORTEN);
     }
 
-    /** The defaults documented in the bundle README. */
+    /** The defaults documented in the bundle README (the residents recognised from the history). */
     public static LearningSettings defaults() {
         return new LearningSettings(7, 28, 1.5, Duration.ofMinutes(10), Duration.ofMinutes(20),
-                Duration.ofHours(12), 1);
+                Duration.ofHours(12), 1).withResidents(0);
     }
 
     /** @return these settings with another {@link #minPeriodsToShorten()} (0: any history may shorten a limit) */
@@ -49,7 +50,7 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
         return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, n, residents);
     }
 
-    /** @return these settings for a home of {@code n} residents */
+    /** @return these settings for a home of {@code n} residents (0: recognised from the history) */
     public LearningSettings withResidents(int n) {
         return new LearningSettings(minDays, historyDays, margin, pad, floor, ceiling, halfWindow, minPeriodsToShorten,
                 n);
@@ -64,7 +65,7 @@ public record LearningSettings(int minDays, int historyDays, double margin, Dura
     public LearningSettings {
         if (minDays < 1 || historyDays < minDays || margin < 1 || pad.isNegative() || floor.isNegative()
                 || ceiling.compareTo(floor) < 0 || halfWindow < 0 || halfWindow > 11 || minPeriodsToShorten < 0
-                || residents < 1) {
+                || residents < 0) {
             throw new IllegalArgumentException("inconsistent learning settings: minDays " + minDays
                     + ", historyDays " + historyDays + ", margin " + margin + ", pad " + pad + ", floor " + floor
                     + ", ceiling " + ceiling + ", halfWindow " + halfWindow + ", minPeriodsToShorten "

@@ -17,7 +17,9 @@ import java.util.Map;
  * others are quiet too, so every minute a learned limit adds to the fixed one is a collapse missed while the others
  * move about, and a long limit learned from the home's history may be the other resident's long sits.</li>
  * </ul>
- * With one resident (the default) nothing changes: a movement of the only person is that person getting up.
+ * With one resident nothing changes: a movement of the only person is that person getting up. Not declared
+ * ({@code residents} 0, the default), the home is taken for several residents once its history shows two people at
+ * once on enough days ({@link TwoAtOnce}, asked at every learning, {@link #found}).
  * The mats are kept by device (two seat mats in one living room: one turning OFF leaves the other ON). Thread-safe.
  */
 public final class Residents {
@@ -27,18 +29,34 @@ public final class Residents {
 
     private final int count;
     private final Map<String, Mat> on = new HashMap<>();
+    private volatile TwoAtOnce.Finding found = TwoAtOnce.Finding.NONE;
 
-    /** @param count the home's residents, at least 1 */
+    /** @param count the home's residents as declared, at least 1, or 0: from the history ({@link TwoAtOnce}) */
     public Residents(int count) {
-        if (count < 1) {
-            throw new IllegalArgumentException("a home has at least 1 resident, was " + count);
+        if (count < 0) {
+            throw new IllegalArgumentException("a home has at least 1 resident (0: from the history), was " + count);
         }
         this.count = count;
     }
 
-    /** @return whether the home has several residents (the rules above apply) */
+    /** @return whether the home has several residents (the rules above apply): declared, or seen in the history */
     public boolean several() {
-        return count > 1;
+        return count > 1 || count == 0 && found.several();
+    }
+
+    /** @return whether the residents are recognised from the history (none declared) */
+    public boolean fromHistory() {
+        return count == 0;
+    }
+
+    /** What the history showed at the latest learning (a home with its residents declared ignores it). */
+    public void found(TwoAtOnce.Finding f) {
+        found = f;
+    }
+
+    /** @return why the rules of several residents apply, for an explanation, e.g. "the home has 2 residents" */
+    public String words() {
+        return count > 1 ? "the home has " + count + " residents" : found.words();
     }
 
     /**
@@ -48,8 +66,8 @@ public final class Residents {
      * @param room   its room (the key {@link Sighting#room()} uses)
      */
     public synchronized void mat(String device, String room, boolean bed, boolean isOn) {
-        if (!several()) {
-            return; // one resident: nothing to keep
+        if (count == 1) {
+            return; // one resident declared: nothing to keep
         }
         if (isOn) {
             on.put(device, new Mat(room == null ? "" : room, bed));
@@ -60,9 +78,14 @@ public final class Residents {
 
     /** @return {@code s} read with the mats now ON in its room ({@link #read(Sighting, boolean, boolean)}) */
     public Sighting read(Sighting s) {
-        if (!several()) {
-            return s;
-        }
+        return several() ? resting(s) : s;
+    }
+
+    /**
+     * @return {@code s} read as with several residents, whether the home has them or not yet (the core replay marks
+     *         its activities once and asks {@link #several()} when it plays them); as {@code s} with one declared
+     */
+    public Sighting resting(Sighting s) {
         boolean bed = false;
         boolean seat = false;
         synchronized (this) {
@@ -88,8 +111,8 @@ public final class Residents {
         }
         String mat = read.inBed() ? "a bed mat" : "a seat mat";
         String who = read.inBed() ? "someone lies there" : "someone sits there";
-        return new Limit(limit.limit(), limit.asleep(), mat + " in " + read.roomName() + " is on and the home has "
-                + count + " residents: " + who + ", so the quiet after this activity is a "
+        return new Limit(limit.limit(), limit.asleep(), mat + " in " + read.roomName() + " is on and " + words()
+                + ": " + who + ", so the quiet after this activity is a "
                 + (read.inBed() ? "resting" : "sitting") + " person's; " + limit.explanation());
     }
 

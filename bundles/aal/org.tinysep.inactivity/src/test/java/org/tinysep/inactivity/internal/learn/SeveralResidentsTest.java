@@ -84,7 +84,7 @@ class SeveralResidentsTest {
         assertSame(pir, one.read(pir), "one resident: the movement is the person getting up");
         Sighting up = new Sighting(pir.at(), "Living", "Living", "Bedroom", false, false, true);
         assertSame(up, Residents.read(up, true, false), "getting up stays getting up");
-        assertThrows(IllegalArgumentException.class, () -> new Residents(0));
-        assertThrows(IllegalArgumentException.class, () -> LearningSettings.defaults().withResidents(0));
+        assertThrows(IllegalArgumentException.class, () -> new Residents(-1));
+        assertThrows(IllegalArgumentException.class, () -> LearningSettings.defaults().withResidents(-1));
     }
 }
