@@ -80,7 +80,7 @@ public final class PlatformTicker implements AutoCloseable {
 
                     @Override
                     public void modeChanged(TimeControllerProvider source, ClockMode mode, Instant at) {
-                        gate.modeChanged();
+                        gate.next();
                     }
                 });
                 useOwnTicks(false);
@@ -122,6 +122,11 @@ public final class PlatformTicker implements AutoCloseable {
      */
     public void wake(Instant at) {
         gate.wake(at);
+    }
+
+    /** The next tick calls the component, whatever it last asked for (e.g. its settings changed). Any thread. */
+    public void wakeNext() {
+        gate.next();
     }
 
     @Override

@@ -49,8 +49,8 @@ final class TickGate {
         }
     }
 
-    /** The clock switched mode: the next tick calls the component, whatever it asked. */
-    void modeChanged() {
+    /** The next tick calls the component, whatever it asked (the clock switched mode, its settings changed). */
+    void next() {
         wake(ALWAYS);
     }
 

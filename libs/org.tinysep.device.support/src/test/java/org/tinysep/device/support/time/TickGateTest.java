@@ -71,7 +71,7 @@ class TickGateTest {
         TickGate g = gate(T0.plusSeconds(3600));
         ticks(g, 0, 5);
         g.tick(T0.minusSeconds(100)); // virtual time, then real time again
-        g.modeChanged();
+        g.next();
         g.tick(T0.minusSeconds(99));
         g.tick(T0.minusSeconds(98));
         assertEquals(List.of(T0, T0.minusSeconds(100), T0.minusSeconds(99)), called);
