@@ -18,6 +18,8 @@ final class Thesis {
     double scenario5Cpu = Double.NaN;
     /** The idle platform (50 nodes known, no traffic): CPU % of one core. */
     double idleCpu = Double.NaN;
+    /** Its floor: a bare Felix framework (system bundle only, the same JVM options) over the same window. */
+    double felixIdleCpu = Double.NaN;
 
     void run(Bench b) throws Exception {
         double window = b.smoke() ? 3 : 60;
@@ -27,12 +29,18 @@ final class Thesis {
         try (MeasuredPlatform p = inst.start(b.chosen()); Nodes all = new Nodes(50, inst.amicaPort())) {
             all.announce(500);
             Bench.awaitDevices(p, "AmicaMovement", 50, Duration.ofMinutes(2));
-            Bench.sleep(b.smoke() ? 1 : 10);
-            Proc.CpuWindow idle = Proc.CpuWindow.start(p.pid());
-            Bench.sleep(window);
-            idleCpu = idle.percentOfOneCore();
+            try (Child felix = new Child(b.chosen(), "felix", b.work().resolve("thesis-felix-cache").toString())) {
+                Bench.sleep(b.smoke() ? 1 : 10);
+                Proc.CpuWindow idle = Proc.CpuWindow.start(p.pid());
+                Proc.CpuWindow floor = Proc.CpuWindow.start(felix.pid());
+                Bench.sleep(window);
+                idleCpu = idle.percentOfOneCore();
+                felixIdleCpu = floor.percentOfOneCore();
+            }
             rows.add(List.of("idle (50 nodes known, no traffic)", "0", "0", Report.f("%.2f %%", idleCpu),
                     Report.mb(p.rssKb()), "–", "–"));
+            rows.add(List.of("floor: bare Felix, idle over the same window", "–", "–",
+                    Report.f("%.2f %%", felixIdleCpu), "–", "–", "–"));
             for (int s = 0; s < NODES.length; s++) {
                 double rate = PACKETS_PER_HOUR[s] / 3600.0;
                 try (Nodes nodes = new Nodes(NODES[s], inst.amicaPort())) {
@@ -58,12 +66,15 @@ final class Thesis {
         r.heading("Thesis scenarios 1–5 (Tables 5.1, 5.2)");
         r.text("Each scenario: its nodes send motion frames at the thesis's rate for " + window + " s; CPU = the "
                 + "platform process's user+system time over that window, as % of one core (this machine: "
-                + Machine.cpuModel() + "); the thesis measured its C# prototype on an i5-480M (% of the whole CPU).");
+                + Machine.cpuModel() + "); the thesis measured its C# prototype on an i5-480M (% of the whole CPU). "
+                + "The idle row's floor, measured in the same window: a bare Felix framework (system bundle only) "
+                + "with the same JVM options, started beside the platform.");
         r.table(List.of("scenario", "nodes", "frames/s", "CPU % of one core", "RSS", "thesis CPU", "thesis memory"),
                 rows);
         r.text("Goals (issue 29): thesis load (scenario 5) at ≤ 0.5 % of one core: "
                 + Report.goalAtMost(scenario5Cpu, 0.5, "%") + "; idle ≤ 0.1 %: " + Report.goalAtMost(idleCpu, 0.1, "%")
-                + ".");
+                + " (bare Felix idle: " + Report.f("%.2f %%", felixIdleCpu) + ", ratio "
+                + Report.ratio(idleCpu, felixIdleCpu) + ").");
         Plot.bars(b.images().resolve("bench-thesis.png"), "CPU % of one core, thesis scenarios 1-5", "%",
                 List.of("1", "2", "3", "4", "5"), List.of(new Plot.Series("TinySEP (Java)", cpu),
                         new Plot.Series("thesis prototype (C#)", java.util.Arrays.stream(THESIS_CPU).boxed().toList())));

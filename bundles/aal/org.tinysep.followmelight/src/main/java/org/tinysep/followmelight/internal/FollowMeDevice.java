@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.stream.Collectors;
 import org.tinysep.api.actuator.DimmableLightProvider;
@@ -38,6 +39,7 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
     private final Lights lights;
     private final Duration grace;
     private final Set<String> unplacedReported = ConcurrentHashMap.newKeySet();
+    private volatile Consumer<Instant> due = at -> { };
     private volatile Map<String, Room> rooms = Map.of();
     private volatile String occupancySource;
 
@@ -144,16 +146,29 @@ final class FollowMeDevice extends WholeFlatDevice implements MovementListener {
         }
     }
 
-    /** Advances the algorithm's clock; called every platform second by the driver. */
-    void tick(Instant now) {
+    /**
+     * Advances the algorithm's clock; called by the driver's ticker when due.
+     *
+     * @return when it is next due: the end of the first lit room's grace period, null while no room is lit
+     */
+    Instant tick(Instant now) {
         synchronized (logic) {
             apply(logic.tick(now));
+            return logic.nextDue();
         }
+    }
+
+    /** Where the device says that a room was lit: its grace period needs a tick when it ends (the driver's ticker). */
+    void whenDue(Consumer<Instant> due) {
+        this.due = due;
     }
 
     private void apply(List<Command> commands) {
         if (commands.isEmpty()) {
             return; // most reports: the room is lit already
+        }
+        if (commands.stream().anyMatch(Command::on)) {
+            due.accept(logic.nextDue()); // a room lit now: its grace period ends later
         }
         for (Command c : commands) {
             List<String> switched = c.on() ? lights.on(c.roomUid()) : lights.off(c.roomUid());

@@ -1,6 +1,7 @@
 package org.tinysep.followmelight.internal;
 
 import java.time.Duration;
+import java.time.Instant;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -34,7 +35,7 @@ public final class FollowMeDriver extends AbstractDriver {
     private Duration grace;
     private Percent brightness;
     private TrackedPlacements directory;
-    private PlatformTicker ticker;
+    private volatile PlatformTicker ticker;
 
     public FollowMeDriver() {
         super(NAME);
@@ -47,15 +48,35 @@ public final class FollowMeDriver extends AbstractDriver {
         start(bundleContext);
         directory = new TrackedPlacements(bundleContext, this::lightMoved); // a device's room changed
         wiring = new SingleDeviceWiring<>(this, FollowMeDevice.class,
-                () -> new FollowMeDevice(context(), directory, grace, brightness), FollowMeDevice::forget);
+                this::device, FollowMeDevice::forget);
         wiring.optional(bundleContext, FlatOccupancyProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, HouseInformationProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, MovementProvider.class, FollowMeDevice::use);
         wiring.optional(bundleContext, PetMovementProvider.class, FollowMeDevice::use);
         wiring.source(bundleContext, SimpleLightProvider.class, (d, p) -> d.control(p));
         wiring.source(bundleContext, DimmableLightProvider.class, (d, p) -> d.control(p));
-        ticker = new PlatformTicker(bundleContext, "follow-me-light",
-                now -> wiring.current().forEach(d -> d.tick(now)));
+        ticker = PlatformTicker.whenDue(bundleContext, "follow-me-light", this::tick);
+    }
+
+    private FollowMeDevice device() {
+        FollowMeDevice d = new FollowMeDevice(context(), directory, grace, brightness);
+        d.whenDue(at -> {
+            PlatformTicker t = ticker;
+            if (t != null) {
+                t.wake(at);
+            }
+        });
+        return d;
+    }
+
+    /** A tick when a lit room's grace period ends; @return the next such end, null while no room is lit */
+    private Instant tick(Instant now) {
+        Instant next = null;
+        for (FollowMeDevice d : wiring.current()) {
+            Instant due = d.tick(now);
+            next = next == null || (due != null && due.isBefore(next)) ? due : next;
+        }
+        return next;
     }
 
     @Deactivate

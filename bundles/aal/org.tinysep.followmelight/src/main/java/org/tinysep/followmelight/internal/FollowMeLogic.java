@@ -105,6 +105,21 @@ final class FollowMeLogic {
         return out;
     }
 
+    /**
+     * @return when {@link #tick} next has something to do: the end of the first lit room's grace period; null while
+     *         no room is lit (motion waiting for an arrival is only forgotten, it needs no tick of its own)
+     */
+    Instant nextDue() {
+        Instant first = null;
+        for (Instant t : lit.values()) {
+            Instant end = t.plus(grace);
+            if (first == null || end.isBefore(first)) {
+                first = end;
+            }
+        }
+        return first;
+    }
+
     Set<String> litRooms() {
         return Set.copyOf(lit.keySet());
     }

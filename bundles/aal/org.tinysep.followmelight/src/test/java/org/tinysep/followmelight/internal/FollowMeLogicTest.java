@@ -131,4 +131,45 @@ class FollowMeLogicTest {
         record(logic.tick(at(72 + 60)), 132);
         assertEquals(List.of("hall on@0", "hall off@61", "hall on@70", "hall off@132"), commands);
     }
+
+    @Test
+    void aDarkFlatNeedsNoTickAndALitRoomOnlyAtTheEndOfItsGracePeriod() {
+        assertEquals(null, logic.nextDue(), "nothing lit: no tick needed");
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        logic.personMotion("hall", at(2));
+        logic.personMotion("kitchen", at(10));
+        assertEquals(at(62), logic.nextDue(), "the hall's grace period ends first");
+        logic.personMotion("hall", at(30));
+        assertEquals(at(70), logic.nextDue(), "the hall's motion restarted its grace period: the kitchen's is first");
+        logic.tick(at(70));
+        logic.tick(at(90));
+        assertEquals(null, logic.nextDue(), "both dark again: no tick needed");
+    }
+
+    @Test
+    void tickingOnlyWhenDueSwitchesTheSameAsEverySecond() {
+        FollowMeLogic due = new FollowMeLogic(Duration.ofSeconds(60));
+        List<String> dueCommands = new ArrayList<>();
+        logic.occupancy(Occupancy.OCCUPIED, T0);
+        due.occupancy(Occupancy.OCCUPIED, T0);
+        Instant next = null;
+        for (int s = 1; s <= 400; s++) {
+            int t = s;
+            record(logic.tick(at(s)), s);
+            if (next != null && !at(s).isBefore(next)) {
+                due.tick(at(s)).forEach(c -> dueCommands.add(c.roomUid() + (c.on() ? " on@" : " off@") + t));
+                next = due.nextDue();
+            }
+            String room = s < 100 && s % 3 == 0 ? "hall" : s > 150 && s < 200 && s % 7 == 0 ? "bath" : null;
+            if (room != null) {
+                record(logic.personMotion(room, at(s)), s);
+                due.personMotion(room, at(s)).forEach(c -> dueCommands.add(c.roomUid() + (c.on() ? " on@" : " off@")
+                        + t));
+                Instant d = due.nextDue();
+                next = next == null || (d != null && d.isBefore(next)) ? d : next;
+            }
+        }
+        assertEquals(List.of("hall on@3", "bath on@154", "hall off@159", "bath off@256"), commands);
+        assertEquals(commands, dueCommands);
+    }
 }

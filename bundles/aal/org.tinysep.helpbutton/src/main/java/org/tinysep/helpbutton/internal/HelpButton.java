@@ -48,12 +48,13 @@ public final class HelpButton implements HelpCalls.Desk {
 
     private final HelpCalls calls = new HelpCalls(this, this::event);
     private final Map<String, Connection> connections = new ConcurrentHashMap<>();
-    private PlatformTicker ticker;
+    private volatile PlatformTicker ticker;
 
     @Activate
     void activate(BundleContext context, HelpButtonConfig config) {
         configure(config);
-        ticker = new PlatformTicker(context, "tinysep-helpbutton", calls::tick);
+        ticker = PlatformTicker.whenDue(context, "tinysep-helpbutton", calls::tick);
+        calls.whenDue(ticker::wake);
     }
 
     @Modified
@@ -64,6 +65,10 @@ public final class HelpButton implements HelpCalls.Desk {
             calls.settings(HelpSettings.DEFAULTS);
             problem("bad configuration of org.tinysep.helpbutton (" + e.getMessage() + "): using the defaults, "
                     + "hold 1 s, cancel within 10 s, either switch");
+        }
+        PlatformTicker t = ticker;
+        if (t != null) {
+            t.wakeNext(); // a shorter hold: a switch held now may be a help call already
         }
     }
 

@@ -54,6 +54,7 @@ final class HelpCalls {
     private final Map<String, State> states = new HashMap<>();
     private final Map<String, Node> nodes = new HashMap<>();
     private volatile HelpSettings settings = HelpSettings.DEFAULTS;
+    private volatile Consumer<Instant> due = at -> { };
 
     HelpCalls(Desk desk, Consumer<String> events) {
         this.desk = desk;
@@ -62,6 +63,11 @@ final class HelpCalls {
 
     void settings(HelpSettings s) {
         settings = s;
+    }
+
+    /** Where a press says when it becomes a help call if still held: a tick is needed then (the ticker). */
+    void whenDue(Consumer<Instant> due) {
+        this.due = due;
     }
 
     /** A switch of {@code node} changed. */
@@ -82,6 +88,7 @@ final class HelpCalls {
             st.pressedButton = e.button();
             st.raisedByThisPress = false;
             st.cancelPress = false;
+            due.accept(e.at().plus(s.hold())); // still held then: a help call
             return;
         }
         if (st.cancelPress) {
@@ -103,16 +110,28 @@ final class HelpCalls {
         st.pressedAt = null;
     }
 
-    /** A platform tick: a switch held long enough but not yet released is a help call now. */
-    synchronized void tick(Instant now) {
+    /**
+     * A platform tick: a switch held long enough but not yet released is a help call now.
+     *
+     * @return when a switch pressed now becomes a help call if still held; null when none is held
+     */
+    synchronized Instant tick(Instant now) {
         HelpSettings s = settings;
-        states.forEach((uid, st) -> {
-            if (st.pressedAt != null && !st.raisedByThisPress
-                    && Duration.between(st.pressedAt, now).compareTo(s.hold()) >= 0) {
-                call(nodes.get(uid), st, now, Duration.between(st.pressedAt, now), "still held after "
-                        + seconds(Duration.between(st.pressedAt, now)));
+        Instant next = null;
+        for (Map.Entry<String, State> e : states.entrySet()) {
+            State st = e.getValue();
+            if (st.pressedAt == null || st.raisedByThisPress) {
+                continue;
             }
-        });
+            Duration held = Duration.between(st.pressedAt, now);
+            if (held.compareTo(s.hold()) >= 0) {
+                call(nodes.get(e.getKey()), st, now, held, "still held after " + seconds(held));
+            } else {
+                Instant at = st.pressedAt.plus(s.hold());
+                next = next == null || at.isBefore(next) ? at : next;
+            }
+        }
+        return next;
     }
 
     /** The node is gone: forget its state. */

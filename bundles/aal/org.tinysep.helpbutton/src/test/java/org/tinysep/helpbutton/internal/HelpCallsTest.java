@@ -195,4 +195,17 @@ class HelpCallsTest {
             }
         };
     }
+
+    /** Issue 29, idle: the ticker calls the help button only while a switch is held, and a press says until when. */
+    @Test
+    void aTickIsNeededOnlyWhileASwitchIsHeldAndNotYetACall() {
+        List<Instant> asked = new ArrayList<>();
+        calls.whenDue(asked::add);
+        assertEquals(null, calls.tick(T0), "no switch held: no tick needed");
+        press(ANNA, 1, 300);
+        assertEquals(List.of(T0.plusMillis(1300)), asked, "the press asks for a tick when it becomes a help call");
+        assertEquals(T0.plusMillis(1300), calls.tick(T0.plusSeconds(1)), "held 0.7 s: not yet");
+        assertEquals(null, calls.tick(T0.plusSeconds(2)), "called: no further tick needed for this press");
+        assertEquals(1, raised.size());
+    }
 }

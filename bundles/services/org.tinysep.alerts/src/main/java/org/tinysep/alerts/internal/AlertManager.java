@@ -45,7 +45,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
     private AlertBook book;
     private Notifier notifier;
     private DailySummary summary;
-    private PlatformTicker ticker;
+    private volatile PlatformTicker ticker;
     private volatile MailManagerProvider mail;
     /** The SMS and push channels, by DS field injection. */
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
@@ -78,7 +78,7 @@ public final class AlertManager implements AlertService, ReplyHandler {
         book.load();
         book.restored().ifPresent(log::event);
         summary.start(book, clock.now());
-        this.ticker = new PlatformTicker(context, "tinysep-alerts", this::tick);
+        this.ticker = PlatformTicker.whenDue(context, "tinysep-alerts", this::tick);
     }
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
@@ -201,9 +201,15 @@ public final class AlertManager implements AlertService, ReplyHandler {
         return fanOut.add(listener);
     }
 
-    /** One platform second: messages due, delivery outcomes, the daily summary. */
-    void tick(Instant now) {
+    /**
+     * A platform tick when due: messages due, delivery outcomes, the daily summary.
+     *
+     * @return when it is next due: every tick while an alert is open or one of its messages is not finished (its
+     *         repeats, escalations and delivery outcomes), else when the next daily summary is due (null: none)
+     */
+    Instant tick(Instant now) {
         List<Alert> changed = new ArrayList<>();
+        Instant due;
         synchronized (this) {
             for (Alert a : book.all()) {
                 Alert next = notifier.refresh(advance(a, now), now);
@@ -213,8 +219,19 @@ public final class AlertManager implements AlertService, ReplyHandler {
                 }
             }
             summary.tick(book, now, notifier);
+            due = nextDue(book.all(), notifier.settings(), book.lastSummary(), now);
         }
         changed.forEach(this::changed);
+        return due;
+    }
+
+    /**
+     * @return {@code now} (every tick) while an alert is open or one of its messages is not finished, else when the
+     *         next daily summary is due (null: no summary)
+     */
+    static Instant nextDue(List<Alert> all, AlertSettings s, java.time.LocalDate lastSummary, Instant now) {
+        return all.stream().anyMatch(a -> a.isOpen() || DeliveryWatch.waiting(a)) ? now
+                : DailySummary.nextDue(s, lastSummary, now);
     }
 
     /** Sends the message due for {@code a} now, if any; the caller holds the lock and saves. */
@@ -231,6 +248,10 @@ public final class AlertManager implements AlertService, ReplyHandler {
     }
 
     private void changed(Alert a) {
+        PlatformTicker t = ticker;
+        if (t != null) {
+            t.wakeNext(); // raised, acknowledged or cleared: its messages are watched from the next tick
+        }
         fanOut.changed(a);
     }
 

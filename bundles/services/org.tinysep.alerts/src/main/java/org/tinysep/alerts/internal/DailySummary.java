@@ -78,6 +78,22 @@ final class DailySummary implements AutoCloseable {
         }
     }
 
+    /**
+     * @return when {@link #tick} next has a summary to send: {@code now} while today's is due and not sent, else the
+     *         next day's summary time; null without a summary time
+     */
+    static Instant nextDue(AlertSettings settings, LocalDate lastSent, Instant now) {
+        if (settings.summaryTime() == null) {
+            return null;
+        }
+        LocalDate day = now.atZone(settings.zone()).toLocalDate();
+        if (lastSent != null && !lastSent.isBefore(day)) {
+            day = day.plusDays(1); // today's was sent
+        }
+        Instant at = day.atTime(settings.summaryTime()).atZone(settings.zone()).toInstant();
+        return at.isBefore(now) ? now : at;
+    }
+
     @Override
     public void close() {
         health.close();

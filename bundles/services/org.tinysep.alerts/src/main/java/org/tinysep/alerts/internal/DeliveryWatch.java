@@ -40,7 +40,7 @@ final class DeliveryWatch {
      * @return {@code a} with the latest word on each message not finished yet
      */
     Alert refresh(Alert a, Instant at) {
-        if (a.notifications().stream().noneMatch(DeliveryWatch::unfinished)) {
+        if (!waiting(a)) {
             return a;
         }
         List<Notification> now = new ArrayList<>();
@@ -76,6 +76,11 @@ final class DeliveryWatch {
         List<String> told = new ArrayList<>();
         a.notifications().forEach(n -> told.addAll(n.to()));
         return List.copyOf(new LinkedHashSet<>(told));
+    }
+
+    /** @return true while a message of {@code a} is not finished (its outcome is asked for at each tick) */
+    static boolean waiting(Alert a) {
+        return a.notifications().stream().anyMatch(DeliveryWatch::unfinished);
     }
 
     private static boolean unfinished(Notification n) {

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 import java.util.function.Function;
 import java.util.function.Supplier;
 import org.tinysep.api.backup.ComponentBackup;
@@ -49,6 +50,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
      * empty without Sensor Health.
      */
     private volatile Supplier<String> unmonitored = () -> "";
+    private volatile Consumer<Instant> due = at -> { };
     private final Listeners<FlatOccupancyListener> listeners;
     private final OccupancyLogic logic;
     private final Duration leaveTimeout;
@@ -184,9 +186,25 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         doorChanged(source, state, false, at);
     }
 
-    /** Advances the algorithm's clock; called every second by the driver. */
-    void tick(Instant now) {
+    /**
+     * Advances the algorithm's clock; called by the driver's ticker when due.
+     *
+     * @return when it is next due: the end of the pending leave check, null without one
+     */
+    Instant tick(Instant now) {
         announce(step(now, l -> l.tick(now)), now, () -> leaveReason);
+        return leaveCheckEnd();
+    }
+
+    /** Where the device says that a leave check began: its end needs a tick (the driver's ticker). */
+    void whenDue(Consumer<Instant> due) {
+        this.due = due;
+    }
+
+    private Instant leaveCheckEnd() {
+        synchronized (logic) {
+            return logic.leaveDeadline().orElse(null);
+        }
     }
 
     /**
@@ -201,6 +219,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         synchronized (logic) {
             wentBack = logic.rebase(now);
             change = step.apply(logic);
+            due.accept(logic.leaveDeadline().orElse(null)); // a door closed: its leave check ends later
         }
         if (wentBack.isPresent()) {
             clockWentBack(wentBack.get(), now);
@@ -255,6 +274,7 @@ final class FlatOccupancyDevice extends WholeFlatDevice
         synchronized (logic) {
             logic.restore(s);
             wentBack = logic.rebase(now);
+            due.accept(logic.leaveDeadline().orElse(null));
         }
         status(DeviceStatus.State.ONLINE, "");
         event("restored after a restart: flat " + s.state().name().toLowerCase() + " since " + s.since()

@@ -51,6 +51,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         leaveTimeout = Duration.ofSeconds(Math.max(10, config.leaveTimeoutSeconds()));
         exitGrace = Duration.ofSeconds(Math.min(Math.max(0, config.exitGraceSeconds()), leaveTimeout.toSeconds() - 1));
         start(bundleContext);
+        ticker = PlatformTicker.whenDue(bundleContext, "flat-occupancy", this::tick); // before the device
         unmonitored = new UnmonitoredRooms(bundleContext);
         movements = new ProviderTracker<>(bundleContext, MovementProvider.class, null, ProviderTracker.Callback.of(
                 (movement, uid) -> device().watch(movement), (movement, uid) -> providerGone(uid))).open();
@@ -67,7 +68,6 @@ public final class FlatOccupancyDriver extends AbstractDriver {
                     windowsSeen.remove(uid);
                     gone(uid);
                 })).open();
-        ticker = new PlatformTicker(bundleContext, "flat-occupancy", this::tick);
     }
 
     @Deactivate
@@ -81,11 +81,10 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         unmonitored.close();
     }
 
-    private void tick(Instant now) {
+    /** A tick when a leave check ends; @return when the next one ends, null without one (or without a device) */
+    private Instant tick(Instant now) {
         List<FlatOccupancyDevice> all = devices(FlatOccupancyDevice.class);
-        if (!all.isEmpty()) {
-            all.get(0).tick(now);
-        }
+        return all.isEmpty() ? null : all.get(0).tick(now);
     }
 
     private void gone(String uid) {
@@ -106,6 +105,7 @@ public final class FlatOccupancyDriver extends AbstractDriver {
         }
         FlatOccupancyDevice d = addDevice(new FlatOccupancyDevice(context(), leaveTimeout, exitGrace));
         d.unmonitored(this::unmonitoredRooms);
+        d.whenDue(ticker::wake);
         windowsSeen.values().forEach(d::watch);
         return d;
     }

@@ -6,6 +6,9 @@ import static org.tinysep.flatoccupancy.internal.Fixtures.movement;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.time.Instant;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
 import org.junit.jupiter.api.Test;
 import org.tinysep.api.sensor.DoorProvider;
 import org.tinysep.api.sensor.MovementEvent;
@@ -48,5 +51,24 @@ class FlatOccupancyDeviceTest {
     void itWatchesThePersonAndListsTheRoomsItCannotSee() {
         assertEquals("", flat.parameters().stream().filter(p -> p.key().equals("roomsNotSeen")).findFirst()
                 .orElseThrow(() -> new AssertionError("no roomsNotSeen parameter")).value());
+    }
+
+    /** Issue 29, idle: the ticker calls the device only while a leave check runs, and a closing door says when. */
+    @Test
+    void itNeedsATickOnlyWhileALeaveCheckRuns() {
+        List<Instant> asked = new ArrayList<>();
+        flat.whenDue(asked::add);
+        DoorProvider front = door("front");
+        flat.movementReported(movement(), new MovementEvent(true, T0));
+        assertEquals(null, flat.tick(T0.plusSeconds(1)), "occupied, no leave check: no tick needed");
+
+        flat.doorChanged(front, OpenState.OPEN, T0.plusSeconds(10));
+        flat.doorChanged(front, OpenState.CLOSED, T0.plusSeconds(15));
+        Instant end = T0.plusSeconds(15 + 600);
+        assertEquals(List.of(end), asked.stream().filter(Objects::nonNull).distinct().toList(),
+                "the closing door asks for a tick when its leave check ends");
+        assertEquals(end, flat.tick(T0.plusSeconds(16)), "still checking");
+        assertEquals(null, flat.tick(end), "the check ended: no tick needed");
+        assertEquals(Occupancy.UNOCCUPIED, flat.occupancy());
     }
 }

@@ -71,6 +71,7 @@ final class NodeIndex {
     private final RoomWatch rooms = new RoomWatch();
     private final Notices notices;
     private final Function<String, String> roomName;
+    private volatile Runnable onQueued = () -> { };
     private volatile int known;
     private volatile int offline;
     private long work;
@@ -85,7 +86,7 @@ final class NodeIndex {
     // ---- service events (any thread): queued, applied by the next tick
 
     void sourceAdded(String uid, String address, String room, NodeHealthSource source) {
-        pending.add(() -> {
+        queue(() -> {
             Entry old = entries.put(uid, new Entry(uid, address, room, source));
             if (old != null) {
                 drop(old);
@@ -96,7 +97,7 @@ final class NodeIndex {
     }
 
     void sourceModified(String uid, String room) {
-        pending.add(() -> {
+        queue(() -> {
             Entry e = entries.get(uid);
             if (e != null) {
                 e.ownRoom = room;
@@ -106,7 +107,7 @@ final class NodeIndex {
     }
 
     void sourceRemoved(String uid, NodeHealthSource source) {
-        pending.add(() -> {
+        queue(() -> {
             Entry e = entries.get(uid);
             if (e != null && e.source == source) {
                 entries.remove(uid);
@@ -116,7 +117,7 @@ final class NodeIndex {
     }
 
     void deviceChanged(OnNode d) {
-        pending.add(() -> {
+        queue(() -> {
             for (String a : placements.put(d)) {
                 unsettled.put(a, SETTLE_TICKS);
             }
@@ -124,12 +125,31 @@ final class NodeIndex {
     }
 
     void deviceRemoved(String uid) {
-        pending.add(() -> {
+        queue(() -> {
             String a = placements.remove(uid);
             if (a != null) {
                 unsettled.put(a, SETTLE_TICKS);
             }
         });
+    }
+
+    private void queue(Runnable change) {
+        pending.add(change);
+        onQueued.run();
+    }
+
+    /** Where a queued service event says that the next tick has work (the driver's ticker). */
+    void whenQueued(Runnable hook) {
+        onQueued = hook;
+    }
+
+    /**
+     * @return when {@link #tick} is next needed: every tick while a node is known (its online and battery flags have
+     *         no change notification, so each tick asks for them) or a change waits; null while there is none (a
+     *         queued service event then wakes the ticker)
+     */
+    Instant nextDue(Instant now) {
+        return entries.isEmpty() && pending.isEmpty() && unsettled.isEmpty() ? null : now;
     }
 
     private void drop(Entry e) {

@@ -59,8 +59,17 @@ final class SensorHealthDevice extends WholeFlatDevice implements SensorHealthPr
         publish(this, SensorHealthProvider.class);
     }
 
-    /** One platform second: only the nodes whose state or place changed are looked at again ({@link NodeIndex}). */
-    void tick(Instant now) {
+    /**
+     * One platform tick: only the nodes whose state or place changed are looked at again ({@link NodeIndex}).
+     *
+     * @return when it is next due ({@link NodeIndex#nextDue}): every tick while nodes are known, null without any
+     */
+    Instant tick(Instant now) {
+        update(now);
+        return index.nextDue(now);
+    }
+
+    private void update(Instant now) {
         NodeIndex.Changes changes = index.tick(now);
         index.rooms().dropRemovedRooms(r -> context.rooms().house().isPresent() && context.rooms().room(r).isEmpty());
         List<UnmonitoredRoom> rooms = index.rooms().unmonitored();

@@ -31,7 +31,7 @@ public final class SensorHealthDriver extends AbstractDriver {
 
     private NodeView view;
     private ServiceTracker<MailManagerProvider, MailManagerProvider> mail;
-    private PlatformTicker ticker;
+    private volatile PlatformTicker ticker;
 
     public SensorHealthDriver() {
         super(NAME);
@@ -44,12 +44,18 @@ public final class SensorHealthDriver extends AbstractDriver {
         Function<String, String> roomName = uid -> rooms.room(uid).map(Room::name).orElse(uid);
         NodeIndex index = new NodeIndex(new Notices(Duration.ofMinutes(Math.max(0, config.noticeAfterMinutes()))),
                 roomName);
+        index.whenQueued(() -> {
+            PlatformTicker t = ticker;
+            if (t != null) {
+                t.wakeNext(); // a node came, changed or went: the next tick applies it
+            }
+        });
         view = new NodeView(bundleContext, index);
         mail = new ServiceTracker<>(bundleContext, MailManagerProvider.class, null);
         mail.open();
         SensorHealthDevice device = addDevice(new SensorHealthDevice(context(), index, roomName,
                 new NoticeWords(zone(config)), mail::getService, config));
-        ticker = new PlatformTicker(bundleContext, "sensor-health", device::tick);
+        ticker = PlatformTicker.whenDue(bundleContext, "sensor-health", device::tick);
     }
 
     private ZoneId zone(SensorHealthConfig config) {

@@ -239,4 +239,20 @@ class NodeIndexTest {
         assertEquals(heard, index.sensors().stream().filter(s -> s.node().nodeAddress().equals("1.9")).findFirst()
                 .orElseThrow().node().lastHeard(), "the sensor list reads each node when asked");
     }
+
+    /** Issue 29, idle: without nodes the ticker need not call Sensor Health; a node coming wakes it. */
+    @Test
+    void withoutNodesNoTickIsNeededAndANodeComingWakesTheTicker() {
+        NodeIndex index = index(Duration.ofMinutes(10));
+        int[] woken = {0};
+        index.whenQueued(() -> woken[0]++);
+        index.tick(T0);
+        assertEquals(null, index.nextDue(T0), "no node, nothing queued: no tick needed");
+        Node n = new Node(1);
+        n.register(index, "kitchen");
+        assertTrue(woken[0] > 0, "a node registered wakes the ticker");
+        assertEquals(T0, index.nextDue(T0), "queued: the next tick applies it");
+        index.tick(T0.plusSeconds(1));
+        assertEquals(T0.plusSeconds(1), index.nextDue(T0.plusSeconds(1)), "a known node's flags are asked each tick");
+    }
 }

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.time.Clock;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
@@ -44,6 +45,9 @@ final class PersistentLog<E> implements AutoCloseable {
     /** the writer's own beat; null: woken by the first entry after a pause */
     private final Cadence cadence;
     private final long loadedDamaged;
+    private final long syncMillis;
+    /** A sync is scheduled for what was written since the last one. */
+    private volatile boolean syncDue;
     private volatile boolean failing;
 
     private PersistentLog(RingBuffer<E> ring, LineCodec<E> codec, LogFolder folder, LogSettings settings,
@@ -61,8 +65,7 @@ final class PersistentLog<E> implements AutoCloseable {
                 "written to " + folder.prefix() + " files");
         this.cadence = beatMillis <= 0 ? null
                 : new Cadence(drain, thread, beatMillis, IDLE_BEATS, () -> ring.capacityHint() / 4);
-        long sync = settings.syncInterval().toMillis();
-        thread.scheduleWithFixedDelay(this::sync, sync, sync, TimeUnit.MILLISECONDS);
+        this.syncMillis = settings.syncInterval().toMillis(); // a sync follows a write, none while idle
         thread.scheduleWithFixedDelay(writer::prune, 0, 1, TimeUnit.HOURS);
     }
 
@@ -189,6 +192,7 @@ final class PersistentLog<E> implements AutoCloseable {
     private void write(List<E> batch) {
         try {
             writer.write(batch);
+            syncLater();
             if (failing) {
                 failing = false;
                 LOG.info("Writing log files works again ({})", writer.current());
@@ -200,6 +204,27 @@ final class PersistentLog<E> implements AutoCloseable {
                         writer.current(), e.toString());
             }
         }
+    }
+
+    /** Forces what was written to the disk {@code syncInterval} after the first write since the last sync. */
+    private void syncLater() {
+        if (syncDue) {
+            return;
+        }
+        syncDue = true;
+        try {
+            thread.schedule(() -> {
+                syncDue = false;
+                sync();
+            }, syncMillis, TimeUnit.MILLISECONDS);
+        } catch (RejectedExecutionException e) {
+            syncDue = false; // closing: close() saves the file
+        }
+    }
+
+    /** @return tasks waiting on the writer thread (for tests: an idle log keeps only its hourly prune) */
+    int waitingTasks() {
+        return thread.getQueue().size();
     }
 
     private void sync() {

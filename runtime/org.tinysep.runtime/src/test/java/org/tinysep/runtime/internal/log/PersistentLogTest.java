@@ -181,4 +181,17 @@ class PersistentLogTest {
         long written = log.query(e -> true, 10_000).matched();
         assertEquals(1000, written + log.skipped(), "every entry is either written or counted as skipped");
     }
+
+    /** Issue 29, idle: the writer thread is not woken for a sync while nothing was written. */
+    @Test
+    void anIdleLogWakesItsWriterOnlyToSyncWhatWasWritten() throws IOException, InterruptedException {
+        open(100, settings(1 << 20, 5, Duration.ofDays(1)));
+        assertEquals(1, log.waitingTasks(), "idle: only the hourly prune waits, no sync every 50 ms");
+        append(3);
+        long deadline = System.nanoTime() + 10_000_000_000L;
+        while (log.waitingTasks() > 1 && System.nanoTime() < deadline) {
+            Thread.sleep(10); // the sync is due 50 ms after the write
+        }
+        assertEquals(1, log.waitingTasks(), "after its sync the writer waits for the prune only");
+    }
 }
