@@ -57,9 +57,9 @@ public final class Main {
         step("thesis scenarios", report, () -> Repeat.run(b, repeat, "Thesis scenarios", rb -> {
             Thesis t = new Thesis();
             t.run(rb);
-            return new double[] {t.scenario5Cpu, t.idleCpu};
-        }, new String[] {"thesis.s5cpu", "thesis.idleCpu"}, new String[] {"scenario 5, % of one core",
-            "idle, % of one core"}));
+            return new double[] {t.scenario5Cpu, t.idleCpu, t.felixIdleCpu};
+        }, new String[] {"thesis.s5cpu", "thesis.idleCpu", "thesis.felixIdleCpu"}, new String[] {
+            "scenario 5, % of one core", "idle, % of one core", "bare Felix idle, % of one core"}));
         step("throughput", report, () -> Repeat.run(b, repeat, "Throughput", rb -> {
             Throughput t = new Throughput();
             t.run(rb);

@@ -36,4 +36,14 @@ class GoalsTest {
         assertTrue(line(lines, "headless").startsWith("not measured"), line(lines, "headless"));
         assertTrue(Goals.markdown(r).contains("| loss-free throughput ≥ 100,000 frames/s |"), Goals.markdown(r));
     }
+
+    @Test
+    void idleIsJudgedBesideABareFelixOverTheSameWindow() {
+        Report r = new Report();
+        r.figure("thesis.idleCpu", 0.2);
+        r.figure("thesis.felixIdleCpu", 0.05);
+        String idle = line(Goals.lines(r), "idle ≤ 0.1 %");
+        assertTrue(idle.startsWith("MISSED"), idle);
+        assertTrue(idle.contains("floor 0.05 %; ratio 4.00×"), idle);
+    }
 }
