@@ -98,7 +98,9 @@ public final class Launcher {
         framework = fw;
         trace.mark("framework initialised");
         trace.watch(fw.getBundleContext());
-        StartSignals signals = new StartSignals(fw.getBundleContext()); // before anything of this start is logged
+        // before anything of this start is logged: the history's end as the files on disk tell it
+        StartSignals signals = new StartSignals(fw.getBundleContext(), EventHistoryEnd.read(home.resolve("etc"),
+                options.var()));
 
         CountDownLatch started = new CountDownLatch(1);
         fw.getBundleContext().addFrameworkListener(event -> {

@@ -19,7 +19,9 @@ import org.slf4j.LoggerFactory;
  * starting {@code Monitoring reduced: } or {@code Node type mismatch: } (a radio or console that cannot listen, a
  * watching application disabled) become one {@code WARNING: } line each under the banner, so "N/N bundles active"
  * is never all a deaf gateway says. The log's entries from before this start (its history) are left out: the
- * newest sequence number is taken when the event log registers, before anything of this start is recorded.
+ * newest sequence number of the history is read from the log's files before the framework starts
+ * ({@link EventHistoryEnd}); only when that cannot be told, it is taken when the event log registers (racy on a
+ * loaded machine: the registration was seen after this start's first entries).
  * The launcher sees the log only by reflection (its classes live inside the framework).
  */
 final class StartSignals {
@@ -39,7 +41,16 @@ final class StartSignals {
 
     /** Starts watching for the event log; call before the framework starts. */
     StartSignals(BundleContext context) {
+        this(context, -1);
+    }
+
+    /**
+     * @param historyEnd the newest sequence number of the history, read from the files before the start
+     *                   ({@link EventHistoryEnd}); -1: unknown, taken from the event log when it registers
+     */
+    StartSignals(BundleContext context, long historyEnd) {
         this.context = context;
+        from.set(historyEnd);
         this.listener = (AllServiceListener) event -> {
             if (event.getType() == ServiceEvent.REGISTERED && from.get() < 0) {
                 from.compareAndSet(-1, newest(event.getServiceReference()));

@@ -1,0 +1,78 @@
+package org.tinysep.launcher;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Properties;
+import java.util.stream.Stream;
+
+/**
+ * The sequence number of the newest event-log entry kept on disk before this start, read from the files before the
+ * framework starts ({@link StartSignals}: every entry after it is this start's). Reading it from the event log
+ * service when it registers was a race: on a loaded machine the registration was seen only after this start's
+ * entries, so a deaf radio's {@code Monitoring reduced} signal was taken for history and no WARNING came under the
+ * banner (DeafRadioIT). The files are the runtime's {@code events-<20 digits>.log} in {@code logDirectory} of
+ * {@code etc/org.tinysep.runtime.cfg}, else {@code <var>/log}; a line is {@code <time>\t<sequence>\t<kind>\t…}.
+ */
+final class EventHistoryEnd {
+
+    static final String RUNTIME_CFG = "org.tinysep.runtime.cfg";
+    private static final String FILE_PATTERN = "events-\\d{20}\\.log";
+
+    private EventHistoryEnd() {
+    }
+
+    /**
+     * @return the newest sequence number on disk, 0 when there is no history yet, -1 when it cannot be told (a
+     *         folder given with a variable, an unreadable file or line): the caller then asks the service instead
+     */
+    static long read(Path etc, Path var) {
+        try {
+            Path folder = folder(etc, var);
+            if (folder == null) {
+                return -1;
+            }
+            if (!Files.isDirectory(folder)) {
+                return 0;
+            }
+            List<Path> files;
+            try (Stream<Path> s = Files.list(folder)) {
+                files = s.filter(p -> p.getFileName().toString().matches(FILE_PATTERN)).sorted().toList();
+            }
+            for (int i = files.size() - 1; i >= 0; i--) { // the newest file may be empty (just rotated)
+                List<String> lines = Files.readAllLines(files.get(i), StandardCharsets.UTF_8);
+                for (int j = lines.size() - 1; j >= 0; j--) {
+                    String[] fields = lines.get(j).split("\t", 3);
+                    if (fields.length >= 2) {
+                        return Long.parseLong(fields[1]);
+                    }
+                }
+            }
+            return 0;
+        } catch (IOException | RuntimeException e) {
+            return -1;
+        }
+    }
+
+    /** @return the log folder, or null when the configured one cannot be resolved here */
+    private static Path folder(Path etc, Path var) throws IOException {
+        Path cfg = etc.resolve(RUNTIME_CFG);
+        if (Files.isRegularFile(cfg)) {
+            Properties p = new Properties();
+            try (InputStream in = Files.newInputStream(cfg)) {
+                p.load(in);
+            }
+            String dir = p.getProperty("logDirectory", "").strip();
+            if (dir.contains("${")) {
+                return null;
+            }
+            if (!dir.isEmpty()) {
+                return Path.of(dir);
+            }
+        }
+        return var.resolve("log");
+    }
+}
