@@ -61,8 +61,9 @@ public final class LearnedLimits {
         if (longer > 0 && set.residents() > 1) {
             return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
                     + s.roomName() + (learned.asleep() ? " asleep" : "") + ": the history would lengthen it to "
-                    + Amounts.duration(learned.limit()) + ", but " + residents.words() + ": a collapse is found only once the others are quiet too, so a learned limit is never longer "
-                    + "than the fixed one (" + l.explain(set) + ")");
+                    + Amounts.duration(learned.limit()) + ", but " + residents.words() + ": a collapse is found only "
+                    + "once the others are quiet too, so a learned limit is never longer than the fixed one ("
+                    + l.explain(set) + ")");
         }
         if (longer > 0) {
             return new Limit(fixed, learned.asleep(), "fixed limit of " + Amounts.duration(fixed) + " for "
