@@ -2,6 +2,8 @@ package org.tinysep.launcher;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.channels.SeekableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -21,6 +23,8 @@ final class EventHistoryEnd {
 
     static final String RUNTIME_CFG = "org.tinysep.runtime.cfg";
     private static final String FILE_PATTERN = "events-\\d{20}\\.log";
+    /** How much of a file's end is read: many lines (an entry is a few hundred bytes at most). */
+    static final int TAIL = 64 * 1024;
 
     private EventHistoryEnd() {
     }
@@ -43,9 +47,9 @@ final class EventHistoryEnd {
                 files = s.filter(p -> p.getFileName().toString().matches(FILE_PATTERN)).sorted().toList();
             }
             for (int i = files.size() - 1; i >= 0; i--) { // the newest file may be empty (just rotated)
-                List<String> lines = Files.readAllLines(files.get(i), StandardCharsets.UTF_8);
-                for (int j = lines.size() - 1; j >= 0; j--) {
-                    String[] fields = lines.get(j).split("\t", 3);
+                String[] lines = tail(files.get(i)).split("\n");
+                for (int j = lines.length - 1; j >= 0; j--) {
+                    String[] fields = lines[j].split("\t", 3);
                     if (fields.length >= 2) {
                         return Long.parseLong(fields[1]);
                     }
@@ -54,6 +58,20 @@ final class EventHistoryEnd {
             return 0;
         } catch (IOException | RuntimeException e) {
             return -1;
+        }
+    }
+
+    /** @return the file's last {@link #TAIL} bytes, whole lines only (a file may hold megabytes: not read whole) */
+    private static String tail(Path file) throws IOException {
+        try (SeekableByteChannel ch = Files.newByteChannel(file)) {
+            long from = Math.max(0, ch.size() - TAIL);
+            ByteBuffer buf = ByteBuffer.allocate((int) (ch.size() - from));
+            ch.position(from);
+            while (buf.hasRemaining() && ch.read(buf) >= 0) {
+                // until the end
+            }
+            String text = new String(buf.array(), 0, buf.position(), StandardCharsets.UTF_8);
+            return from == 0 ? text : text.substring(text.indexOf('\n') + 1); // the first line may be cut
         }
     }
 

@@ -57,4 +57,15 @@ class EventHistoryEndTest {
         events(home.resolve("var/log"), "events-00000000000000000001.log", "2026-11-30T05:00:00Z\tnot-a-number\tX");
         assertEquals(-1, EventHistoryEnd.read(etc(), home.resolve("var")));
     }
+
+    @Test
+    void aLongFileIsReadFromItsEndOnly() throws Exception {
+        StringBuilder lines = new StringBuilder();
+        for (int i = 1; i <= 5000; i++) { // ~300 KB: more than the tail read
+            lines.append("2026-11-30T05:00:00Z\t").append(i).append("\tSTATUS\to\t").append("é".repeat(25)).append('\n');
+        }
+        Path log = Files.createDirectories(home.resolve("var/log"));
+        Files.writeString(log.resolve("events-00000000000000000001.log"), lines);
+        assertEquals(5000, EventHistoryEnd.read(etc(), home.resolve("var")));
+    }
 }
