@@ -17,6 +17,7 @@ import org.tinysep.api.service.HouseInformationProvider;
 import org.tinysep.device.support.lifecycle.AbstractDriver;
 import org.tinysep.device.support.lifecycle.SingleDeviceWiring;
 import org.tinysep.device.support.rooms.TrackedPlacements;
+import org.tinysep.device.support.time.Due;
 import org.tinysep.device.support.time.PlatformTicker;
 
 /**
@@ -74,7 +75,7 @@ public final class FollowMeDriver extends AbstractDriver {
         Instant next = null;
         for (FollowMeDevice d : wiring.current()) {
             Instant due = d.tick(now);
-            next = next == null || (due != null && due.isBefore(next)) ? due : next;
+            next = Due.earliest(next, due);
         }
         return next;
     }

@@ -12,6 +12,7 @@ import org.tinysep.api.alert.AlertKind;
 import org.tinysep.api.alert.AlertRequest;
 import org.tinysep.api.sensor.person.ButtonAction;
 import org.tinysep.api.sensor.person.ButtonEvent;
+import org.tinysep.device.support.time.Due;
 
 /**
  * The help button's rule, without OSGi: a switch held for at least {@code hold} is a help call, raised at once
@@ -128,7 +129,7 @@ final class HelpCalls {
                 call(nodes.get(e.getKey()), st, now, held, "still held after " + seconds(held));
             } else {
                 Instant at = st.pressedAt.plus(s.hold());
-                next = next == null || at.isBefore(next) ? at : next;
+                next = Due.earliest(next, at);
             }
         }
         return next;

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.tinysep.api.health.SensorHealth;
+import org.tinysep.device.support.time.Due;
 
 /**
  * Which notices are due, one tick at a time: a sensor seen OFFLINE for {@code delay} gets one "offline" notice per
@@ -102,7 +103,7 @@ final class Notices {
                 noticed.add(e.getKey());
                 out.add(new Notice(Kind.OFFLINE, e.getValue(), silence.since()));
             } else {
-                next = next == null || at.isBefore(next) ? at : next;
+                next = Due.earliest(next, at);
             }
         }
         nextDue = next;

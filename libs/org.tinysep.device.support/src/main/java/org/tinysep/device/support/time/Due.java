@@ -15,4 +15,12 @@ public interface Due {
      *         (as the plain {@code Consumer} ticker), {@code null} means none until {@link PlatformTicker#wake}
      */
     Instant tick(Instant now);
+
+    /**
+     * @return the earlier of two due times, where {@code null} means none (as {@link #tick} returns): the other one,
+     *         or null when both are
+     */
+    static Instant earliest(Instant a, Instant b) {
+        return a == null || b != null && b.isBefore(a) ? b : a;
+    }
 }

@@ -45,7 +45,7 @@ final class TickGate {
     /** Something became due at {@code at} (e.g. an event started a timer): the first tick at or after it calls. */
     void wake(Instant at) {
         if (at != null) {
-            next.accumulateAndGet(at, (a, b) -> a == null || b.isBefore(a) ? b : a);
+            next.accumulateAndGet(at, Due::earliest);
         }
     }
 
