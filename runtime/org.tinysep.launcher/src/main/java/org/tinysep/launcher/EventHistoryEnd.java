@@ -1,14 +1,12 @@
 package org.tinysep.launcher;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.channels.SeekableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Properties;
 import java.util.stream.Stream;
 
 /**
@@ -77,20 +75,10 @@ final class EventHistoryEnd {
 
     /** @return the log folder, or null when the configured one cannot be resolved here */
     private static Path folder(Path etc, Path var) throws IOException {
-        Path cfg = etc.resolve(RUNTIME_CFG);
-        if (Files.isRegularFile(cfg)) {
-            Properties p = new Properties();
-            try (InputStream in = Files.newInputStream(cfg)) {
-                p.load(in);
-            }
-            String dir = p.getProperty("logDirectory", "").strip();
-            if (dir.contains("${")) {
-                return null;
-            }
-            if (!dir.isEmpty()) {
-                return Path.of(dir);
-            }
+        String dir = CfgFile.load(etc.resolve(RUNTIME_CFG)).getProperty("logDirectory", "").strip();
+        if (dir.contains("${")) {
+            return null;
         }
-        return var.resolve("log");
+        return dir.isEmpty() ? var.resolve("log") : Path.of(dir);
     }
 }

@@ -1,9 +1,6 @@
 package org.tinysep.launcher;
 
 import java.io.IOException;
-import java.io.Reader;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Properties;
 
@@ -29,12 +26,9 @@ final class HttpCfg {
     /** @return the host and port the file sets with plain values (none when it is missing or unreadable) */
     static Properties read(Path cfg) {
         Properties out = new Properties();
-        if (!Files.isRegularFile(cfg)) {
-            return out;
-        }
-        Properties file = new Properties();
-        try (Reader r = Files.newBufferedReader(cfg, StandardCharsets.ISO_8859_1)) {
-            file.load(r);
+        Properties file;
+        try {
+            file = CfgFile.load(cfg);
         } catch (IOException | IllegalArgumentException e) {
             return out; // FileInstall reports a broken file; the defaults stand
         }
@@ -56,13 +50,11 @@ final class HttpCfg {
      *         over would reach Jetty at 127.0.0.1, where its plain-HTTP rule would take it for this machine's own
      */
     static boolean onFirstUse(Path cfg) {
-        Properties file = new Properties();
-        if (Files.isRegularFile(cfg)) {
-            try (Reader r = Files.newBufferedReader(cfg, StandardCharsets.ISO_8859_1)) {
-                file.load(r);
-            } catch (IOException | IllegalArgumentException e) {
-                return false; // FileInstall reports a broken file; the console starts as it says
-            }
+        Properties file;
+        try {
+            file = CfgFile.load(cfg);
+        } catch (IOException | IllegalArgumentException e) {
+            return false; // FileInstall reports a broken file; the console starts as it says
         }
         String host = file.getProperty(HOST, "127.0.0.1").strip();
         return !Boolean.parseBoolean(file.getProperty(HTTPS_ENABLE, "false").strip())
